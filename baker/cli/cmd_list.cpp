@@ -1,0 +1,22 @@
+// kiln list: every model id, one per line, with its parameters.
+#include <cstdio>
+
+#include "baker/cli/commands.h"
+
+namespace kiln::cli {
+
+void RegisterList(CLI::App& app) {
+  auto* sub = app.add_subcommand("list", "print every model id with its parameters");
+  sub->callback([] {
+    for (const ModelInfo& m : AllModels()) {
+      std::string line = m.id;
+      for (const ParamInfo& p : m.params)
+        line += " " + p.name + "=" + FullPrecision(p.def) + "[" + FullPrecision(p.lo) + "," +
+                FullPrecision(p.hi) + "]";
+      line += "  # " + m.summary + "; roughness: " + m.roughness;
+      std::printf("%s\n", line.c_str());
+    }
+  });
+}
+
+}  // namespace kiln::cli

@@ -1,0 +1,26 @@
+// The kiln command line: one Register* function per subcommand (each in its own cmd_*.cpp).
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include "baker/models/registry.h"
+
+namespace kiln::cli {
+
+/// The model parameter options every model-taking command shares (--roughness, --rho, --f0,
+/// --eta, --k, --rs, --nu, --nv); Params() gives only those the user set.
+struct ModelParamOptions {
+  double roughness = 0, rho = 0, f0 = 0, eta = 0, k = 0, rs = 0, nu = 0, nv = 0;
+  CLI::Option *oRoughness = nullptr, *oRho = nullptr, *oF0 = nullptr, *oEta = nullptr,
+              *oK = nullptr, *oRs = nullptr, *oNu = nullptr, *oNv = nullptr;
+  void Add(CLI::App* app);
+  ModelParams Params() const;
+};
+
+/// Prints a double with %.17g (round-trips exactly).
+std::string FullPrecision(double x);
+
+void RegisterList(CLI::App& app);
+void RegisterEval(CLI::App& app);
+void RegisterIntegrate(CLI::App& app);
+
+}  // namespace kiln::cli

@@ -1,0 +1,41 @@
+#include <cstdio>
+
+#include "baker/cli/commands.h"
+
+namespace kiln::cli {
+
+void ModelParamOptions::Add(CLI::App* app) {
+  oRoughness = app->add_option("--roughness,-r", roughness,
+                               "roughness r (alpha = r^2 microfacet, sigma = r Oren-Nayar)");
+  oRho = app->add_option("--rho", rho, "albedo rho");
+  oF0 = app->add_option("--f0", f0, "Schlick F0 (specular) or the model's F0 (diffuse)");
+  oEta = app->add_option("--eta", eta, "index of refraction (exact Fresnel)");
+  oK = app->add_option("--k", k, "extinction coefficient (conductor Fresnel)");
+  oRs = app->add_option("--rs", rs, "specular reflectance R_s");
+  oNu = app->add_option("--nu", nu, "Ashikhmin-Shirley exponent along u");
+  oNv = app->add_option("--nv", nv, "Ashikhmin-Shirley exponent along v");
+}
+
+ModelParams ModelParamOptions::Params() const {
+  ModelParams p;
+  auto set = [](CLI::Option* o, double v, std::optional<double>& out) {
+    if (o && o->count()) out = v;
+  };
+  set(oRoughness, roughness, p.roughness);
+  set(oRho, rho, p.rho);
+  set(oF0, f0, p.f0);
+  set(oEta, eta, p.eta);
+  set(oK, k, p.k);
+  set(oRs, rs, p.rs);
+  set(oNu, nu, p.nu);
+  set(oNv, nv, p.nv);
+  return p;
+}
+
+std::string FullPrecision(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+}  // namespace kiln::cli

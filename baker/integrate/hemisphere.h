@@ -1,0 +1,174 @@
+// Deterministic directional integrals over the hemisphere of light directions,
+//     E(o) = integral_{H^2} g(o, l) mu_l dl,
+// for a channel-valued g, to an absolute tolerance, in double precision.
+//
+// Light space (smooth lobes): E = 2 int_0^{pi/2} dtheta_l sin cos int_0^pi dphi g, the factor 2
+// from the mirror symmetry phi -> -phi of isotropic models. The diffuse models bend where
+// theta_l = theta_o (max/min of the angles) and at phi = pi/2 (the sign of cos(phi)): those are
+// the first panel boundaries, so every panel is smooth and Gauss-Kronrod converges fast.
+//
+// Half-vector space (sharp lobes): with l = reflect(o, h), dl = 4 (o.h) dh, and h walked by
+// (v, phi_h) where v is the complementary CDF of the lobe's own polar density (see
+// models/specular.h), so a lobe of alpha = 1e-4 is as easy as alpha = 1. The horizon cut is exact:
+// mu_l = 2 (o.h) cos(theta_h) - mu_o > 0  <=>  cos(phi_h) > c = -mu_o cos(2 theta_h)
+// / (sin(theta_o) sin(2 theta_h)), so the inner integral runs over [0, acos(c)]. The whole circle
+// survives for theta_h < pi/4 - theta_o/2 and nothing for theta_h > pi/4 + theta_o/2: those are the
+// outer panel boundaries. Near them the inner integral behaves like (distance)^(3/2); each outer
+// panel therefore maps t in [0,1] through the smoothstep 3t^2 - 2t^3, which turns that into an
+// analytic t^3 and restores the fast convergence of the Gauss rule.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "baker/math/quadrature.h"
+#include "baker/models/brdf.h"
+#include "baker/models/specular.h"
+
+namespace kiln {
+
+/// Tolerance and panel budget of an integral; stats collect what it cost.
+struct IntegrationOptions {
+  double tol = 1e-9;     ///< absolute tolerance on every channel
+  int maxPanels = 400;   ///< per adaptive level
+};
+struct IntegrationStats {
+  long long evals = 0;   ///< integrand evaluations
+  double errorEstimate = 0;
+};
+
+/// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine).
+template <int N, class G>
+Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& opt,
+                                IntegrationStats& stats) {
+  Vec3 wo = ViewDirection(mu_o);
+  double theta_o = std::acos(Clamp(mu_o, 0.0, 1.0));
+  double thetaBreaks[3] = {0, theta_o, Pi / 2};
+  double thetaOnly[2] = {0, Pi / 2};
+  bool split = theta_o > 0 && theta_o < Pi / 2;
+  double phiBreaks[3] = {0, Pi / 2, Pi};
+  double innerTol = opt.tol / (10 * Pi);
+  double errSum = 0;
+  auto outer = [&](double theta_l) -> Channels<N> {
+    double sinT = std::sin(theta_l), cosT = std::cos(theta_l);
+    auto inner = [&](double phi) -> Channels<N> {
+      ++stats.evals;
+      return g(wo, SphericalDirection(sinT, cosT, phi));
+    };
+    double e = 0;
+    Channels<N> r = IntegrateAdaptive<N>(inner, phiBreaks, 3, innerTol, opt.maxPanels, &e);
+    errSum += e;
+    return (2 * sinT * cosT) * r;
+  };
+  double err = 0;
+  Channels<N> r = split ? IntegrateAdaptive<N>(outer, thetaBreaks, 3, opt.tol / 2, opt.maxPanels, &err)
+                        : IntegrateAdaptive<N>(outer, thetaOnly, 2, opt.tol / 2, opt.maxPanels, &err);
+  stats.errorEstimate = err;
+  return r;
+}
+
+/// Insertion sort for the handful of panel boundaries (std::sort trips GCC 12's -Warray-bounds).
+inline void SortSmall(double* x, int n) {
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && x[j - 1] > x[j]; --j) std::swap(x[j - 1], x[j]);
+}
+
+/// cos(phi_h) of the horizon cut at microfacet polar angle h for view mu_o (see the file comment);
+/// -inf: the whole circle is above the horizon, >= 1: none of it.
+inline double HorizonCutCosPhi(double mu_o, double sinTheta_o, PolarParam h) {
+  double cos2 = Sqr(h.cosTheta) - Sqr(h.sinTheta), sin2 = 2 * h.sinTheta * h.cosTheta;
+  if (mu_o <= 0) return 0;
+  double den = sinTheta_o * sin2;
+  if (den <= 0) return cos2 > 0 ? -INFINITY : INFINITY;
+  return -mu_o * cos2 / den;
+}
+
+/// E(o) over half-vector space for a specular model M (kDomain == HalfVector):
+/// weights(const HalfSample&, double rho) -> Channels<N>, where rho = model.HalfWeight(sample).
+template <int N, class M, class W>
+Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
+                                const IntegrationOptions& opt, IntegrationStats& stats) {
+  mu_o = Clamp(mu_o, 0.0, 1.0);
+  Vec3 wo = ViewDirection(mu_o);
+  double sinTheta_o = wo.x, theta_o = std::acos(mu_o);
+  double thetaEnd = std::min(Pi / 2, Pi / 4 + theta_o / 2);
+  // Outer panel boundaries in theta_h: 0, the start of the horizon cut, model kinks, the end.
+  double thetas[24];
+  int nt = 0;
+  thetas[nt++] = 0;
+  double thetaCut = Pi / 4 - theta_o / 2;
+  if (thetaCut > 0) thetas[nt++] = thetaCut;
+  // Grazing views: the cut sweeps from phi = pi to pi/2 over theta_h in [thetaCut, ~30 thetaCut];
+  // geometric panels resolve that scale at once instead of by bisection.
+  // The same happens mirrored at the end, where the cut closes over pi/2 - theta_h in
+  // [thetaCut, ~30 thetaCut] (pi/2 - thetaEnd = thetaCut).
+  for (double t = 4 * thetaCut; thetaCut > 0 && t < std::min(0.5, thetaEnd) && nt < 10; t *= 4)
+    thetas[nt++] = t;
+  for (double t = 4 * thetaCut; thetaCut > 0 && Pi / 2 - t > 0.5 && nt < 18; t *= 4)
+    thetas[nt++] = Pi / 2 - t;
+  double kinks[4];
+  int nk = model.ThetaKinks(theta_o, kinks);
+  for (int i = 0; i < nk; ++i)
+    if (kinks[i] > 0 && kinks[i] < thetaEnd) thetas[nt++] = kinks[i];
+  thetas[nt++] = thetaEnd;
+  SortSmall(thetas, nt);
+  // Panel i spans v in [vs[i+1], vs[i]] (v decreases as theta grows); the outer variable x runs
+  // over [0, panels] with panel i at [i, i+1].
+  double vs[24];
+  for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : model.VFromTheta(thetas[i]);
+  int panels = nt - 1;
+  double innerTol = opt.tol / 10;
+  auto outer = [&](double x) -> Channels<N> {
+    int i = std::min(static_cast<int>(x), panels - 1);
+    double t = x - i, va = vs[i], vb = vs[i + 1];
+    double v = va + (vb - va) * t * t * (3 - 2 * t);
+    double jac = (va - vb) * 6 * t * (1 - t);
+    if (!(v > 0) || !(jac > 0)) return Channels<N>{};
+    PolarParam h = model.FromV(v);
+    double c = HorizonCutCosPhi(mu_o, sinTheta_o, h);
+    if (c >= 1) return Channels<N>{};
+    double phiMax = std::acos(std::max(c, -1.0));
+    double phis[24];
+    int np = 0;
+    phis[np++] = 0;
+    // Masking bends where mu_l ~ min(mu_o, scale) (Lambda(l) against 1 + Lambda(o)): geometric
+    // panels in mu_l resolve that scale. mu_l = 2 cos_h (sin_o sin_h cos(phi) + mu_o cos_h) - mu_o.
+    double den = 2 * h.cosTheta * sinTheta_o * h.sinTheta;
+    double scale = std::min(mu_o, model.MaskingScale());
+    if (den > 0 && scale > 0)
+      for (double m = scale / 4; m < 0.25 && np < 16; m *= 4) {
+        double cphi = (m + mu_o - 2 * mu_o * Sqr(h.cosTheta)) / den;
+        if (cphi > std::max(c, -1.0) && cphi < 1) phis[np++] = std::acos(cphi);
+      }
+    double cosKinks[4];
+    int nck = model.PhiKinks(mu_o, sinTheta_o, h, cosKinks);
+    for (int k = 0; k < nck; ++k)
+      if (cosKinks[k] > std::max(c, -1.0) && cosKinks[k] < 1) phis[np++] = std::acos(cosKinks[k]);
+    phis[np++] = phiMax;
+    SortSmall(phis, np);
+    auto inner = [&](double phi) -> Channels<N> {
+      ++stats.evals;
+      HalfSample s;
+      s.wo = wo;
+      s.wm = SphericalDirection(h.sinTheta, h.cosTheta, phi);
+      s.oh = Dot(wo, s.wm);
+      s.cosTheta_h = h.cosTheta;
+      s.mu_o = mu_o;
+      s.mu_l = 2 * s.oh * h.cosTheta - mu_o;
+      if (!(s.mu_l > 0) || !(s.oh > 0)) return Channels<N>{};
+      s.wi = Reflect(wo, s.wm);
+      return weights(s, model.HalfWeight(s));
+    };
+    // The outer rule weighs this inner integral by 2 jac: its tolerance scales inversely, so
+    // a panel of tiny measure is not integrated to a precision nobody can see.
+    double tolHere = innerTol / (2 * jac * panels);
+    return (2 * jac) * IntegrateAdaptive<N>(inner, phis, np, tolHere, opt.maxPanels);
+  };
+  double xs[24];
+  for (int i = 0; i <= panels; ++i) xs[i] = i;
+  double err = 0;
+  Channels<N> r = IntegrateAdaptive<N>(outer, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
+  stats.errorEstimate = err;
+  return r;
+}
+
+}  // namespace kiln

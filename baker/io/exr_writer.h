@@ -1,0 +1,30 @@
+// baker/io/exr_writer.h: writes a kiln table as an OpenEXR file.
+#pragma once
+
+#include <OpenEXR/ImfForward.h>
+
+#include <string>
+
+#include "kiln/table.h"
+
+namespace kiln {
+
+/// Sets every kiln.* attribute of `table` on `header` (the contract in
+/// runtime/FORMAT.md): kiln.format = kFormatVersion, strings as
+/// StringAttribute, ints as IntAttribute, doubles as DoubleAttribute. Does not
+/// touch the channel list or the windows.
+void setKilnAttributes(Imf::Header& header, const Table& table);
+
+/// Writes `table` to the OpenEXR file `path`: one scanline image of width
+/// size0 and height size1 * size2 (data window origin (0, 0)), one channel per
+/// table channel named as in table.channels, ZIP compression, FLOAT pixels or
+/// HALF when `half` is true, and all kiln.* attributes. The same table always
+/// gives the same bytes. The file is written to "<path>.tmp" and renamed into
+/// place; on any error the temporary file is removed, an existing file at
+/// `path` is left intact, and std::runtime_error is thrown with a one-line
+/// message. Refuses a table that fails validateTable, and in half mode a
+/// texel whose magnitude exceeds the largest half (65504). The temporary file
+/// is read back with loadTable before the rename.
+void writeTable(const std::string& path, const Table& table, bool half);
+
+}  // namespace kiln

@@ -1,0 +1,33 @@
+// baker/io/png_writer.h: a false-colour preview of a kiln table.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kiln/table.h"
+
+namespace kiln {
+
+/// Encodes an 8-bit RGB image (rgb holds width * height * 3 bytes, rows top
+/// to bottom) as a complete PNG file: IHDR, one IDAT holding a zlib stream of
+/// stored (uncompressed) deflate blocks with its Adler-32, IEND, each chunk
+/// with its CRC-32. Throws std::invalid_argument on a size mismatch or an
+/// empty image.
+std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb);
+
+/// The viridis colour of t in [0, 1] (clamped; NaN maps to 0) as 8-bit RGB,
+/// from a degree-6 polynomial fit of matplotlib's viridis.
+void viridis(double t, std::uint8_t rgb[3]);
+
+/// Writes a false-colour PNG of `table` to `path`: one panel per channel,
+/// side by side left to right in storage order, separated by a 4-pixel dark
+/// gap. Each panel is the table's EXR image (axis 0 to the right, axis 1
+/// downwards, 3D slices stacked downwards), each texel an integer-scaled block
+/// (1D tables are drawn 32 pixels tall), coloured with viridis over the
+/// channel's own [min, max] (a constant channel is drawn mid-range). Written
+/// through a temporary file and a rename; throws std::runtime_error with a
+/// one-line message on failure or when the table fails validateTable.
+void writeFalseColourPng(const std::string& path, const Table& table);
+
+}  // namespace kiln

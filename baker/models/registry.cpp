@@ -1,0 +1,198 @@
+#include "baker/models/registry.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace kiln {
+namespace {
+
+constexpr double HalfPi = Pi / 2;
+
+ParamInfo Rho() { return {"rho", 0, 1, 1, "albedo (diffuse reflectance)"}; }
+ParamInfo Rough(double hi, const char* doc) { return {"roughness", 0, hi, 0.5, doc}; }
+ParamInfo F0(double def) { return {"f0", 0, 1, def, "normal-incidence specular reflectance"}; }
+ParamInfo Rs(double def) { return {"rs", 0, 1, def, "specular reflectance R_s"}; }
+ParamInfo Eta() { return {"eta", 0.01, 100, 1.5, "index of refraction n (exact Fresnel)"}; }
+ParamInfo K() { return {"k", 0, 100, 0, "extinction coefficient k (conductor Fresnel)"}; }
+
+std::vector<ModelInfo> BuildModels() {
+  using D = IntegrationDomain;
+  const char* micro = "alpha = r^2 (Disney 2012)";
+  const char* sigma = "sigma = r (slope std. deviation, radians)";
+  std::vector<ParamInfo> spec = {Rough(1, "perceptual roughness r, alpha = r^2"), F0(1), Eta(), K()};
+  return {
+      {"lambert", "rho/pi (Lambert 1760)", "none", {Rho()}, true, true, true, false, D::Light},
+      {"burley", "Disney diffuse (Burley 2012)", "r as is",
+       {Rough(1, "Disney roughness"), Rho()}, true, false, true, false, D::Light},
+      {"frostbite", "renormalised Disney diffuse (Lagarde 2014)", "r as is",
+       {Rough(1, "Disney roughness"), Rho()}, true, false, true, false, D::Light},
+      {"oren-nayar", "full Oren-Nayar with interreflection (Oren & Nayar 1994)", sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, true, D::Light},
+      {"oren-nayar-qualitative", "qualitative Oren-Nayar (Oren & Nayar 1994)", sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, false, D::Light},
+      {"oren-nayar-qualitative-ir", "qualitative Oren-Nayar, A with 0.57 (interreflection)", sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, false, D::Light},
+      {"fujii", "tiny improved Oren-Nayar (Fujii)", sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, true, D::Light},
+      {"fujii-normalized", "energy-normalised improved Oren-Nayar (Fujii)", "sigma' = r in [0,1]",
+       {Rough(1, "sigma'"), Rho()}, true, true, true, false, D::Light},
+      {"gotanda-fresnel", "normalised Oren-Nayar with Fresnel (Gotanda 2014 eq. 33-34)", sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho(), F0(0)}, true, true, false, false, D::Light},
+      {"gotanda-ggx", "Oren-Nayar fitted to GGX + Smith (Gotanda 2014 eq. 35)", sigma,
+       {Rough(1, "sigma, radians (the fit's range)"), Rho(), F0(0)}, false, true, true, false,
+       D::Light},
+      {"hammon", "GGX diffuse (Hammon 2017)", micro,
+       {Rough(1, "perceptual roughness r, alpha = r^2"), Rho()}, true, false, true, true, D::Light},
+      {"shirley", "coupled diffuse (Shirley et al. 1997)", "none", {Rho(), F0(0)}, true, true, true,
+       false, D::Light},
+      {"ashikhmin-shirley-diffuse", "coupled diffuse (Ashikhmin & Shirley 2000)", "none",
+       {Rho(), Rs(0)}, true, true, true, false, D::Light},
+      {"triace-lambert", "energy-conserving Lambert (tri-Ace, Gotanda 2010)", "none",
+       {Rho(), Rs(0), F0(0)}, false, true, true, false, D::Light},
+      {"ggx", "GGX, height-correlated Smith (Walter 2007, Heitz 2014)", micro, spec, true, true, true,
+       false, D::HalfVector},
+      {"ggx-separable", "GGX, separable Smith", micro, spec, true, true, true, false, D::HalfVector},
+      {"ggx-vcavity", "GGX, Cook-Torrance V-cavity G", micro, spec, true, true, true, false,
+       D::HalfVector},
+      {"beckmann", "Beckmann, height-correlated Smith", micro, spec, true, true, true, false,
+       D::HalfVector},
+      {"beckmann-separable", "Beckmann, separable Smith", micro, spec, true, true, true, false,
+       D::HalfVector},
+      {"blinn-phong", "Blinn-Phong NDF s = 2/alpha^2 - 2, Beckmann Smith height-correlated", micro,
+       spec, true, false, true, false, D::HalfVector},
+      {"blinn-phong-normalized", "normalised Blinn-Phong (tri-Ace, Gotanda 2010)",
+       "alpha = r^2, s = 2/alpha^2 - 2",
+       {Rough(1, "perceptual roughness r, s = 2/r^4 - 2"), Rs(1), F0(1), Eta(), K()}, true, true,
+       true, false, D::HalfVector},
+      {"ashikhmin-shirley", "anisotropic Phong specular (Ashikhmin & Shirley 2000)",
+       "alpha = r^2, n_u = n_v = 2/alpha^2 - 2 unless nu, nv given",
+       {Rough(1, "perceptual roughness r"), {"nu", 0, 1e7, 0, "exponent along u (overrides r)"},
+        {"nv", 0, 1e7, 0, "exponent along v (overrides r)"}, F0(1), Eta(), K()},
+       true, true, true, false, D::HalfVector},
+  };
+}
+
+std::string Format(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+double Get(const ModelInfo& info, const ModelParams& p, const std::string& name) {
+  const std::optional<double>* slot = nullptr;
+  if (name == "roughness") slot = &p.roughness;
+  else if (name == "rho") slot = &p.rho;
+  else if (name == "f0") slot = &p.f0;
+  else if (name == "eta") slot = &p.eta;
+  else if (name == "k") slot = &p.k;
+  else if (name == "rs") slot = &p.rs;
+  else if (name == "nu") slot = &p.nu;
+  else if (name == "nv") slot = &p.nv;
+  for (const ParamInfo& pi : info.params)
+    if (pi.name == name) return slot && *slot ? **slot : pi.def;
+  return 0;
+}
+
+}  // namespace
+
+const std::vector<ModelInfo>& AllModels() {
+  static const std::vector<ModelInfo> models = BuildModels();
+  return models;
+}
+
+const ModelInfo* FindModel(const std::string& id) {
+  for (const ModelInfo& m : AllModels())
+    if (m.id == id) return &m;
+  return nullptr;
+}
+
+Fresnel FresnelFromParams(const ModelParams& p) {
+  Fresnel F;
+  if (p.f0) {
+    F.kind = Fresnel::Kind::Schlick;
+    F.f0 = *p.f0;
+  } else if (p.eta) {
+    F.eta = *p.eta;
+    F.k = p.k.value_or(0);
+    F.kind = F.k > 0 ? Fresnel::Kind::Conductor : Fresnel::Kind::Dielectric;
+  }
+  return F;
+}
+
+AnyModel MakeModel(const std::string& id, const ModelParams& p) {
+  const ModelInfo* info = FindModel(id);
+  if (!info) throw std::invalid_argument("unknown model '" + id + "' (see `kiln list`)");
+  // Every given parameter must be one the model takes, and inside its range.
+  const std::pair<const char*, const std::optional<double>*> given[] = {
+      {"roughness", &p.roughness}, {"rho", &p.rho}, {"f0", &p.f0}, {"eta", &p.eta},
+      {"k", &p.k}, {"rs", &p.rs}, {"nu", &p.nu}, {"nv", &p.nv}};
+  for (const auto& [name, value] : given) {
+    if (!*value) continue;
+    const ParamInfo* pi = nullptr;
+    for (const ParamInfo& q : info->params)
+      if (q.name == name) pi = &q;
+    if (!pi) throw std::invalid_argument("model '" + id + "' takes no parameter '" + name + "'");
+    double x = **value;
+    if (!(x >= pi->lo && x <= pi->hi))
+      throw std::invalid_argument("model '" + id + "': " + name + " = " + Format(x) +
+                                  " is outside [" + Format(pi->lo) + ", " + Format(pi->hi) + "]");
+  }
+  if (p.f0 && p.eta)
+    throw std::invalid_argument("model '" + id + "': give either f0 (Schlick) or eta, not both");
+  if (p.k && !p.eta) throw std::invalid_argument("model '" + id + "': k needs eta");
+
+  double r = Get(*info, p, "roughness"), rho = Get(*info, p, "rho");
+  double f0 = Get(*info, p, "f0"), rs = Get(*info, p, "rs");
+  double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+  Fresnel F = FresnelFromParams(p);
+  auto micro = [&](auto dist, SmithForm form) {
+    dist.alpha = alpha;
+    return MicrofacetBRDF<decltype(dist)>{dist, form, F};
+  };
+  if (id == "lambert") return Lambert{rho};
+  if (id == "burley") return BurleyDiffuse{r, rho};
+  if (id == "frostbite") return FrostbiteDiffuse{r, rho};
+  if (id == "oren-nayar") return OrenNayar{r, rho};
+  if (id == "oren-nayar-qualitative") return OrenNayarQualitative{r, rho, false};
+  if (id == "oren-nayar-qualitative-ir") return OrenNayarQualitative{r, rho, true};
+  if (id == "fujii") return FujiiOrenNayar{r, rho, false};
+  if (id == "fujii-normalized") return FujiiOrenNayar{r, rho, true};
+  if (id == "gotanda-fresnel") return GotandaFresnelDiffuse{r, rho, f0};
+  if (id == "gotanda-ggx") return GotandaGGXDiffuse{r, rho, f0};
+  if (id == "hammon") return HammonDiffuse{AlphaFromPerceptual(r), rho};
+  if (id == "shirley") return ShirleyDiffuse{rho, f0};
+  if (id == "ashikhmin-shirley-diffuse") return AshikhminShirleyDiffuse{rho, rs};
+  if (id == "triace-lambert") return TriAceLambert{rho, rs, f0};
+  if (id == "ggx") return micro(GGXDistribution{}, SmithForm::HeightCorrelated);
+  if (id == "ggx-separable") return micro(GGXDistribution{}, SmithForm::Separable);
+  if (id == "ggx-vcavity") return micro(GGXDistribution{}, SmithForm::VCavity);
+  if (id == "beckmann") return micro(BeckmannDistribution{}, SmithForm::HeightCorrelated);
+  if (id == "beckmann-separable") return micro(BeckmannDistribution{}, SmithForm::Separable);
+  if (id == "blinn-phong") return micro(BlinnPhongDistribution{}, SmithForm::HeightCorrelated);
+  double s = BlinnPhongExponentFromAlpha(alpha);
+  if (id == "blinn-phong-normalized") return NormalizedBlinnPhong{s, rs, F};
+  if (id == "ashikhmin-shirley") {
+    double nu = p.nu ? *p.nu : s, nv = p.nv ? *p.nv : (p.nu ? *p.nu : s);
+    return AshikhminShirleySpecular{nu, nv, F};
+  }
+  throw std::invalid_argument("model '" + id + "' has no factory");  // registry out of sync
+}
+
+double Evaluate(const AnyModel& model, Vec3 wo, Vec3 wi) {
+  return std::visit([&](const auto& m) { return m.f(wo, wi); }, model);
+}
+
+RhoParts EvaluateParts(const AnyModel& model, Vec3 wo, Vec3 wi) {
+  return std::visit([&](const auto& m) { return m.Parts(wo, wi); }, model);
+}
+
+void SetFresnel(AnyModel& model, const Fresnel& fresnel) {
+  std::visit(
+      [&](auto& m) {
+        if constexpr (std::decay_t<decltype(m)>::kDomain == IntegrationDomain::HalfVector)
+          m.fresnel = fresnel;
+      },
+      model);
+}
+
+}  // namespace kiln

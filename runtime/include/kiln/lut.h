@@ -1,0 +1,288 @@
+// kiln/lut.h: the header-only sampling core of the kiln runtime.
+//
+// Depends on the C++ standard library only. Nothing here allocates, throws or
+// touches global state, so a const LutView may be sampled from any number of
+// threads at once.
+//
+// Grid convention (node-centred): an axis of N nodes over [lo, hi] with warp w
+// holds values at
+//     x_i = lo + (hi - lo) * w^-1(i / (N - 1)),   i = 0 .. N-1,
+// so both ends of every axis are nodes. A value x maps to the continuous node
+// index ("texel coordinate") s = w((x - lo) / (hi - lo)) * (N - 1), and to the
+// texture coordinate (0.5 + s) / N for hardware bilinear filtering.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+
+namespace kiln {
+
+/// How an axis spends its nodes. A warp maps the normalized coordinate
+/// y = (x - lo) / (hi - lo) in [0, 1] to the warped coordinate t in [0, 1];
+/// nodes are uniform in t.
+///   Linear: t = y        (nodes uniform in x)
+///   Sqrt:   t = sqrt(y)  (nodes dense near lo)
+///   Square: t = y^2      (nodes dense near hi)
+///   Log:    t = ln(x / lo) / ln(hi / lo)  (nodes uniform in ln x; needs 0 < lo < hi)
+enum class Warp { Linear, Sqrt, Square, Log };
+
+/// The file/CLI name of a warp: "linear", "sqrt", "square" or "log".
+/// Returns "unknown" for a value outside the enumeration.
+inline const char* warpName(Warp warp) noexcept {
+    switch (warp) {
+        case Warp::Linear: return "linear";
+        case Warp::Sqrt: return "sqrt";
+        case Warp::Square: return "square";
+        case Warp::Log: return "log";
+    }
+    return "unknown";
+}
+
+/// Parses a warp name as written by warpName (exact, case-sensitive match).
+/// On success stores the warp in `warp` and returns true; otherwise leaves
+/// `warp` untouched and returns false. A null name is rejected.
+inline bool warpFromName(const char* name, Warp& warp) noexcept {
+    if (name == nullptr) return false;
+    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log};
+    for (Warp candidate : all) {
+        if (std::strcmp(name, warpName(candidate)) == 0) {
+            warp = candidate;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Interpolation filter of LutView::sample.
+///   Linear: multilinear in texel (warped) space.
+///   Cubic:  Catmull-Rom per axis in texel space. Beyond the ends, ghost nodes
+///           are extrapolated linearly (p[-1] = 2 p[0] - p[1], p[N] = 2 p[N-1] -
+///           p[N-2]), so linear functions are reproduced exactly everywhere and
+///           quadratics in the interior cells. May overshoot the data range.
+///           An axis with fewer than 3 nodes is interpolated linearly.
+enum class Filter { Linear, Cubic };
+
+/// One axis of a table: `size` nodes over [lo, hi] placed by `warp`.
+/// A plain aggregate; it is usable (valid()) when size >= 1, lo and hi are
+/// finite, lo < hi, and lo > 0 for the log warp.
+struct Axis {
+    double lo = 0.0;
+    double hi = 1.0;
+    int size = 1;
+    Warp warp = Warp::Linear;
+
+    /// True when the axis satisfies the conditions above.
+    bool valid() const noexcept {
+        return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
+               (warp != Warp::Log || lo > 0.0);
+    }
+
+    /// Position of node i: lo + (hi - lo) * w^-1(i / (N - 1)) (for the log warp
+    /// lo * (hi / lo)^(i / (N - 1))). Exactly lo at i = 0 and exactly hi at
+    /// i = N - 1; i is clamped to [0, N - 1]. An axis of size 1 has its single
+    /// node at lo.
+    double node(int i) const noexcept {
+        if (size <= 1 || i <= 0) return lo;
+        if (i >= size - 1) return hi;
+        const double t = static_cast<double>(i) / static_cast<double>(size - 1);
+        switch (warp) {
+            case Warp::Linear: return lo + (hi - lo) * t;
+            case Warp::Sqrt: return lo + (hi - lo) * (t * t);
+            case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
+            case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
+        }
+        return lo;
+    }
+
+    /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
+    /// (clamp to edge); a NaN x maps to t = 0.
+    double warped(double x) const noexcept {
+        if (!(x > lo)) return 0.0;  // also catches NaN
+        if (!(x < hi)) return 1.0;
+        double t = 0.0;
+        switch (warp) {
+            case Warp::Linear: t = (x - lo) / (hi - lo); break;
+            case Warp::Sqrt: t = std::sqrt((x - lo) / (hi - lo)); break;
+            case Warp::Square: {
+                const double y = (x - lo) / (hi - lo);
+                t = y * y;
+                break;
+            }
+            case Warp::Log: t = std::log(x / lo) / std::log(hi / lo); break;
+        }
+        if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
+        return t < 1.0 ? t : 1.0;
+    }
+
+    /// Continuous node index s = t * (N - 1) in [0, N - 1] of a value x (see
+    /// warped() for clamping and NaN). A result within 1e-9 of an integer is
+    /// snapped onto it, so texel(node(i)) == i exactly despite the rounding of
+    /// the warp round trip, and a lookup at a node returns the stored value bit
+    /// for bit. Always 0 on an axis of size 1.
+    double texel(double x) const noexcept {
+        if (size <= 1) return 0.0;
+        const double s = warped(x) * static_cast<double>(size - 1);
+        const double nearest = std::floor(s + 0.5);
+        return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
+    }
+
+    /// Texture coordinate of x for hardware bilinear filtering of a texture of
+    /// `size` texels with texel centres at (i + 0.5) / size:
+    /// (0.5 + texel(x)) / size. Lies in [0.5 / N, 1 - 0.5 / N].
+    double gpuCoord(double x) const noexcept {
+        const int n = size > 1 ? size : 1;
+        return (0.5 + texel(x)) / static_cast<double>(n);
+    }
+};
+
+/// A non-owning view of a table of `dims` (1..3) axes and `channels` float
+/// channels, interleaved:
+///     data[((i2 * size1 + i1) * size0 + i0) * channels + c]
+/// which is an image of width size0 and height size1 * size2 (3D slices
+/// stacked vertically; slice i2 occupies rows i2*size1 .. i2*size1 + size1-1;
+/// a 1D table is size0 x 1). Axes at index >= dims are ignored (treated as a
+/// single node). The view is a literal type: it can be a constexpr value.
+struct LutView {
+    const float* data = nullptr;
+    int channels = 0;
+    int dims = 0;
+    Axis axis[3] = {};
+
+    /// Number of nodes along axis d (1 for d >= dims).
+    int size(int d) const noexcept {
+        return d >= 0 && d < dims && d < 3 ? axis[d].size : 1;
+    }
+
+    /// Number of floats the data array holds: size0 * size1 * size2 * channels.
+    std::size_t valueCount() const noexcept {
+        return static_cast<std::size_t>(size(0)) * static_cast<std::size_t>(size(1)) *
+               static_cast<std::size_t>(size(2)) *
+               static_cast<std::size_t>(channels > 0 ? channels : 0);
+    }
+
+    /// True when data is set, channels >= 1, dims is 1..3 and every used axis
+    /// is valid(). sample() and at() return zeros on an invalid view.
+    bool valid() const noexcept {
+        if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
+        for (int d = 0; d < dims; ++d)
+            if (!axis[d].valid()) return false;
+        return true;
+    }
+
+    /// Stored value of channel c at node (i0, i1, i2). Indices are clamped to
+    /// the grid (unused axes to 0), so any input is safe.
+    float at(int i0, int i1, int i2, int c) const noexcept {
+        if (!valid()) return 0.0f;
+        return data[offset(clampIndex(i0, size(0)), clampIndex(i1, size(1)),
+                           clampIndex(i2, size(2))) +
+                    static_cast<std::size_t>(clampIndex(c, channels))];
+    }
+
+    /// Interpolates every channel at the point x (dims values, in axis order,
+    /// in axis units; each is clamped to its axis, NaN maps to lo) and writes
+    /// `channels` floats to out. The interpolation runs in double on the
+    /// stored floats; at a node the stored value is returned bit for bit.
+    /// Writes zeros when the view is not valid().
+    void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+        if (!valid()) {
+            for (int c = 0; c < channels; ++c) out[c] = 0.0f;
+            return;
+        }
+        Stencil stencil[3];
+        for (int d = 0; d < 3; ++d) {
+            if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter);
+        }
+        for (int c = 0; c < channels; ++c) {
+            double sum = 0.0;
+            bool started = false;
+            for (int k2 = 0; k2 < stencil[2].count; ++k2) {
+                for (int k1 = 0; k1 < stencil[1].count; ++k1) {
+                    const double w21 = stencil[2].weight[k2] * stencil[1].weight[k1];
+                    if (w21 == 0.0) continue;
+                    const std::size_t row = offset(0, stencil[1].index[k1], stencil[2].index[k2]);
+                    for (int k0 = 0; k0 < stencil[0].count; ++k0) {
+                        const double w = w21 * stencil[0].weight[k0];
+                        // Zero weights are skipped so a node lookup is a single
+                        // product 1 * v (exact, even for -0).
+                        if (w == 0.0) continue;
+                        const double v = static_cast<double>(
+                            data[row + static_cast<std::size_t>(stencil[0].index[k0]) *
+                                           static_cast<std::size_t>(channels) +
+                                 static_cast<std::size_t>(c)]);
+                        sum = started ? sum + w * v : w * v;
+                        started = true;
+                    }
+                }
+            }
+            out[c] = static_cast<float>(sum);
+        }
+    }
+
+private:
+    /// Nodes and weights one axis contributes to a lookup (at most 4).
+    struct Stencil {
+        int index[4] = {0, 0, 0, 0};
+        double weight[4] = {1.0, 0.0, 0.0, 0.0};
+        int count = 1;
+    };
+
+    static int clampIndex(int i, int n) noexcept { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
+
+    /// Offset of channel 0 of node (i0, i1, i2) in data.
+    std::size_t offset(int i0, int i1, int i2) const noexcept {
+        const std::size_t n0 = static_cast<std::size_t>(size(0));
+        const std::size_t n1 = static_cast<std::size_t>(size(1));
+        return ((static_cast<std::size_t>(i2) * n1 + static_cast<std::size_t>(i1)) * n0 +
+                static_cast<std::size_t>(i0)) *
+               static_cast<std::size_t>(channels);
+    }
+
+    static Stencil makeStencil(const Axis& a, double x, Filter filter) noexcept {
+        Stencil st;
+        const int n = a.size;
+        if (n <= 1) return st;  // single node, weight 1
+        const double s = a.texel(x);
+        int i = static_cast<int>(std::floor(s));
+        if (i > n - 2) i = n - 2;
+        if (i < 0) i = 0;
+        const double f = s - static_cast<double>(i);
+        if (filter == Filter::Linear || n < 3) {
+            st.count = 2;
+            st.index[0] = i;
+            st.index[1] = i + 1;
+            st.weight[0] = 1.0 - f;
+            st.weight[1] = f;
+            return st;
+        }
+        // Catmull-Rom weights for nodes i-1, i, i+1, i+2. Exactly (0, 1, 0, 0)
+        // at f = 0 and (0, 0, 1, 0) at f = 1.
+        double wm1 = 0.5 * (((-f + 2.0) * f - 1.0) * f);
+        double w0 = 0.5 * ((3.0 * f - 5.0) * f * f + 2.0);
+        double w1 = 0.5 * (((-3.0 * f + 4.0) * f + 1.0) * f);
+        double w2 = 0.5 * ((f - 1.0) * f * f);
+        // Fold the linearly extrapolated ghost nodes into the real ones.
+        if (i == 0) {  // p[-1] = 2 p[0] - p[1]
+            w0 += 2.0 * wm1;
+            w1 -= wm1;
+            wm1 = 0.0;
+        }
+        if (i == n - 2) {  // p[n] = 2 p[n-1] - p[n-2]
+            w1 += 2.0 * w2;
+            w0 -= w2;
+            w2 = 0.0;
+        }
+        st.count = 0;
+        const int idx[4] = {i - 1, i, i + 1, i + 2};
+        const double wts[4] = {wm1, w0, w1, w2};
+        for (int k = 0; k < 4; ++k) {
+            if (idx[k] < 0 || idx[k] > n - 1) continue;
+            st.index[st.count] = idx[k];
+            st.weight[st.count] = wts[k];
+            ++st.count;
+        }
+        return st;
+    }
+};
+
+}  // namespace kiln

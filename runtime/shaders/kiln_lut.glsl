@@ -1,0 +1,114 @@
+// kiln_lut.glsl: sample kiln lookup tables on the GPU (GLSL 3.30 / ES 3.00 and later).
+//
+// Paste or #include this into a shader. The texture is the table's EXR image
+// uploaded as is (width size0, height size1 * size2, row 0 = EXR row 0 at
+// v = 0), channels in kiln.channels order as R, G, B, A, as a float texture
+// (R32F/RG32F/RGBA32F, or 16F for half tables), with
+//     min/mag filter GL_LINEAR, no mipmaps, wrap GL_CLAMP_TO_EDGE on s and t.
+// The KilnAxis values come from the file's kiln.axis<i>.* attributes (or the
+// constants of a header written by `kiln`); pass them as uniforms.
+//
+// Mapping (the same as kiln::Axis::gpuCoord in kiln/lut.h):
+//     t = warp((x - lo) / (hi - lo))   (log: t = ln(x / lo) / ln(hi / lo)), x clamped to [lo, hi]
+//     s = t * (size - 1)               continuous node index
+//     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
+//
+// Precision: hardware bilinear filtering quantizes the blend weights (8 bits
+// of fraction on common GPUs), which can add an error of about 1/512 of the
+// step between neighbouring texels. The *Exact variants blend with
+// texelFetch in full float precision, matching the CPU runtime.
+
+#ifndef KILN_LUT_GLSL
+#define KILN_LUT_GLSL
+
+#define KILN_WARP_LINEAR 0
+#define KILN_WARP_SQRT 1
+#define KILN_WARP_SQUARE 2
+#define KILN_WARP_LOG 3
+
+struct KilnAxis {
+    float lo;    // kiln.axis<i>.lo
+    float hi;    // kiln.axis<i>.hi
+    float size;  // kiln.axis<i>.size, number of nodes
+    int warp;    // KILN_WARP_* from kiln.axis<i>.warp
+};
+
+// Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi].
+float kilnWarped(float x, KilnAxis a) {
+    float xc = clamp(x, a.lo, a.hi);
+    if (a.warp == KILN_WARP_LOG) return clamp(log(xc / a.lo) / log(a.hi / a.lo), 0.0, 1.0);
+    float y = (xc - a.lo) / (a.hi - a.lo);
+    if (a.warp == KILN_WARP_SQRT) return sqrt(y);
+    if (a.warp == KILN_WARP_SQUARE) return y * y;
+    return y;
+}
+
+// Continuous node index s = t * (size - 1) of x.
+float kilnTexel(float x, KilnAxis a) {
+    return kilnWarped(x, a) * max(a.size - 1.0, 0.0);
+}
+
+// Texture coordinate (0.5 + s) / size of x, for hardware bilinear filtering.
+float kilnCoord(float x, KilnAxis a) {
+    return (0.5 + kilnTexel(x, a)) / a.size;
+}
+
+// 1D table (size0 x 1 image) at x.
+vec4 kilnSample1D(sampler2D lut, float x, KilnAxis a0) {
+    return textureLod(lut, vec2(kilnCoord(x, a0), 0.5), 0.0);
+}
+
+// 2D table at x = (x0, x1): one hardware bilinear fetch.
+vec4 kilnSample2D(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
+    return textureLod(lut, vec2(kilnCoord(x.x, a0), kilnCoord(x.y, a1)), 0.0);
+}
+
+// 3D table (slices along axis 2 stacked vertically) at x = (x0, x1, x2): a
+// bilinear fetch in the two slices around x2, blended linearly. The fetch
+// never bleeds into the neighbouring slice: its v stays between the centres
+// of the slice's first and last rows.
+vec4 kilnSample3D(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    float u = kilnCoord(x.x, a0);
+    float s1 = kilnTexel(x.y, a1);
+    float s2 = kilnTexel(x.z, a2);
+    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    float k1 = min(k0 + 1.0, a2.size - 1.0);
+    float rows = a1.size * a2.size;
+    vec4 c0 = textureLod(lut, vec2(u, (k0 * a1.size + 0.5 + s1) / rows), 0.0);
+    vec4 c1 = textureLod(lut, vec2(u, (k1 * a1.size + 0.5 + s1) / rows), 0.0);
+    return mix(c0, c1, s2 - k0);
+}
+
+// Bilinear blend in full precision at continuous texel position p (column,
+// row), node i at integer i, clamped to the image.
+vec4 kilnBlendExact(sampler2D lut, vec2 p) {
+    ivec2 last = textureSize(lut, 0) - 1;
+    vec2 base = floor(p);
+    vec2 f = p - base;
+    ivec2 i0 = clamp(ivec2(base), ivec2(0), last);
+    ivec2 i1 = min(i0 + 1, last);
+    vec4 a = mix(texelFetch(lut, i0, 0), texelFetch(lut, ivec2(i1.x, i0.y), 0), f.x);
+    vec4 b = mix(texelFetch(lut, ivec2(i0.x, i1.y), 0), texelFetch(lut, i1, 0), f.x);
+    return mix(a, b, f.y);
+}
+
+// As kilnSample2D, with the blend in full float precision.
+vec4 kilnSample2DExact(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
+    return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0), kilnTexel(x.y, a1)));
+}
+
+// As kilnSample3D, with the blends in full float precision.
+vec4 kilnSample3DExact(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    float s0 = kilnTexel(x.x, a0);
+    float s1 = kilnTexel(x.y, a1);
+    float s2 = kilnTexel(x.z, a2);
+    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    float k1 = min(k0 + 1.0, a2.size - 1.0);
+    // Clamp the row within the slice so the blend never reaches the next one.
+    float r = min(s1, a1.size - 1.0);
+    vec4 c0 = kilnBlendExact(lut, vec2(s0, k0 * a1.size + r));
+    vec4 c1 = kilnBlendExact(lut, vec2(s0, k1 * a1.size + r));
+    return mix(c0, c1, s2 - k0);
+}
+
+#endif  // KILN_LUT_GLSL

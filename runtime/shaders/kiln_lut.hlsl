@@ -1,0 +1,119 @@
+// kiln_lut.hlsl: sample kiln lookup tables on the GPU (HLSL, Shader Model 4.0 and later).
+//
+// Paste or #include this into a shader. The texture is the table's EXR image
+// uploaded as is (width size0, height size1 * size2, row 0 = EXR row 0 at
+// v = 0), channels in kiln.channels order as R, G, B, A, as a float texture
+// (R32_FLOAT/R32G32_FLOAT/R32G32B32A32_FLOAT, or 16_FLOAT for half tables),
+// sampled with a SamplerState of
+//     Filter = MIN_MAG_MIP_LINEAR, AddressU = AddressV = CLAMP, and no mipmaps.
+// The KilnAxis values come from the file's kiln.axis<i>.* attributes (or the
+// constants of a header written by `kiln`); pass them in a constant buffer.
+//
+// Mapping (the same as kiln::Axis::gpuCoord in kiln/lut.h):
+//     t = warp((x - lo) / (hi - lo))   (log: t = ln(x / lo) / ln(hi / lo)), x clamped to [lo, hi]
+//     s = t * (size - 1)               continuous node index
+//     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
+//
+// Precision: hardware bilinear filtering quantizes the blend weights (8 bits
+// of fraction on common GPUs), which can add an error of about 1/512 of the
+// step between neighbouring texels. The *Exact variants blend Load()ed texels
+// in full float precision, matching the CPU runtime.
+
+#ifndef KILN_LUT_HLSL
+#define KILN_LUT_HLSL
+
+#define KILN_WARP_LINEAR 0
+#define KILN_WARP_SQRT 1
+#define KILN_WARP_SQUARE 2
+#define KILN_WARP_LOG 3
+
+struct KilnAxis {
+    float lo;    // kiln.axis<i>.lo
+    float hi;    // kiln.axis<i>.hi
+    float size;  // kiln.axis<i>.size, number of nodes
+    int warp;    // KILN_WARP_* from kiln.axis<i>.warp
+};
+
+// Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi].
+float kilnWarped(float x, KilnAxis a) {
+    float xc = clamp(x, a.lo, a.hi);
+    if (a.warp == KILN_WARP_LOG) return saturate(log(xc / a.lo) / log(a.hi / a.lo));
+    float y = (xc - a.lo) / (a.hi - a.lo);
+    if (a.warp == KILN_WARP_SQRT) return sqrt(y);
+    if (a.warp == KILN_WARP_SQUARE) return y * y;
+    return y;
+}
+
+// Continuous node index s = t * (size - 1) of x.
+float kilnTexel(float x, KilnAxis a) {
+    return kilnWarped(x, a) * max(a.size - 1.0, 0.0);
+}
+
+// Texture coordinate (0.5 + s) / size of x, for hardware bilinear filtering.
+float kilnCoord(float x, KilnAxis a) {
+    return (0.5 + kilnTexel(x, a)) / a.size;
+}
+
+// 1D table (size0 x 1 image) at x.
+float4 kilnSample1D(Texture2D<float4> lut, SamplerState linearClamp, float x, KilnAxis a0) {
+    return lut.SampleLevel(linearClamp, float2(kilnCoord(x, a0), 0.5), 0.0);
+}
+
+// 2D table at x = (x0, x1): one hardware bilinear fetch.
+float4 kilnSample2D(Texture2D<float4> lut, SamplerState linearClamp, float2 x, KilnAxis a0,
+                    KilnAxis a1) {
+    return lut.SampleLevel(linearClamp, float2(kilnCoord(x.x, a0), kilnCoord(x.y, a1)), 0.0);
+}
+
+// 3D table (slices along axis 2 stacked vertically) at x = (x0, x1, x2): a
+// bilinear fetch in the two slices around x2, blended linearly. The fetch
+// never bleeds into the neighbouring slice: its v stays between the centres
+// of the slice's first and last rows.
+float4 kilnSample3D(Texture2D<float4> lut, SamplerState linearClamp, float3 x, KilnAxis a0,
+                    KilnAxis a1, KilnAxis a2) {
+    float u = kilnCoord(x.x, a0);
+    float s1 = kilnTexel(x.y, a1);
+    float s2 = kilnTexel(x.z, a2);
+    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    float k1 = min(k0 + 1.0, a2.size - 1.0);
+    float rows = a1.size * a2.size;
+    float4 c0 = lut.SampleLevel(linearClamp, float2(u, (k0 * a1.size + 0.5 + s1) / rows), 0.0);
+    float4 c1 = lut.SampleLevel(linearClamp, float2(u, (k1 * a1.size + 0.5 + s1) / rows), 0.0);
+    return lerp(c0, c1, s2 - k0);
+}
+
+// Bilinear blend in full precision at continuous texel position p (column,
+// row), node i at integer i, clamped to the image.
+float4 kilnBlendExact(Texture2D<float4> lut, float2 p) {
+    uint width, height;
+    lut.GetDimensions(width, height);
+    int2 last = int2(width, height) - 1;
+    float2 base = floor(p);
+    float2 f = p - base;
+    int2 i0 = clamp(int2(base), int2(0, 0), last);
+    int2 i1 = min(i0 + 1, last);
+    float4 a = lerp(lut.Load(int3(i0, 0)), lut.Load(int3(i1.x, i0.y, 0)), f.x);
+    float4 b = lerp(lut.Load(int3(i0.x, i1.y, 0)), lut.Load(int3(i1, 0)), f.x);
+    return lerp(a, b, f.y);
+}
+
+// As kilnSample2D, with the blend in full float precision.
+float4 kilnSample2DExact(Texture2D<float4> lut, float2 x, KilnAxis a0, KilnAxis a1) {
+    return kilnBlendExact(lut, float2(kilnTexel(x.x, a0), kilnTexel(x.y, a1)));
+}
+
+// As kilnSample3D, with the blends in full float precision.
+float4 kilnSample3DExact(Texture2D<float4> lut, float3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    float s0 = kilnTexel(x.x, a0);
+    float s1 = kilnTexel(x.y, a1);
+    float s2 = kilnTexel(x.z, a2);
+    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    float k1 = min(k0 + 1.0, a2.size - 1.0);
+    // Clamp the row within the slice so the blend never reaches the next one.
+    float r = min(s1, a1.size - 1.0);
+    float4 c0 = kilnBlendExact(lut, float2(s0, k0 * a1.size + r));
+    float4 c1 = kilnBlendExact(lut, float2(s0, k1 * a1.size + r));
+    return lerp(c0, c1, s2 - k0);
+}
+
+#endif  // KILN_LUT_HLSL
