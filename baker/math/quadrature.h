@@ -118,37 +118,4 @@ Channels<N> IntegrateAdaptive(F&& f, const double* breaks, int n, double absTol,
   return sum;
 }
 
-/// Endpoint-clustering maps of [0, 1] onto itself with contact of order k at both ends:
-/// k = 2 smoothstep 3t^2 - 2t^3, k = 3 smootherstep 10t^3 - 15t^4 + 6t^5. Under such a map an
-/// integrand that behaves like d^p at a panel end (d the distance to it) becomes t^(kp) times an
-/// analytic factor, and a feature of width w at an end is seen at width w^(1/k).
-struct EndpointMap {
-  int order = 3;
-  double S(double t) const {
-    return order == 2 ? t * t * (3 - 2 * t) : t * t * t * (10 + t * (-15 + 6 * t));
-  }
-  double dS(double t) const {
-    double u = t * (1 - t);
-    return order == 2 ? 6 * u : 30 * u * u;
-  }
-};
-
-/// Integral of f over [breaks[0], breaks[n-1]] where every gap between breaks is a panel whose
-/// ends are clustered by map (so kinks, cut-offs and edge features at the breaks cost little).
-template <int N, class F>
-Channels<N> IntegratePanels(F&& f, const double* breaks, int n, double absTol, int maxPanels,
-                            EndpointMap map = {}, double* errOut = nullptr) {
-  auto mapped = [&](double x) -> Channels<N> {
-    int i = std::min(static_cast<int>(x), n - 2);
-    double t = x - i, a = breaks[i], b = breaks[i + 1];
-    double jac = (b - a) * map.dS(t);
-    if (!(jac > 0)) return Channels<N>{};
-    return jac * f(a + (b - a) * map.S(t));
-  };
-  double xs[64];
-  int m = std::min(n, 64);
-  for (int i = 0; i < m; ++i) xs[i] = i;
-  return IntegrateAdaptive<N>(mapped, xs, m, absTol, maxPanels, errOut);
-}
-
 }  // namespace kiln
