@@ -13,7 +13,7 @@ namespace {
 using kiln::Axis;
 using kiln::Warp;
 
-const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log};
+const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
 
 /// Axes exercising every warp over a few ranges and sizes.
 std::vector<Axis> sampleAxes() {
@@ -40,6 +40,7 @@ double inverseWarp(const Axis& a, double t) {
         case Warp::Sqrt: return a.lo + (a.hi - a.lo) * t * t;
         case Warp::Square: return a.lo + (a.hi - a.lo) * std::sqrt(t);
         case Warp::Log: return a.lo * std::pow(a.hi / a.lo, t);
+        case Warp::Root4: return a.lo + (a.hi - a.lo) * std::pow(t, 4.0);
     }
     return 0.0;
 }

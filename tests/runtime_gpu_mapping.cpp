@@ -64,7 +64,7 @@ double gpuSample(const LutView& lut, const double* x, int c) {
 
 TEST_CASE("hardware bilinear filtering at gpuCoord equals the CPU linear lookup",
           "[runtime][gpu]") {
-    const Warp warps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log};
+    const Warp warps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
     std::mt19937 rng(2024);
     std::uniform_real_distribution<float> value(-1.0f, 1.0f);
     for (Warp warp : warps) {

@@ -151,7 +151,7 @@ TEST_CASE("both filters reproduce linear functions exactly", "[runtime][sampling
     }
 }
 
-TEST_CASE("cubic reproduces quadratics in the interior cells, linear does not",
+TEST_CASE("cubic reproduces quadratics in every cell, edge cells included; linear does not",
           "[runtime][sampling]") {
     const int n = 9;
     const Axis ax{0.0, 2.0, n, Warp::Linear};
@@ -159,11 +159,10 @@ TEST_CASE("cubic reproduces quadratics in the interior cells, linear does not",
     auto q = [](double x, double y) { return 0.75 * x * x - 0.5 * x * y - y * y + 0.25 * x + 1.0; };
     TestLut lut({ax, ay}, 1, [&](int i, int j, int, int) { return float(q(ax.node(i), ay.node(j))); });
     double worstLinear = 0.0;
-    // Interior cells: texel coordinates in [1, N - 2] on both axes.
+    // Every cell, the edge cells (quadratic ghost nodes) included.
     for (int a = 0; a <= 40; ++a) {
         for (int b = 0; b <= 40; ++b) {
-            const double x[2] = {ax.node(1) + (ax.node(n - 2) - ax.node(1)) * a / 40.0,
-                                 ay.node(1) + (ay.node(5) - ay.node(1)) * b / 40.0};
+            const double x[2] = {ax.lo + (ax.hi - ax.lo) * a / 40.0, ay.lo + (ay.hi - ay.lo) * b / 40.0};
             float cubic, linear;
             lut.view.sample(x, &cubic, Filter::Cubic);
             lut.view.sample(x, &linear, Filter::Linear);
@@ -175,8 +174,8 @@ TEST_CASE("cubic reproduces quadratics in the interior cells, linear does not",
 }
 
 TEST_CASE("cubic is more accurate than linear on a smooth function", "[runtime][sampling]") {
-    // Overall, and by an order of magnitude in the interior cells; in the edge
-    // cells the linearly extrapolated ghost nodes make cubic second order too.
+    // By a factor 5 overall and an order of magnitude in the interior cells (the
+    // quadratic ghost nodes keep cubic third order in the edge cells too).
     const Axis ax{0.0, 1.0, 16, Warp::Linear};
     const Axis ay{0.1, 2.0, 12, Warp::Log};
     auto f = [](double x, double y) { return std::sin(3.0 * x) * std::exp(-0.5 * y) + x * y; };
@@ -201,7 +200,7 @@ TEST_CASE("cubic is more accurate than linear on a smooth function", "[runtime][
     }
     INFO("max error linear " << worstLinear << ", cubic " << worstCubic << "; interior linear "
                              << interiorLinear << ", cubic " << interiorCubic);
-    CHECK(worstCubic < worstLinear);
+    CHECK(worstCubic < 0.2 * worstLinear);
     CHECK(interiorCubic < 0.1 * interiorLinear);
 }
 

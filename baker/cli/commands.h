@@ -22,5 +22,9 @@ std::string FullPrecision(double x);
 void RegisterList(CLI::App& app);
 void RegisterEval(CLI::App& app);
 void RegisterIntegrate(CLI::App& app);
+void RegisterBake(CLI::App& app);
+void RegisterInspect(CLI::App& app);
+void RegisterSample(CLI::App& app);
+void RegisterVerify(CLI::App& app);
 
 }  // namespace kiln::cli

@@ -1,8 +1,10 @@
 // kiln: bakes BRDFs and their hemispherical integrals into OpenEXR lookup tables.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include "baker/cli/commands.h"
+#include "baker/cli/scene_commands.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"kiln: BRDF integral lookup tables, baked exactly"};
@@ -11,6 +13,11 @@ int main(int argc, char** argv) {
   kiln::cli::RegisterList(app);
   kiln::cli::RegisterEval(app);
   kiln::cli::RegisterIntegrate(app);
+  kiln::cli::RegisterBake(app);
+  kiln::cli::RegisterInspect(app);
+  kiln::cli::RegisterSample(app);
+  kiln::cli::RegisterVerify(app);
+  kiln::cli::RegisterPlan(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -21,7 +28,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "kiln: error: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "kiln: error: %s\n", e.what());
+    std::string what = e.what();
+    if (what.rfind("kiln: ", 0) == 0) what = what.substr(6);  // the runtime's own prefix
+    std::fprintf(stderr, "kiln: error: %s\n", what.c_str());
     return 1;
   }
   return 0;

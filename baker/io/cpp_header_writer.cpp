@@ -89,6 +89,7 @@ std::string warpEnumerator(Warp warp) {
         case Warp::Linear: return "kiln::Warp::Linear";
         case Warp::Sqrt: return "kiln::Warp::Sqrt";
         case Warp::Square: return "kiln::Warp::Square";
+        case Warp::Root4: return "kiln::Warp::Root4";
         case Warp::Log: return "kiln::Warp::Log";
     }
     throw std::runtime_error("unknown warp");

@@ -26,6 +26,7 @@
 #define KILN_WARP_SQRT 1
 #define KILN_WARP_SQUARE 2
 #define KILN_WARP_LOG 3
+#define KILN_WARP_ROOT4 4
 
 struct KilnAxis {
     float lo;    // kiln.axis<i>.lo
@@ -41,6 +42,7 @@ float kilnWarped(float x, KilnAxis a) {
     float y = (xc - a.lo) / (a.hi - a.lo);
     if (a.warp == KILN_WARP_SQRT) return sqrt(y);
     if (a.warp == KILN_WARP_SQUARE) return y * y;
+    if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
     return y;
 }
 

@@ -25,9 +25,11 @@ namespace kiln {
 ///   Sqrt:   t = sqrt(y)  (nodes dense near lo)
 ///   Square: t = y^2      (nodes dense near hi)
 ///   Log:    t = ln(x / lo) / ln(hi / lo)  (nodes uniform in ln x; needs 0 < lo < hi)
-enum class Warp { Linear, Sqrt, Square, Log };
+///   Root4:  t = y^(1/4)  (nodes very dense near lo: a layer of width w at lo is
+///                         resolved once w^(1/4) >> 4 / N)
+enum class Warp { Linear, Sqrt, Square, Log, Root4 };
 
-/// The file/CLI name of a warp: "linear", "sqrt", "square" or "log".
+/// The file/CLI name of a warp: "linear", "sqrt", "square", "log" or "root4".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
     switch (warp) {
@@ -35,6 +37,7 @@ inline const char* warpName(Warp warp) noexcept {
         case Warp::Sqrt: return "sqrt";
         case Warp::Square: return "square";
         case Warp::Log: return "log";
+        case Warp::Root4: return "root4";
     }
     return "unknown";
 }
@@ -44,7 +47,7 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
     if (name == nullptr) return false;
-    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log};
+    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
     for (Warp candidate : all) {
         if (std::strcmp(name, warpName(candidate)) == 0) {
             warp = candidate;
@@ -57,9 +60,9 @@ inline bool warpFromName(const char* name, Warp& warp) noexcept {
 /// Interpolation filter of LutView::sample.
 ///   Linear: multilinear in texel (warped) space.
 ///   Cubic:  Catmull-Rom per axis in texel space. Beyond the ends, ghost nodes
-///           are extrapolated linearly (p[-1] = 2 p[0] - p[1], p[N] = 2 p[N-1] -
-///           p[N-2]), so linear functions are reproduced exactly everywhere and
-///           quadratics in the interior cells. May overshoot the data range.
+///           are extrapolated quadratically (p[-1] = 3 p[0] - 3 p[1] + p[2], and
+///           mirrored at the far end), so quadratics are reproduced exactly in
+///           every cell. May overshoot the data range.
 ///           An axis with fewer than 3 nodes is interpolated linearly.
 enum class Filter { Linear, Cubic };
 
@@ -91,6 +94,7 @@ struct Axis {
             case Warp::Sqrt: return lo + (hi - lo) * (t * t);
             case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
             case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
+            case Warp::Root4: return lo + (hi - lo) * ((t * t) * (t * t));
         }
         return lo;
     }
@@ -110,9 +114,25 @@ struct Axis {
                 break;
             }
             case Warp::Log: t = std::log(x / lo) / std::log(hi / lo); break;
+            case Warp::Root4: t = std::sqrt(std::sqrt((x - lo) / (hi - lo))); break;
         }
         if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
         return t < 1.0 ? t : 1.0;
+    }
+
+    /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
+    /// (t is clamped). node(i) == unwarped(i / (N - 1)) up to rounding.
+    double unwarped(double t) const noexcept {
+        if (!(t > 0.0)) return lo;
+        if (!(t < 1.0)) return hi;
+        switch (warp) {
+            case Warp::Linear: return lo + (hi - lo) * t;
+            case Warp::Sqrt: return lo + (hi - lo) * (t * t);
+            case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
+            case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
+            case Warp::Root4: return lo + (hi - lo) * ((t * t) * (t * t));
+        }
+        return lo;
     }
 
     /// Continuous node index s = t * (N - 1) in [0, N - 1] of a value x (see
@@ -261,15 +281,18 @@ private:
         double w0 = 0.5 * ((3.0 * f - 5.0) * f * f + 2.0);
         double w1 = 0.5 * (((-3.0 * f + 4.0) * f + 1.0) * f);
         double w2 = 0.5 * ((f - 1.0) * f * f);
-        // Fold the linearly extrapolated ghost nodes into the real ones.
-        if (i == 0) {  // p[-1] = 2 p[0] - p[1]
-            w0 += 2.0 * wm1;
-            w1 -= wm1;
+        // Fold the quadratically extrapolated ghost nodes into the real ones (n >= 3 here), so
+        // that quadratics are reproduced exactly in the edge cells too.
+        if (i == 0) {  // p[-1] = 3 p[0] - 3 p[1] + p[2]
+            w0 += 3.0 * wm1;
+            w1 -= 3.0 * wm1;
+            w2 += wm1;
             wm1 = 0.0;
         }
-        if (i == n - 2) {  // p[n] = 2 p[n-1] - p[n-2]
-            w1 += 2.0 * w2;
-            w0 -= w2;
+        if (i == n - 2) {  // p[n] = 3 p[n-1] - 3 p[n-2] + p[n-3]
+            w1 += 3.0 * w2;
+            w0 -= 3.0 * w2;
+            wm1 += w2;
             w2 = 0.0;
         }
         st.count = 0;

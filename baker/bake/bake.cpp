@@ -1,0 +1,226 @@
+#include "baker/bake/bake.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <thread>
+
+#include "baker/bake/lookup_error.h"
+#include "baker/io/atomic_write.h"
+#include "baker/io/cpp_header_writer.h"
+#include "baker/io/exr_writer.h"
+#include "kiln/exr_loader.h"
+
+namespace kiln {
+namespace {
+
+constexpr const char* kGenerator = "kiln 0.1.0";
+
+/// Coordinates of texel `index` (axis 0 fastest), at the nodes of the spec's axes.
+void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
+  for (size_t d = 0; d < spec.axes.size(); ++d) {
+    const AxisSpec& a = spec.axes[d];
+    x[d] = a.ToAxis().node(static_cast<int>(index % a.size));
+    index /= a.size;
+  }
+}
+
+/// Redraws a one-line progress bar on stderr every 100 ms while `done` < `total`.
+class ProgressBar {
+ public:
+  ProgressBar(const std::string& label, size_t total, bool enabled)
+      : label_(label), total_(total), enabled_(enabled) {
+    if (enabled_) thread_ = std::thread([this] { Run(); });
+  }
+  ~ProgressBar() {
+    stop_ = true;
+    if (thread_.joinable()) thread_.join();
+    if (enabled_) {
+      Draw();
+      std::fprintf(stderr, "\n");
+    }
+  }
+  std::atomic<size_t> done{0};
+
+ private:
+  void Run() {
+    while (!stop_) {
+      Draw();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  }
+  void Draw() {
+    size_t d = done.load();
+    int width = 30, filled = total_ ? static_cast<int>(width * d / total_) : width;
+    std::fprintf(stderr, "\r%-32s [%s%s] %zu/%zu", label_.c_str(), std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), d, total_);
+    std::fflush(stderr);
+  }
+  std::string label_;
+  size_t total_;
+  bool enabled_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+int Threads(int requested) {
+  return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
+Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats) {
+  if (spec.axes.empty() || spec.axes.size() > 3)
+    throw std::invalid_argument("table '" + spec.name + "': needs 1 to 3 axes");
+  for (const AxisSpec& a : spec.axes) {
+    std::string problem = axisProblem(a.ToAxis());
+    if (!problem.empty())
+      throw std::invalid_argument("table '" + spec.name + "': axis " + a.name + ": " + problem);
+    if (a.size > 65536)
+      throw std::invalid_argument("table '" + spec.name + "': axis " + a.name + " size " +
+                                  std::to_string(a.size) + " is absurd (at most 65536)");
+  }
+  if (spec.TexelCount() > (size_t(1) << 26))
+    throw std::invalid_argument("table '" + spec.name + "': " + std::to_string(spec.TexelCount()) +
+                                " texels is too many (at most 2^26)");
+  Table t;
+  t.generator = kGenerator;
+  t.name = spec.name;
+  t.model = spec.model;
+  t.quantity = spec.quantity;
+  t.channels = spec.channels;
+  t.channelMeanings = spec.meanings;
+  t.axes = spec.TableAxes();
+  t.params = spec.ParamsText();
+  t.method = spec.Method();
+  t.tolerance = spec.tol;
+  t.specHash = spec.Hash();
+  size_t n = spec.TexelCount(), nc = spec.channels.size();
+  t.data.assign(n * nc, 0.0f);
+  std::vector<long long> evals(n, 0);
+  std::vector<double> errors(n, 0);
+  auto t0 = std::chrono::steady_clock::now();
+  {
+    ProgressBar bar(spec.name, n, opt.progress);
+    tbb::task_arena arena(Threads(opt.threads));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          double x[3];
+          NodeCoordinates(spec, i, x);
+          IntegrationStats st;
+          std::vector<double> v = EvaluateSpec(spec, x, st);
+          for (size_t c = 0; c < nc; ++c) t.data[i * nc + c] = static_cast<float>(v[c]);
+          evals[i] = st.evals;
+          errors[i] = st.errorEstimate;
+          ++bar.done;
+        }
+      });
+    });
+  }
+  auto t1 = std::chrono::steady_clock::now();
+  // Bake error, relative to max(1, |value|): the integrator's own estimate (QUADPACK), never below
+  // the tolerance it was asked for, plus float32 storage rounding (2^-24 relative).
+  double estimate = 0;
+  for (size_t i = 0; i < n; ++i) estimate = std::max(estimate, errors[i]);
+  bool integrated = spec.Method().rfind("closed form", 0) != 0;
+  t.bakeError = (integrated ? std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
+  if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupRandomPoints, opt.threads);
+  auto t2 = std::chrono::steady_clock::now();
+  if (stats) {
+    stats->evals = 0;
+    for (long long e : evals) stats->evals += e;
+    stats->seconds = std::chrono::duration<double>(t1 - t0).count();
+    stats->lookupSeconds = std::chrono::duration<double>(t2 - t1).count();
+  }
+  return t;
+}
+
+void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, int threads) {
+  // At bake time: at most 4096 cell centres (strided) and as many random points as cells, at
+  // most randomPoints; `kiln verify` re-measures with every cell centre and 100,000 points.
+  size_t cells = 1;
+  for (const AxisSpec& a : spec.axes) cells *= static_cast<size_t>(std::max(1, a.size - 1));
+  long long random = static_cast<long long>(std::min<size_t>(static_cast<size_t>(std::max(0, randomPoints)), cells));
+  LookupErrorReport rep =
+      MeasureLookupError(spec, table.view(), random, spec.tol, threads, Filter::Linear, 4096);
+  table.lookupError.max = rep.max * kDeclaredBoundMargin;
+  table.lookupError.rms = rep.rms;
+  table.lookupError.filter = "linear";
+  char buf[256];
+  std::snprintf(buf, sizeof buf,
+                "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max over %lld points "
+                "(cell centres + random)",
+                rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin, rep.points);
+  table.lookupError.where = buf;
+}
+
+void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header) {
+  writeTable(dir + "/" + table.name + ".exr", table, half);
+  if (header) writeCppHeader(dir + "/" + table.name + ".h", table);
+}
+
+std::string StoredSpecHash(const std::string& exrPath) {
+  Table t;
+  std::string error;
+  if (access(exrPath.c_str(), R_OK) != 0) return "";
+  return loadTable(exrPath, t, error) ? t.specHash : "";
+}
+
+void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
+                    const std::vector<long long>& evals) {
+  using nlohmann::ordered_json;
+  std::string path = dir + "/manifest.json";
+  std::map<std::string, ordered_json> entries;
+  {
+    std::ifstream in(path);
+    if (in) {
+      ordered_json old = ordered_json::parse(in, nullptr, /*allow_exceptions=*/false);
+      if (old.is_object() && old["tables"].is_array())
+        for (auto& e : old["tables"])
+          if (e.is_object() && e["name"].is_string()) entries[e["name"].get<std::string>()] = e;
+    }
+  }
+  for (size_t i = 0; i < tables.size(); ++i) {
+    const Table& t = tables[i];
+    ordered_json e;
+    e["name"] = t.name;
+    e["file"] = t.name + ".exr";
+    e["model"] = t.model;
+    e["quantity"] = t.quantity;
+    e["channels"] = t.channels;
+    e["channel_meanings"] = t.channelMeanings;
+    ordered_json axes = ordered_json::array();
+    for (const TableAxis& a : t.axes)
+      axes.push_back({{"name", a.name}, {"lo", a.axis.lo}, {"hi", a.axis.hi}, {"size", a.axis.size},
+                      {"warp", warpName(a.axis.warp)}});
+    e["axes"] = axes;
+    e["params"] = t.params;
+    e["method"] = t.method;
+    e["tolerance"] = t.tolerance;
+    e["bake_error"] = t.bakeError;
+    e["lookup_error"] = {{"max", t.lookupError.max}, {"rms", t.lookupError.rms},
+                         {"filter", t.lookupError.filter}, {"where", t.lookupError.where}};
+    e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;
+    e["bytes_float32"] = t.data.size() * 4;
+    e["spec_hash"] = t.specHash;
+    entries[t.name] = e;
+  }
+  ordered_json doc;
+  doc["generator"] = kGenerator;
+  doc["format"] = kFormatVersion;
+  doc["tables"] = ordered_json::array();
+  for (auto& [name, e] : entries) doc["tables"].push_back(e);
+  writeBytes(path, doc.dump(2) + "\n");
+}
+
+}  // namespace kiln

@@ -1,0 +1,42 @@
+// The bake: evaluate a table spec at every node with oneTBB, measure its errors, write it.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "baker/tables/spec.h"
+#include "kiln/table.h"
+
+namespace kiln {
+
+struct BakeOptions {
+  int threads = 0;            ///< 0: all cores
+  bool progress = false;      ///< draw a progress bar on stderr
+  bool measureLookupError = true;  ///< measure the interpolation error at cell centres
+  int lookupRandomPoints = 1000;   ///< extra random points for that measurement
+};
+
+struct BakeStats {
+  long long evals = 0;        ///< integrand evaluations of the texels
+  double seconds = 0;         ///< wall time of the texels (without the lookup-error check)
+  double lookupSeconds = 0;   ///< wall time of the lookup-error check
+};
+
+/// Bakes `spec` into a table (metadata and texels). Bit-identical for any thread count.
+Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats = nullptr);
+
+/// Measures a table's lookup error (linear filter) against EvaluateSpec at every cell centre
+/// and `randomPoints` fixed-seed random points; fills table.lookupError with the declared bound
+/// (kDeclaredBoundMargin x the measured max) and the rms.
+void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, int threads);
+
+/// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically.
+void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header);
+
+/// The spec hash stored in DIR/<name>.exr, or "" when the file is missing or not a kiln table.
+std::string StoredSpecHash(const std::string& exrPath);
+
+/// Adds or replaces the entries of `tables` in DIR/manifest.json (sorted by name), atomically.
+void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
+                    const std::vector<long long>& evals);
+
+}  // namespace kiln

@@ -1,0 +1,95 @@
+// kiln bake: the default catalogue (or a part of it) into self-describing EXR files.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <stdexcept>
+
+#include "baker/bake/bake.h"
+#include "baker/cli/commands.h"
+#include "baker/scene/bake_scene.h"
+#include "baker/tables/catalogue.h"
+#include <cstdlib>
+
+namespace kiln::cli {
+
+void RegisterBake(CLI::App& app) {
+  auto* sub = app.add_subcommand("bake", "bake the default catalogue (or --only some tables) into DIR");
+  struct Args {
+    std::string out = "luts", only, scene;
+    int size = 0, threads = 0;
+    bool half = false, header = false, noLookup = false;
+    double roughness = 0.5;
+  };
+  auto args = std::make_shared<Args>();
+  sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
+  sub->add_option("--only", args->only, "comma-separated table names (default: all)");
+  auto* oSize = sub->add_option("--size", args->size, "nodes on every axis (default: each table's own)");
+  sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
+  sub->add_flag("--half", args->half, "store half floats instead of float32");
+  sub->add_flag("--header", args->header, "also write a C++ header per table");
+  sub->add_option("--roughness", args->roughness, "roughness of the *-brdf tables")->capture_default_str();
+  sub->add_option("--scene", args->scene, "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
+  sub->add_flag("--no-lookup-error", args->noLookup,
+                "skip measuring the lookup error (the file then declares none)");
+  sub->callback([args, oSize] {
+    if (oSize->count() && (args->size < 2 || args->size > 4096))
+      throw std::invalid_argument("bake: --size " + std::to_string(args->size) + " must be in [2, 4096]");
+    if (args->threads < 0 || args->threads > 1024)
+      throw std::invalid_argument("bake: -j " + std::to_string(args->threads) + " must be in [1, 1024]");
+    if (!(args->roughness >= 0 && args->roughness <= 1))
+      throw std::invalid_argument("bake: --roughness must be in [0, 1]");
+    if (!args->scene.empty()) {
+      if (!args->only.empty()) throw std::invalid_argument("bake: give --scene or --only, not both");
+      struct stat st {};
+      if (stat(args->out.c_str(), &st) != 0 && mkdir(args->out.c_str(), 0755) != 0)
+        throw std::runtime_error("bake: cannot create folder '" + args->out + "'");
+      BakeOptions bopt;
+      bopt.threads = args->threads;
+      bopt.progress = isatty(STDOUT_FILENO);
+      bopt.measureLookupError = !args->noLookup;
+      PlanOptions popt;
+      popt.size = args->size;
+      int code = BakeScene(args->scene, args->out, bopt, args->half, args->header, popt);
+      if (code != 0) std::exit(code);
+      return;
+    }
+    CatalogueOptions copt;
+    copt.size = args->size;
+    copt.brdfRoughness = args->roughness;
+    std::vector<TableSpec> specs;
+    if (args->only.empty()) {
+      specs = DefaultCatalogue(copt);
+    } else {
+      for (const std::string& name : splitList(args->only, ','))
+        specs.push_back(CatalogueTable(name, copt));
+    }
+    struct stat st {};
+    if (stat(args->out.c_str(), &st) != 0 && mkdir(args->out.c_str(), 0755) != 0)
+      throw std::runtime_error("bake: cannot create folder '" + args->out + "'");
+    bool tty = isatty(STDOUT_FILENO);
+    BakeOptions bopt;
+    bopt.threads = args->threads;
+    bopt.progress = tty;
+    bopt.measureLookupError = !args->noLookup;
+    std::vector<Table> baked;
+    std::vector<long long> evals;
+    auto t0 = std::chrono::steady_clock::now();
+    for (const TableSpec& spec : specs) {
+      BakeStats stats;
+      Table t = BakeTable(spec, bopt, &stats);
+      WriteBakedTable(args->out, t, args->half, args->header);
+      if (tty)
+        std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n", t.name.c_str(),
+                    stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError, t.lookupError.max);
+      evals.push_back(stats.evals);
+      baked.push_back(std::move(t));
+    }
+    UpdateManifest(args->out, baked, evals);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (tty) std::printf("baked %zu tables into %s in %.2f s\n", baked.size(), args->out.c_str(), seconds);
+  });
+}
+
+}  // namespace kiln::cli

@@ -1,0 +1,54 @@
+// kiln inspect: a table's attributes and channel ranges, optionally a false-colour picture.
+#include <cstdio>
+
+#include "baker/cli/commands.h"
+#include "baker/io/png_writer.h"
+#include "kiln/exr_loader.h"
+
+namespace kiln::cli {
+
+void RegisterInspect(CLI::App& app) {
+  auto* sub = app.add_subcommand("inspect", "print a table's attributes and per-channel ranges");
+  struct Args {
+    std::string file, png;
+  };
+  auto args = std::make_shared<Args>();
+  sub->add_option("file", args->file, "a kiln .exr table")->required();
+  sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
+  sub->callback([args] {
+    Table t = loadTable(args->file);
+    std::printf("file            %s\n", args->file.c_str());
+    std::printf("name            %s\n", t.name.c_str());
+    std::printf("generator       %s (format %d)\n", t.generator.c_str(), kFormatVersion);
+    std::printf("model           %s\n", t.model.c_str());
+    std::printf("quantity        %s\n", t.quantity.c_str());
+    std::printf("params          %s\n", t.params.empty() ? "(none)" : t.params.c_str());
+    for (int d = 0; d < t.dims(); ++d) {
+      const TableAxis& a = t.axes[d];
+      std::printf("axis %d          %s [%.17g, %.17g] %d nodes, %s warp\n", d, a.name.c_str(), a.axis.lo,
+                  a.axis.hi, a.axis.size, warpName(a.axis.warp));
+    }
+    std::printf("method          %s\n", t.method.c_str());
+    std::printf("tolerance       %.3g\n", t.tolerance);
+    std::printf("bake error      %.3g\n", t.bakeError);
+    std::printf("lookup error    max %.3g rms %.3g (%s) at %s\n", t.lookupError.max, t.lookupError.rms,
+                t.lookupError.filter.c_str(), t.lookupError.where.c_str());
+    std::printf("spec hash       %s\n", t.specHash.c_str());
+    size_t nc = t.channels.size();
+    for (size_t c = 0; c < nc; ++c) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (size_t i = c; i < t.data.size(); i += nc) {
+        lo = std::min(lo, static_cast<double>(t.data[i]));
+        hi = std::max(hi, static_cast<double>(t.data[i]));
+      }
+      std::printf("channel %-7s [%.9g, %.9g]  %s\n", t.channels[c].c_str(), lo, hi,
+                  c < t.channelMeanings.size() ? t.channelMeanings[c].c_str() : "");
+    }
+    if (!args->png.empty()) {
+      writeFalseColourPng(args->png, t);
+      std::printf("png             %s\n", args->png.c_str());
+    }
+  });
+}
+
+}  // namespace kiln::cli

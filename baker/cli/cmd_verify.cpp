@@ -1,0 +1,87 @@
+// kiln verify: re-measures each table's lookup error against direct evaluation.
+#include <dirent.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+#include "baker/bake/lookup_error.h"
+#include "baker/cli/commands.h"
+#include "kiln/exr_loader.h"
+
+namespace kiln::cli {
+namespace {
+
+std::vector<std::string> ExrFiles(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) throw std::invalid_argument("verify: no such file or folder '" + path + "'");
+  if (!S_ISDIR(st.st_mode)) return {path};
+  std::vector<std::string> out;
+  if (DIR* d = opendir(path.c_str())) {
+    while (dirent* e = readdir(d)) {
+      std::string n = e->d_name;
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0) out.push_back(path + "/" + n);
+    }
+    closedir(d);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+void RegisterVerify(CLI::App& app) {
+  auto* sub = app.add_subcommand(
+      "verify", "re-measure each table's lookup error at every cell centre and random points; "
+                "exit 1 when one exceeds its declared bound");
+  struct Args {
+    std::vector<std::string> paths;
+    long long points = 100000, cells = 0;
+    double tol = 1e-7;
+    int threads = 0;
+  };
+  auto args = std::make_shared<Args>();
+  sub->add_option("paths", args->paths, "tables or folders of tables")->required();
+  sub->add_option("--points", args->points, "random points per table, besides every cell centre")
+      ->capture_default_str();
+  sub->add_option("--cells", args->cells, "check at most this many cell centres, strided (0: all)")
+      ->capture_default_str();
+  sub->add_option("--tol", args->tol, "tolerance of the direct evaluation")->capture_default_str();
+  sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
+  sub->callback([args] {
+    if (args->cells < 0) throw std::invalid_argument("verify: --cells must be >= 0");
+    if (args->points < 0) throw std::invalid_argument("verify: --points must be >= 0");
+    if (!(args->tol > 0 && args->tol <= 1e-4)) throw std::invalid_argument("verify: --tol must be in (0, 1e-4]");
+    std::vector<std::string> files;
+    for (const std::string& p : args->paths)
+      for (const std::string& f : ExrFiles(p)) files.push_back(f);
+    if (files.empty()) throw std::invalid_argument("verify: no .exr files found");
+    int failed = 0;
+    std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
+                "where (max)");
+    for (const std::string& f : files) {
+      Table t;
+      std::string error;
+      if (!loadTable(f, t, error)) {
+        std::printf("%-40s FAILED: %s\n", f.c_str(), error.c_str());
+        ++failed;
+        continue;
+      }
+      TableSpec spec = SpecFromTable(t);
+      LookupErrorReport rep = MeasureLookupError(spec, t.view(), args->points, args->tol, args->threads,
+                                                 t.lookupError.filter == "cubic" ? Filter::Cubic : Filter::Linear,
+                                                 args->cells);
+      // The direct evaluation itself is only good to tol: allow that much on top of the bound.
+      bool ok = t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError;
+      std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
+                  t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
+                  ok ? "" : "  EXCEEDS BOUND");
+      if (!ok) ++failed;
+    }
+    std::printf("%zu tables, %d over their bound\n", files.size(), failed);
+    if (failed) throw std::runtime_error("verify: " + std::to_string(failed) + " table(s) failed");
+  });
+}
+
+}  // namespace kiln::cli

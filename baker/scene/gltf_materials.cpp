@@ -1,0 +1,272 @@
+#include "baker/scene/gltf_materials.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace kiln {
+namespace {
+
+using Kind = SceneNote::Kind;
+
+const char* const kMaterialExtensions[] = {
+    "KHR_materials_anisotropy",        "KHR_materials_clearcoat",
+    "KHR_materials_diffuse_transmission", "KHR_materials_dispersion",
+    "KHR_materials_emissive_strength", "KHR_materials_ior",
+    "KHR_materials_iridescence",       "KHR_materials_pbrSpecularGlossiness",
+    "KHR_materials_sheen",             "KHR_materials_specular",
+    "KHR_materials_transmission",      "KHR_materials_unlit",
+    "KHR_materials_volume"};
+
+const char* const kNonMaterialExtensions[] = {
+    "KHR_animation_pointer",  "KHR_draco_mesh_compression", "KHR_interactivity",
+    "KHR_lights_punctual",    "KHR_materials_variants",     "KHR_mesh_quantization",
+    "KHR_node_visibility",    "KHR_texture_basisu",         "KHR_texture_transform",
+    "KHR_xmp_json_ld",        "EXT_lights_image_based",     "EXT_mesh_gpu_instancing",
+    "EXT_meshopt_compression", "EXT_texture_avif",          "EXT_texture_webp"};
+
+/// Reads one material: the helpers below share its pointer, label and the scene to fill.
+class MaterialReader {
+ public:
+  MaterialReader(const Json& m, const std::string& at, const std::string& label,
+                 const std::set<std::string>& animated, const JsonReader& r, Scene& scene)
+      : m_(m), at_(at), label_(label), animated_(animated), r_(r), scene_(scene) {}
+
+  void Read();
+
+ private:
+  const Json* Ext(const std::string& name) const {
+    const Json* ext = JsonReader::Find(m_, "extensions");
+    const Json* e = ext ? JsonReader::Find(*ext, name) : nullptr;
+    if (e) r_.Object(*e, ExtAt(name));
+    return e;
+  }
+  std::string ExtAt(const std::string& name) const {
+    return PointerChild(PointerChild(at_, "extensions"), name);
+  }
+  bool Animated(const std::string& at, const std::string& key) const {
+    return animated_.count(PointerChild(at, key)) > 0;
+  }
+  void Note(Kind kind, const std::string& topic, const std::string& why) {
+    scene_.notes.push_back({kind, topic, why, label_});
+  }
+  void Need(const std::string& kind, std::map<std::string, ValueRange> ranges, const std::string& why) {
+    scene_.needs.push_back({kind, "ggx", std::move(ranges), label_ + ": " + why});
+  }
+  /// A factor in [lo, hi] multiplied by an optional texture: one value without a texture,
+  /// [0, f] with one (the texture multiplies the factor), the whole axis when animated. `what` describes it for reasons.
+  ValueRange Factor(const Json& obj, const std::string& at, const std::string& key, double def,
+                    const std::string& textureKey, std::string& what) const {
+    double f = r_.NumberIn(obj, at, key, def, 0, 1);
+    bool textured = !textureKey.empty() && JsonReader::Find(obj, textureKey);
+    if (Animated(at, key)) {
+      what = key + " animated (KHR_animation_pointer): whole axis";
+      return ValueRange::Whole();
+    }
+    if (textured) {
+      what = textureKey + " x " + key + " " + ExactNumber(f) + ": 0.." + ExactNumber(f);
+      return ValueRange::Between(0, f);
+    }
+    what = key + " " + ExactNumber(f);
+    return ValueRange::Exactly(f);
+  }
+
+  const Json& m_;
+  std::string at_, label_;
+  const std::set<std::string>& animated_;
+  const JsonReader& r_;
+  Scene& scene_;
+};
+
+void MaterialReader::Read() {
+  r_.Object(m_, at_);
+  const Json* extensions = JsonReader::Find(m_, "extensions");
+  if (extensions) r_.Object(*extensions, PointerChild(at_, "extensions"));
+  std::vector<std::string> present;
+  if (extensions)
+    for (auto it = extensions->begin(); it != extensions->end(); ++it) present.push_back(it.key());
+
+  for (const std::string& name : present)
+    if (!IsKnownMaterialExtension(name))
+      Note(Kind::Unknown, name,
+           IsNonMaterialExtension(name) ? "not a material extension here: ignored"
+                                        : "unknown material extension: ignored (the plan covers what kiln knows)");
+
+  if (Ext("KHR_materials_unlit")) {
+    Note(Kind::NoTable, "KHR_materials_unlit", "unlit: no BRDF, so no table");
+    for (const std::string& name : present)
+      if (name != "KHR_materials_unlit" && IsKnownMaterialExtension(name))
+        Note(Kind::NoEffect, name, "ignored on an unlit material");
+    return;
+  }
+
+  // The base GGX lobe: its roughness values and whether a dielectric layer exists at all.
+  ValueRange rough;
+  std::string roughWhat;
+  bool fullyMetallic = false;
+  if (const Json* sg = Ext("KHR_materials_pbrSpecularGlossiness")) {
+    std::string at = ExtAt("KHR_materials_pbrSpecularGlossiness"), what;
+    ValueRange gloss = Factor(*sg, at, "glossinessFactor", 1, "specularGlossinessTexture", what);
+    rough = gloss.whole ? gloss : ValueRange::Between(1 - gloss.hi, 1 - gloss.lo);
+    roughWhat = "roughness 1 - glossiness (" + what + ")";
+  } else {
+    static const Json kDefaults = Json::object();
+    const Json* pbr = JsonReader::Find(m_, "pbrMetallicRoughness");
+    std::string at = PointerChild(at_, "pbrMetallicRoughness");
+    if (pbr) r_.Object(*pbr, at);
+    const Json& p = pbr ? *pbr : kDefaults;
+    rough = Factor(p, at, "roughnessFactor", 1, "metallicRoughnessTexture", roughWhat);
+    std::string metalWhat;
+    ValueRange metal = Factor(p, at, "metallicFactor", 1, "metallicRoughnessTexture", metalWhat);
+    fullyMetallic = metal.Single() && metal.lo == 1;
+  }
+  Need("dfg", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  Need("albedo", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  Need("albedo-avg", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  if (!fullyMetallic) Note(Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly");
+
+  if (const Json* cc = Ext("KHR_materials_clearcoat")) {
+    std::string at = ExtAt("KHR_materials_clearcoat"), what;
+    ValueRange coat = Factor(*cc, at, "clearcoatFactor", 0, "clearcoatTexture", what);
+    if (!coat.whole && coat.hi == 0) {
+      Note(Kind::NoEffect, "KHR_materials_clearcoat", "clearcoatFactor 0: no coat");
+    } else {
+      std::string rWhat;
+      ValueRange cr = Factor(*cc, at, "clearcoatRoughnessFactor", 0, "clearcoatRoughnessTexture", rWhat);
+      Need("dfg", {{"roughness", cr}}, "clearcoat GGX lobe, " + rWhat);
+    }
+  }
+
+  // The dielectric layer: IOR, transmission, volume, dispersion.
+  const Json* iorExt = Ext("KHR_materials_ior");
+  const Json* tr = Ext("KHR_materials_transmission");
+  const Json* vol = Ext("KHR_materials_volume");
+  const Json* disp = Ext("KHR_materials_dispersion");
+  double ior = 1.5;
+  bool iorAnimated = false;
+  if (iorExt) {
+    std::string at = ExtAt("KHR_materials_ior");
+    ior = r_.NumberIn(*iorExt, at, "ior", 1.5, 0, std::numeric_limits<double>::infinity());
+    if (ior > 0 && ior < 1)
+      r_.Fail(PointerChild(at, "ior"), ExactNumber(ior) + " is not a valid IOR (>= 1, or exactly 0)");
+    iorAnimated = Animated(at, "ior");
+  }
+  bool transmits = false;
+  std::string trWhat;
+  if (tr) {
+    ValueRange t = Factor(*tr, ExtAt("KHR_materials_transmission"), "transmissionFactor", 0,
+                          "transmissionTexture", trWhat);
+    transmits = t.whole || t.hi > 0;
+    if (!transmits) Note(Kind::NoEffect, "KHR_materials_transmission", "transmissionFactor 0: no transmission");
+  }
+  if (vol && !transmits)
+    Note(Kind::NoEffect, "KHR_materials_volume", "no effect without transmission (transmissionFactor > 0)");
+  double dispersion = 0;
+  if (disp) {
+    dispersion = r_.NumberIn(*disp, ExtAt("KHR_materials_dispersion"), "dispersion", 0, 0,
+                             std::numeric_limits<double>::infinity());
+    if (!transmits)
+      Note(Kind::NoEffect, "KHR_materials_dispersion", "no effect without transmission (transmissionFactor > 0)");
+    else if (dispersion == 0)
+      Note(Kind::NoEffect, "KHR_materials_dispersion", "dispersion 0: no dispersion");
+  }
+  if (iorExt || transmits) {
+    std::string what = iorExt ? "KHR_materials_ior ior " + ExactNumber(ior) : "ior 1.5 (default)";
+    if (transmits) what += ", KHR_materials_transmission (" + trWhat + ")";
+    if (fullyMetallic) {
+      for (const char* name : {"KHR_materials_ior", "KHR_materials_transmission"})
+        if (Ext(name))
+          Note(Kind::NoEffect, name, "the material is fully metallic (metallicFactor 1, no texture): no dielectric layer");
+    } else if (ior == 0 && !iorAnimated) {
+      Note(Kind::NoTable, "KHR_materials_ior",
+           "ior 0 (specular-glossiness compatibility): F = 1, the dielectric albedo is ggx-albedo's");
+    } else {
+      ValueRange eta = ValueRange::Exactly(ior);
+      if (iorAnimated) {
+        eta = ValueRange::Whole();
+        what += " animated (KHR_animation_pointer): whole IOR axis";
+      } else if (transmits && dispersion > 0) {
+        // KHR_materials_dispersion: per-channel IORs ior -+ (ior - 1) 0.025 dispersion.
+        double half = (ior - 1) * 0.025 * dispersion;
+        eta = ValueRange::Between(std::max(1.0, ior - half), ior + half);
+        what += ", KHR_materials_dispersion " + ExactNumber(dispersion) + ": ior " + eta.Text();
+      }
+      if (transmits && vol) what += ", KHR_materials_volume";
+      Need("fresnel-albedo", {{"roughness", rough}, {"eta", eta}},
+           "dielectric layer (" + what + "), " + roughWhat);
+      if (transmits && vol)
+        Note(Kind::NoTable, "KHR_materials_volume",
+             "attenuation is Beer-Lambert (closed form); refraction uses the dielectric table");
+    }
+  }
+
+  if (Ext("KHR_materials_specular")) {
+    if (fullyMetallic)
+      Note(Kind::NoEffect, "KHR_materials_specular", "the material is fully metallic: no dielectric layer");
+    else
+      Note(Kind::NoTable, "KHR_materials_specular",
+           "scales the dielectric Fresnel (F0 x specularColor, F90 x specular): F0 A + F90 B from ggx-dfg");
+  }
+  if (const Json* sh = Ext("KHR_materials_sheen")) {
+    std::string at = ExtAt("KHR_materials_sheen");
+    bool on = Animated(at, "sheenColorFactor");
+    if (const Json* c = JsonReader::Find(*sh, "sheenColorFactor")) {
+      r_.Array(*c, PointerChild(at, "sheenColorFactor"));
+      for (size_t i = 0; i < c->size(); ++i)
+        on |= r_.Number((*c)[i], PointerChild(PointerChild(at, "sheenColorFactor"), i)) > 0;
+    }
+    if (!on)
+      Note(Kind::NoEffect, "KHR_materials_sheen", "sheenColorFactor 0: no sheen");
+    else
+      Note(Kind::NotYet, "KHR_materials_sheen",
+           "Charlie sheen (Estevez-Kulla 2017) needs E(mu, sheenRoughness) for albedo scaling; kiln has no Charlie model yet");
+  }
+  if (const Json* ir = Ext("KHR_materials_iridescence")) {
+    std::string what;
+    ValueRange f = Factor(*ir, ExtAt("KHR_materials_iridescence"), "iridescenceFactor", 0, "iridescenceTexture", what);
+    if (!f.whole && f.hi == 0)
+      Note(Kind::NoEffect, "KHR_materials_iridescence", "iridescenceFactor 0: no thin film");
+    else
+      Note(Kind::NotYet, "KHR_materials_iridescence",
+           "thin-film Fresnel (Belcour-Barla 2017) has no kiln table yet");
+  }
+  if (const Json* an = Ext("KHR_materials_anisotropy")) {
+    std::string at = ExtAt("KHR_materials_anisotropy");
+    double s = r_.NumberIn(*an, at, "anisotropyStrength", 0, 0, 1);
+    if (s == 0 && !Animated(at, "anisotropyStrength") && !JsonReader::Find(*an, "anisotropyTexture"))
+      Note(Kind::NoEffect, "KHR_materials_anisotropy", "anisotropyStrength 0: isotropic");
+    else
+      Note(Kind::NotYet, "KHR_materials_anisotropy",
+           "anisotropic GGX albedo needs an anisotropy axis; kiln's GGX tables are isotropic");
+  }
+  if (Ext("KHR_materials_emissive_strength"))
+    Note(Kind::NoTable, "KHR_materials_emissive_strength", "emission is not a BRDF");
+  if (const Json* dt = Ext("KHR_materials_diffuse_transmission")) {
+    std::string what;
+    ValueRange f = Factor(*dt, ExtAt("KHR_materials_diffuse_transmission"), "diffuseTransmissionFactor", 0,
+                          "diffuseTransmissionTexture", what);
+    if (!f.whole && f.hi == 0)
+      Note(Kind::NoEffect, "KHR_materials_diffuse_transmission", "diffuseTransmissionFactor 0");
+    else
+      Note(Kind::NoTable, "KHR_materials_diffuse_transmission",
+           "Lambertian transmission: its albedo is the color exactly");
+  }
+}
+
+}  // namespace
+
+void AddGltfMaterial(const Json& material, const std::string& at, const std::string& label,
+                     const std::set<std::string>& animated, const JsonReader& reader, Scene& scene) {
+  MaterialReader(material, at, label, animated, reader, scene).Read();
+}
+
+bool IsKnownMaterialExtension(const std::string& name) {
+  return std::find(std::begin(kMaterialExtensions), std::end(kMaterialExtensions), name) !=
+         std::end(kMaterialExtensions);
+}
+
+bool IsNonMaterialExtension(const std::string& name) {
+  return std::find(std::begin(kNonMaterialExtensions), std::end(kNonMaterialExtensions), name) !=
+         std::end(kNonMaterialExtensions);
+}
+
+}  // namespace kiln

@@ -1,0 +1,195 @@
+#include "baker/scene/kiln_scene_reader.h"
+
+#include <algorithm>
+
+#include "baker/models/registry.h"
+
+namespace kiln {
+namespace {
+
+using Kind = SceneNote::Kind;
+
+const ParamInfo* FindParam(const ModelInfo& m, const std::string& name) {
+  for (const ParamInfo& p : m.params)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+/// Why model `m` has no table of `kind` ("" when it has one).
+std::string KindProblem(const ModelInfo& m, const std::string& kind) {
+  if (kind == "dfg" && !m.specular()) return "dfg needs a microfacet model";
+  if ((kind == "fresnel-albedo" || kind == "fresnel-albedo-avg") && m.id != "ggx")
+    return kind + " is baked for ggx only";
+  if ((kind == "fresnel-dielectric" || kind == "fresnel-dielectric-avg") && !FindParam(m, "eta"))
+    return kind + " needs a model with eta";
+  if (kind == "fresnel-conductor" && !(FindParam(m, "eta") && FindParam(m, "k")))
+    return kind + " needs a model with eta and k";
+  return "";
+}
+
+std::string Join(const std::vector<std::string>& items) {
+  std::string s;
+  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
+/// One parameter value: a number, [lo, hi] or "any", inside the model's range.
+ValueRange ReadValue(const Json& v, const std::string& at, const ParamInfo& p, const JsonReader& r) {
+  auto inRange = [&](double x, const std::string& where) {
+    if (x < p.lo || x > p.hi)
+      r.Fail(where, p.name + " " + ExactNumber(x) + " is outside [" + ExactNumber(p.lo) + ", " +
+                        ExactNumber(p.hi) + "]");
+    return x;
+  };
+  if (v.is_number()) return ValueRange::Exactly(inRange(r.Number(v, at), at));
+  if (v.is_string() && v.get<std::string>() == "any") return ValueRange::Whole();
+  if (v.is_array()) {
+    if (v.size() != 2) r.Fail(at, "an interval is [lo, hi], got " + std::to_string(v.size()) + " values");
+    double lo = inRange(r.Number(v[0], PointerChild(at, 0)), PointerChild(at, 0));
+    double hi = inRange(r.Number(v[1], PointerChild(at, 1)), PointerChild(at, 1));
+    if (lo > hi) r.Fail(at, "interval [" + ExactNumber(lo) + ", " + ExactNumber(hi) + "] has lo > hi");
+    return ValueRange::Between(lo, hi);
+  }
+  r.Fail(at, "expected a number, an interval [lo, hi] or \"any\", got " + JsonKind(v));
+}
+
+void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Scene& scene) {
+  r.Object(m, at);
+  std::string label = at;
+  if (const Json* name = JsonReader::Find(m, "name"))
+    label = "'" + r.String(*name, PointerChild(at, "name")) + "' (" + at + ")";
+  const Json* modelJson = JsonReader::Find(m, "model");
+  if (!modelJson) r.Fail(at, "missing \"model\" (a kiln model id, see `kiln list`)");
+  std::string id = r.String(*modelJson, PointerChild(at, "model"));
+  const ModelInfo* info = FindModel(id);
+  if (!info) r.Fail(PointerChild(at, "model"), "unknown model '" + id + "' (see `kiln list`)");
+
+  std::map<std::string, ValueRange> values;
+  std::vector<std::string> kinds;
+  bool kindsGiven = false;
+  for (auto it = m.begin(); it != m.end(); ++it) {
+    const std::string& key = it.key();
+    std::string kat = PointerChild(at, key);
+    if (key == "name" || key == "model") continue;
+    if (key == "tables") {
+      kindsGiven = true;
+      r.Array(*it, kat);
+      for (size_t j = 0; j < it->size(); ++j) {
+        std::string jat = PointerChild(kat, j);
+        std::string kind = r.String((*it)[j], jat);
+        const auto& all = SceneTableKinds();
+        if (std::find(all.begin(), all.end(), kind) == all.end())
+          r.Fail(jat, "unknown table kind '" + kind + "' (one of: " + Join(all) + ")");
+        std::string problem = KindProblem(*info, kind);
+        if (!problem.empty()) r.Fail(jat, "model '" + id + "' has no " + kind + " table: " + problem);
+        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
+      }
+      continue;
+    }
+    const ParamInfo* p = FindParam(*info, key);
+    if (!p) {
+      std::vector<std::string> names;
+      for (const ParamInfo& q : info->params) names.push_back(q.name);
+      r.Fail(kat, "model '" + id + "' takes no parameter '" + key + "' (keys: name, model, tables" +
+                      (names.empty() ? "" : ", " + Join(names)) + ")");
+    }
+    values[key] = ReadValue(*it, kat, *p, r);
+  }
+  if (values.count("f0") && values.count("eta"))
+    r.Fail(at, "give either f0 (Schlick) or eta, not both");
+  if (values.count("k") && !values.count("eta")) r.Fail(PointerChild(at, "k"), "k needs eta");
+  bool conductor = values.count("k") && (values["k"].whole || values["k"].hi > 0);
+
+  if (!kindsGiven) {
+    if (id == "lambert") {
+      scene.notes.push_back({Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly", label});
+    } else if (info->specular()) {
+      kinds = {"dfg", "albedo", "albedo-avg"};
+      if (conductor) kinds.push_back("fresnel-conductor");
+      else if (values.count("eta") && id == "ggx") kinds.push_back("fresnel-albedo");
+      else if (values.count("eta"))
+        scene.notes.push_back({Kind::NotYet, "eta", "exact-Fresnel albedo tables are baked for ggx only", label});
+    } else {
+      kinds = {"albedo", "albedo-avg"};
+    }
+  } else if (kinds.empty()) {
+    scene.notes.push_back({Kind::NoTable, "tables: []", "the material asks for no table", label});
+  }
+
+  // Parameters with no table axis.
+  if (values.count("rho"))
+    scene.notes.push_back({Kind::NoTable, "rho", "tables are baked at rho = 1: scale by rho (rho^2 channel where the model has one)", label});
+  if (values.count("f0")) {
+    if (info->specular())
+      scene.notes.push_back({Kind::NoTable, "f0", "Schlick F0 is applied at run time: F0 A + B from the dfg table", label});
+    else
+      scene.notes.push_back({Kind::NotYet, "f0", "the " + id + " tables are baked at its default f0 (no f0 axis yet)", label});
+  }
+  if (values.count("rs"))
+    scene.notes.push_back({Kind::NotYet, "rs", "the " + id + " tables are baked at its default rs (no rs axis yet)", label});
+  if (values.count("nu") || values.count("nv"))
+    scene.notes.push_back({Kind::NotYet, "nu, nv", "tables use n_u = n_v from roughness (no anisotropy axis yet)", label});
+
+  auto value = [&](const std::string& name) {
+    auto found = values.find(name);
+    return found == values.end() ? ValueRange::Whole() : found->second;
+  };
+  std::string what = "model " + id;
+  for (const auto& [name, v] : values) what += ", " + name + " " + v.Text();
+  bool rough = FindParam(*info, "roughness") != nullptr;
+  for (const std::string& kind : kinds) {
+    TableNeed need;
+    need.kind = kind;
+    need.reason = label + ": " + what;
+    if (kind == "dfg" || kind == "albedo" || kind == "albedo-avg") {
+      need.model = id;
+      if (rough) need.ranges["roughness"] = value("roughness");
+    } else if (kind == "fresnel-albedo" || kind == "fresnel-albedo-avg") {
+      need.model = "ggx";
+      need.ranges = {{"roughness", value("roughness")}, {"eta", value("eta")}};
+    } else if (kind == "fresnel-dielectric" || kind == "fresnel-dielectric-avg") {
+      need.model = "none";
+      need.ranges = {{"eta", value("eta")}};
+    } else {  // fresnel-conductor
+      need.model = "none";
+      need.ranges = {{"n", value("eta")}, {"k", value("k")}};
+    }
+    scene.needs.push_back(need);
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& SceneTableKinds() {
+  static const std::vector<std::string> kinds = {
+      "dfg", "albedo", "albedo-avg", "fresnel-albedo", "fresnel-albedo-avg",
+      "fresnel-dielectric", "fresnel-dielectric-avg", "fresnel-conductor"};
+  return kinds;
+}
+
+Scene ReadKilnScene(const Json& doc, const std::string& path) {
+  JsonReader r{path};
+  r.Object(doc, "");
+  const Json* version = JsonReader::Find(doc, "kiln_scene");
+  if (!version) r.Fail("/kiln_scene", "missing (a kiln scene starts with \"kiln_scene\": 1)");
+  if (!version->is_number_integer() && !version->is_number_unsigned())
+    r.Fail("/kiln_scene", "expected the integer 1, got " + JsonKind(*version));
+  if (version->get<long long>() != 1)
+    r.Fail("/kiln_scene", "version " + std::to_string(version->get<long long>()) + ", kiln reads version 1");
+  for (auto it = doc.begin(); it != doc.end(); ++it)
+    if (it.key() != "kiln_scene" && it.key() != "materials" && it.key() != "description")
+      r.Fail(PointerChild("", it.key()), "unknown key '" + it.key() + "' (keys: kiln_scene, materials, description)");
+  const Json* materials = JsonReader::Find(doc, "materials");
+  if (!materials) r.Fail("/materials", "missing (an array of materials)");
+  r.Array(*materials, "/materials");
+  Scene scene;
+  scene.path = path;
+  scene.format = "kiln scene";
+  for (size_t i = 0; i < materials->size(); ++i) {
+    ReadMaterial((*materials)[i], PointerChild("/materials", i), r, scene);
+    ++scene.materialCount;
+  }
+  return scene;
+}
+
+}  // namespace kiln

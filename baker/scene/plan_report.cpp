@@ -1,0 +1,113 @@
+#include "baker/scene/plan_report.h"
+
+#include <sys/stat.h>
+
+#include "baker/bake/bake.h"
+#include "baker/scene/scene_json.h"
+
+namespace kiln {
+namespace {
+
+/// What a table kind is for, in a scene.
+std::string Purpose(const std::string& quantity) {
+  if (quantity == "dfg") return "split-sum specular: F0 A + F90 B";
+  if (quantity == "albedo") return "directional albedo E(mu): multiple-scattering compensation";
+  if (quantity == "albedo-avg") return "average albedo E_avg: multiple-scattering compensation";
+  if (quantity == "fresnel-albedo") return "albedo with exact dielectric Fresnel: dielectric layering, transmission";
+  if (quantity == "fresnel-albedo-avg") return "average albedo with exact dielectric Fresnel";
+  if (quantity == "fresnel-dielectric") return "exact dielectric Fresnel F(mu)";
+  if (quantity == "fresnel-dielectric-avg") return "average dielectric Fresnel";
+  if (quantity == "fresnel-conductor") return "exact conductor Fresnel F(mu)";
+  return quantity;
+}
+
+const char* NoteHeading(SceneNote::Kind kind) {
+  switch (kind) {
+    case SceneNote::Kind::NoTable: return "needs no table";
+    case SceneNote::Kind::NoEffect: return "present but without effect";
+    case SceneNote::Kind::NotYet: return "would need a table kiln cannot bake yet";
+    case SceneNote::Kind::Unknown: return "unknown to kiln (ignored)";
+    case SceneNote::Kind::Unused: return "unused";
+  }
+  return "";
+}
+
+std::string Join(const std::vector<std::string>& items, const std::string& sep) {
+  std::string s;
+  for (const std::string& i : items) s += (s.empty() ? "" : sep) + i;
+  return s;
+}
+
+}  // namespace
+
+TableState StateOf(const TableSpec& spec, const std::string& dir) {
+  std::string path = dir + "/" + spec.name + ".exr";
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) return TableState::Missing;
+  return StoredSpecHash(path) == spec.Hash() ? TableState::UpToDate : TableState::Stale;
+}
+
+const char* StateName(TableState state) {
+  switch (state) {
+    case TableState::UpToDate: return "up to date";
+    case TableState::Stale: return "stale";
+    case TableState::Missing: return "missing";
+  }
+  return "";
+}
+
+std::string AxesText(const TableSpec& spec) {
+  std::vector<std::string> parts;
+  for (const AxisSpec& a : spec.axes)
+    parts.push_back(a.name + " " + ExactNumber(a.lo) + ".." + ExactNumber(a.hi) + " (" +
+                    std::to_string(a.size) + ", " + warpName(a.warp) + ")");
+  return Join(parts, " x ");
+}
+
+std::string FormatPlan(const Plan& plan, const std::string& dir) {
+  std::string out;
+  size_t texels = 0, upToDate = 0;
+  std::vector<TableState> states;
+  for (const PlannedTable& t : plan.tables) {
+    states.push_back(StateOf(t.spec, dir));
+    texels += t.spec.TexelCount();
+    upToDate += states.back() == TableState::UpToDate;
+  }
+  out += "scene " + plan.scenePath + " (" + plan.format + ", " + std::to_string(plan.materialCount) +
+         " material" + (plan.materialCount == 1 ? "" : "s") + "): " + std::to_string(plan.tables.size()) +
+         " table" + (plan.tables.size() == 1 ? "" : "s") + ", " + std::to_string(texels) + " texels; " +
+         std::to_string(upToDate) + " up to date in " + dir + "\n";
+  for (size_t i = 0; i < plan.tables.size(); ++i) {
+    const PlannedTable& t = plan.tables[i];
+    const TableSpec& s = t.spec;
+    out += "\n" + s.name + "  [" + StateName(states[i]) + "]\n";
+    out += "  " + s.quantity + " (" + Join(s.channels, ", ") + "): " + Purpose(s.quantity) + "\n";
+    out += "  axes: " + AxesText(s) + " = " + std::to_string(s.TexelCount()) + " texels, " +
+           std::to_string(s.TexelCount() * s.channels.size() * 4) + " bytes as float32\n";
+    std::vector<std::string> used;
+    for (const auto& [axis, v] : t.ranges) used.push_back(axis + " " + v.Text());
+    if (!used.empty()) out += "  scene uses: " + Join(used, ", ") + "\n";
+    if (!s.params.empty()) {
+      std::vector<std::string> fixed;
+      for (const auto& [k, v] : s.params) fixed.push_back(k + " = " + ExactNumber(v));
+      out += "  fixed (axis dropped): " + Join(fixed, ", ") + "\n";
+    }
+    out += "  needed by:\n";
+    for (const std::string& r : t.reasons) out += "    " + r + "\n";
+  }
+  for (SceneNote::Kind kind : {SceneNote::Kind::NoTable, SceneNote::Kind::NoEffect, SceneNote::Kind::NotYet,
+                               SceneNote::Kind::Unknown, SceneNote::Kind::Unused}) {
+    bool heading = false;
+    for (const PlanNote& n : plan.notes) {
+      if (n.kind != kind) continue;
+      if (!heading) out += std::string("\n") + NoteHeading(kind) + ":\n";
+      heading = true;
+      out += "  " + n.topic + ": " + n.why;
+      if (!n.materials.empty()) out += " [" + Join(n.materials, ", ") + "]";
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace kiln

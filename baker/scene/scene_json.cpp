@@ -1,0 +1,156 @@
+#include "baker/scene/scene_json.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace kiln {
+
+std::string PointerChild(const std::string& parent, const std::string& token) {
+  std::string escaped;
+  for (char c : token) {
+    if (c == '~') escaped += "~0";
+    else if (c == '/') escaped += "~1";
+    else escaped += c;
+  }
+  return parent + "/" + escaped;
+}
+
+std::string PointerChild(const std::string& parent, size_t index) {
+  return parent + "/" + std::to_string(index);
+}
+
+Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix) {
+  try {
+    return Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    // e.byte is 1-based and points just past the offending character.
+    size_t end = e.byte == 0 ? 0 : std::min(text.size(), static_cast<size_t>(e.byte - 1));
+    int line = 1, column = 1;
+    for (size_t i = 0; i < end; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 1, column 2:
+    // syntax error while parsing value - invalid literal; last read: 'x'": keep what follows
+    // the position.
+    std::string what = e.what();
+    size_t colon = what.find(": ");
+    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+    for (char& c : detail)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw SceneError(file, prefix + "line " + std::to_string(line) + ", column " + std::to_string(column),
+                     "not valid JSON (" + detail + ")");
+  }
+}
+
+std::string ReadSceneFile(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw SceneError(path, "", "is a folder, not a scene file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneError(path, "", "cannot open the file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw SceneError(path, "", "cannot read the file");
+  return ss.str();
+}
+
+std::string JsonKind(const Json& v) {
+  switch (v.type()) {
+    case Json::value_t::null: return "null";
+    case Json::value_t::object: return "an object";
+    case Json::value_t::array: return "an array";
+    case Json::value_t::string: return "a string";
+    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float: return "a number";
+    default: return "an unsupported value";
+  }
+}
+
+std::string ShortNumber(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
+}
+
+std::string ExactNumber(double x) {
+  char buf[40];
+  for (int precision = 1; precision <= 17; ++precision) {
+    std::snprintf(buf, sizeof buf, "%.*g", precision, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  return buf;
+}
+
+void JsonReader::Fail(const std::string& at, const std::string& problem) const {
+  throw SceneError(file, at.empty() ? "/" : at, problem);
+}
+
+const Json& JsonReader::Object(const Json& v, const std::string& at) const {
+  if (!v.is_object()) Fail(at, "expected an object, got " + JsonKind(v));
+  return v;
+}
+
+const Json& JsonReader::Array(const Json& v, const std::string& at) const {
+  if (!v.is_array()) Fail(at, "expected an array, got " + JsonKind(v));
+  return v;
+}
+
+double JsonReader::Number(const Json& v, const std::string& at) const {
+  if (!v.is_number()) Fail(at, "expected a number, got " + JsonKind(v));
+  double x = v.get<double>();
+  if (!std::isfinite(x)) Fail(at, "expected a finite number");
+  return x;
+}
+
+std::string JsonReader::String(const Json& v, const std::string& at) const {
+  if (!v.is_string()) Fail(at, "expected a string, got " + JsonKind(v));
+  return v.get<std::string>();
+}
+
+size_t JsonReader::Index(const Json& v, const std::string& at, size_t count,
+                         const std::string& what) const {
+  if (!v.is_number_integer() && !v.is_number_unsigned())
+    Fail(at, "expected an index (an integer), got " + JsonKind(v));
+  long long i = v.is_number_unsigned() ? static_cast<long long>(v.get<unsigned long long>())
+                                       : v.get<long long>();
+  if (i < 0) Fail(at, "index " + std::to_string(i) + " is negative");
+  if (static_cast<unsigned long long>(i) >= count)
+    Fail(at, what + " " + std::to_string(i) + " does not exist (the file has " + std::to_string(count) +
+                 " " + what + (count == 1 ? "" : "s") + ")");
+  return static_cast<size_t>(i);
+}
+
+const Json* JsonReader::Find(const Json& obj, const std::string& key) {
+  if (!obj.is_object()) return nullptr;
+  auto it = obj.find(key);
+  return it == obj.end() ? nullptr : &*it;
+}
+
+double JsonReader::NumberIn(const Json& obj, const std::string& at, const std::string& key, double def,
+                            double lo, double hi) const {
+  const Json* v = Find(obj, key);
+  if (!v) return def;
+  std::string p = PointerChild(at, key);
+  double x = Number(*v, p);
+  if (x < lo || x > hi)
+    Fail(p, ExactNumber(x) + " is outside [" + ExactNumber(lo) + ", " + ExactNumber(hi) + "]");
+  return x;
+}
+
+const Json& JsonReader::ArrayOrEmpty(const Json& obj, const std::string& at, const std::string& key) const {
+  static const Json empty = Json::array();
+  const Json* v = Find(obj, key);
+  return v ? Array(*v, PointerChild(at, key)) : empty;
+}
+
+}  // namespace kiln

@@ -1,0 +1,167 @@
+#include "baker/tables/spec.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "baker/integrate/quantities.h"
+#include "baker/models/specular.h"
+
+namespace kiln {
+namespace {
+
+/// Bump when an integrator changes the texels it produces: every baked file becomes stale.
+constexpr const char* kIntegratorVersion = "kiln-integrators-1";
+
+std::string G17(double x) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+ModelParams WithRoughness(const std::string& model, double r) {
+  ModelParams p;
+  const ModelInfo* info = FindModel(model);
+  if (!info) throw std::invalid_argument("unknown model '" + model + "'");
+  for (const ParamInfo& q : info->params)
+    if (q.name == "roughness") p.roughness = Clamp(r, q.lo, q.hi);
+  return p;
+}
+
+}  // namespace
+
+std::string TableSpec::ParamsText() const {
+  std::string s;
+  for (const auto& [k, v] : params) s += (s.empty() ? "" : ";") + k + "=" + G17(v);
+  return s;
+}
+
+std::string TableSpec::Method() const {
+  auto tolText = " to " + G17(tol) + " abs";
+  if (quantity == "fresnel-dielectric" || quantity == "fresnel-conductor" || quantity == "brdf" ||
+      quantity == "blinn-phong-normalization")
+    return "closed form (exact evaluation at each node)";
+  if (quantity == "fresnel-dielectric-avg")
+    return "adaptive Gauss-Kronrod 7-15 in mu, split at the critical angle" + tolText;
+  const ModelInfo* info = FindModel(quantity.rfind("fresnel-albedo", 0) == 0 ? "ggx" : model);
+  std::string base = info && info->specular()
+                         ? "half-vector space: adaptive Gauss-Kronrod 7-15 over the NDF's CDF x "
+                           "phi_h, exact horizon cut"
+                         : "light space: adaptive Gauss-Kronrod 7-15 over theta_l x phi, panels "
+                           "split at theta_o and phi = pi/2";
+  if (quantity.find("-avg") != std::string::npos)
+    base += "; then 2 int E mu dmu by adaptive Gauss-Kronrod";
+  return base + tolText;
+}
+
+std::string TableSpec::Hash() const {
+  std::string text = std::string(kIntegratorVersion) + "|" + std::to_string(kFormatVersion) + "|" +
+                     name + "|" + model + "|" + quantity + "|" + G17(tol) + "|" + ParamsText();
+  for (const std::string& c : channels) text += "|c:" + c;
+  for (const AxisSpec& a : axes)
+    text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
+            "," + warpName(a.warp);
+  uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  for (unsigned char ch : text) {
+    h ^= ch;
+    h *= 1099511628211ull;
+  }
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+std::vector<TableAxis> TableSpec::TableAxes() const {
+  std::vector<TableAxis> out;
+  for (const AxisSpec& a : axes) out.push_back({a.name, a.ToAxis()});
+  return out;
+}
+
+size_t TableSpec::TexelCount() const {
+  size_t n = 1;
+  for (const AxisSpec& a : axes) n *= static_cast<size_t>(a.size);
+  return n;
+}
+
+TableSpec SpecFromTable(const Table& table) {
+  TableSpec s;
+  s.name = table.name;
+  s.model = table.model;
+  s.quantity = table.quantity;
+  s.channels = table.channels;
+  s.meanings = table.channelMeanings;
+  for (const TableAxis& a : table.axes) s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp});
+  for (const std::string& kv : splitList(table.params, ';')) {
+    size_t eq = kv.find('=');
+    if (eq == std::string::npos)
+      throw std::invalid_argument("table '" + table.name + "': bad params entry '" + kv + "'");
+    s.params[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
+  }
+  s.tol = table.tolerance;
+  return s;
+}
+
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  return EvaluateSpec(spec, x, spec.tol, stats);
+}
+
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
+                                 IntegrationStats& stats) {
+  IntegrationOptions opt;
+  opt.tol = tol;
+  const std::string& q = spec.quantity;
+  auto param = [&](const char* key, double def) {
+    auto it = spec.params.find(key);
+    return it == spec.params.end() ? def : it->second;
+  };
+  auto split = [&](RhoParts e) {
+    return spec.channels.size() == 2 ? std::vector<double>{e.lin, e.quad}
+                                     : std::vector<double>{e.lin + e.quad};
+  };
+  if (q == "dfg") {
+    auto ab = SplitSumDFG(MakeModel(spec.model, WithRoughness(spec.model, x[1])), x[0], opt, stats);
+    return {ab[0], ab[1]};
+  }
+  if (q == "albedo")
+    return split(DirectionalAlbedo(MakeModel(spec.model, WithRoughness(spec.model, x[1])), x[0], opt, stats));
+  if (q == "albedo-avg")
+    return split(AverageAlbedo(MakeModel(spec.model, WithRoughness(spec.model, x[0])), opt, stats));
+  if (q == "fresnel-albedo" || q == "fresnel-albedo-avg") {
+    // Axes (mu, roughness, eta) or (roughness, eta); an axis fixed by the planner is a param.
+    bool avg = q == "fresnel-albedo-avg";
+    double mu = 0, r = param("roughness", 0), eta = param("eta", 1.5);
+    int i = 0;
+    for (const AxisSpec& a : spec.axes) {
+      if (a.name == "mu") mu = x[i];
+      if (a.name == "roughness") r = x[i];
+      if (a.name == "eta") eta = x[i];
+      ++i;
+    }
+    AnyModel m = MakeModel("ggx", WithRoughness("ggx", r));
+    SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
+    RhoParts e = avg ? AverageAlbedo(m, opt, stats) : DirectionalAlbedo(m, mu, opt, stats);
+    return {e.lin};
+  }
+  if (q == "fresnel-dielectric") {
+    ++stats.evals;
+    return {FrDielectric(x[0], x[1])};
+  }
+  if (q == "fresnel-dielectric-avg")
+    return {FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, x[0], 0}, opt, stats)};
+  if (q == "fresnel-conductor") {
+    ++stats.evals;
+    return {FrComplex(x[0], x[1], x[2])};
+  }
+  if (q == "blinn-phong-normalization") {
+    ++stats.evals;
+    return {NormalizedBlinnPhong::Normalization(x[0]), NormalizedBlinnPhong::NormalizationApprox(x[0])};
+  }
+  if (q == "brdf") {
+    ++stats.evals;
+    AnyModel m = MakeModel(spec.model, WithRoughness(spec.model, param("roughness", 0.5)));
+    RhoParts f = EvaluateParts(m, ViewDirection(x[1]), DirectionFromMuPhi(x[0], x[2]));
+    return split(f);
+  }
+  throw std::invalid_argument("table '" + spec.name + "': unknown quantity '" + q + "'");
+}
+
+}  // namespace kiln

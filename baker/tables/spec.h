@@ -1,0 +1,63 @@
+// A table spec: which integral of which model, over which axes, into which channels. A spec
+// fully determines a table's texels; its hash is what makes a baked file up to date.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "baker/integrate/hemisphere.h"
+#include "kiln/table.h"
+
+namespace kiln {
+
+/// One axis of a table: the parameter it spans, node-centred (DESIGN.md "Grid").
+struct AxisSpec {
+  std::string name;  ///< "mu", "roughness", "eta", "n", "k", "s", "mu_l", "mu_o", "phi"
+  double lo = 0, hi = 1;
+  int size = 2;
+  Warp warp = Warp::Linear;
+  Axis ToAxis() const { return Axis{lo, hi, size, warp}; }
+};
+
+/// What a table holds. quantity is one of:
+///   dfg (mu, roughness) -> A, B              albedo (mu, roughness) -> E [, E_rho2]
+///   albedo-avg (roughness) -> E_avg [, ...]  fresnel-albedo (mu, roughness, eta) -> E
+///   fresnel-albedo-avg (roughness, eta)      fresnel-dielectric (mu, eta) -> F
+///   fresnel-dielectric-avg (eta) -> F_avg    fresnel-conductor (mu, n, k) -> F
+///   blinn-phong-normalization (s) -> exact, approx
+///   brdf (mu_l, mu_o, phi) at params["roughness"] -> f [, f_rho2]
+struct TableSpec {
+  std::string name;      ///< file stem, e.g. "ggx-dfg"
+  std::string model;     ///< model id, or "none"
+  std::string quantity;
+  std::vector<std::string> channels, meanings;
+  std::vector<AxisSpec> axes;
+  std::map<std::string, double> params;  ///< fixed model parameters (brdf: roughness)
+  double tol = 1e-8;     ///< absolute integration tolerance per texel
+
+  /// "key=value;..." of params, %.17g.
+  std::string ParamsText() const;
+  /// The integration method, in words, for the kiln.method attribute.
+  std::string Method() const;
+  /// Hex FNV-1a 64 of everything that determines the texels (and the integrator version).
+  std::string Hash() const;
+  /// The axes as the runtime sees them.
+  std::vector<TableAxis> TableAxes() const;
+  /// Number of texels.
+  size_t TexelCount() const;
+};
+
+/// The spec a baked table was made from, rebuilt from its attributes (name, model, quantity,
+/// channels, axes, params, tolerance). Its Hash() equals the table's specHash when the file was
+/// made by this version of kiln. Throws std::invalid_argument for unparseable params.
+TableSpec SpecFromTable(const Table& table);
+
+/// The exact channel values of `spec` at a point x (one coordinate per axis, axis order).
+/// Throws std::invalid_argument for an unknown quantity or model.
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats);
+
+/// Same, with a different tolerance (references for the bake and lookup error checks).
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
+                                 IntegrationStats& stats);
+
+}  // namespace kiln
