@@ -32,7 +32,7 @@ TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not 
   CHECK(nlohmann::json::parse(ReadFile(dir + "/manifest.json"))["tables"].size() == 3);
   auto inspect = RunKiln("inspect " + dir + "/fresnel-dielectric.exr");
   CHECK(inspect.exitCode == 0);
-  CHECK(inspect.out.find("axis 1          eta [1, 3] 5 nodes, linear warp") != std::string::npos);
+  CHECK(inspect.out.find("axis 1          eta [1, 3] 5 nodes, sqrt warp") != std::string::npos);
   std::system(("rm -rf " + dir).c_str());
 }
 

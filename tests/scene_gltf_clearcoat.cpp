@@ -16,7 +16,7 @@ TEST_CASE("Clearcoat: its roughness widens the dfg table; a zero factor has no e
   const AxisSpec* r = FindAxis(dfg.spec, "roughness");
   CHECK(r->lo == 0.1);
   CHECK(r->hi == 0.5);
-  CHECK(r->size == 27);  // 0.4 / (1/63) = 25.2 cells -> 26 cells
+  CHECK(r->size == 73);  // the catalogue's sqrt-warped roughness spacing over [0.1, 0.5]
   CHECK(std::find(dfg.reasons.begin(), dfg.reasons.end(),
                   "'Car paint' (/materials/0): clearcoat GGX lobe, clearcoatRoughnessFactor 0.1") != dfg.reasons.end());
   // 'Satin lacquer' has clearcoatFactor 0: its clearcoat roughness 0.9 must not widen the table.

@@ -43,7 +43,7 @@ TEST_CASE("A texture multiplies the factor: roughness spans [0, factor]", "[scen
   const AxisSpec* r = FindAxis(plan.tables[0].spec, "roughness");
   CHECK(r->lo == 0);
   CHECK(r->hi == 0.5);
-  CHECK(r->size == 33);  // half of the catalogue's 64 nodes (63 cells -> 32 cells), same spacing
+  CHECK(r->size == 91);  // the catalogue's 128 sqrt-warped nodes that fall in [0, 0.5]
 }
 
 TEST_CASE("glTF defaults: a material without pbrMetallicRoughness has roughness 1", "[scene]") {

@@ -3,6 +3,7 @@
 #include <exception>
 #include <string>
 
+#include "baker/cli/bench_commands.h"
 #include "baker/cli/commands.h"
 #include "baker/cli/scene_commands.h"
 
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
   kiln::cli::RegisterSample(app);
   kiln::cli::RegisterVerify(app);
   kiln::cli::RegisterPlan(app);
+  kiln::cli::RegisterBench(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

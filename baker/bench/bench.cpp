@@ -1,0 +1,473 @@
+#include "baker/bench/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <thread>
+
+#include <unistd.h>
+
+#include "baker/bench/call_timing.h"
+#include "baker/bench/monte_carlo.h"
+#include "baker/bench/reference.h"
+#include "baker/bake/bake.h"
+#include "baker/io/atomic_write.h"
+#include "baker/tables/catalogue.h"
+
+namespace kiln {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+int AllThreads(int requested) {
+  return requested > 0 ? requested : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+/// A table kind of the sweep: a catalogue table, its axis sizes for the sweep, and the sizes of
+/// the size sweep.
+struct Kind {
+  std::string table;
+  std::vector<int> base;
+  std::vector<std::vector<int>> sizes;
+};
+
+/// What a scale measures.
+struct Plan {
+  std::vector<Kind> kinds;
+  std::vector<double> tols;
+  std::vector<int> mcSamples, glOrders;
+  int sizeSweepSamples = 1024;  ///< Monte Carlo samples of the size sweep and the baker issue
+  int issueSize = 128;          ///< the baker issue's ggx-dfg table
+  ReferenceOptions ref;
+  long long lookupCalls = 0, evaluateCalls = 0, integrateCalls = 0;
+  int batches = 0;
+  double runtimeTableTol = 1e-4;  ///< tolerance of the 1D tables the runtime section looks up
+  std::vector<int> runtime1DSize;
+};
+
+Plan MakePlan(BenchScale scale) {
+  Plan p;
+  if (scale == BenchScale::Full) {
+    p.kinds = {{"ggx-dfg", {64, 64}, {{16, 16}, {32, 32}, {64, 64}, {128, 128}}},
+               {"burley-albedo", {32, 32}, {{16, 16}, {32, 32}, {64, 64}, {128, 128}, {256, 256}}},
+               {"ggx-fresnel-albedo", {32, 32, 16}, {{8, 8, 8}, {16, 16, 8}, {32, 32, 16}}},
+               {"oren-nayar-albedo", {32, 32}, {}}};
+    p.tols = {1e-4, 1e-6, 1e-8};
+    p.mcSamples = {64, 256, 1024, 4096, 16384, 65536};
+    p.glOrders = {8, 16, 32, 64, 128};
+    p.issueSize = 128;
+    p.ref.maxCellCentres = 2048;
+    p.ref.randomPoints = 500;
+    p.lookupCalls = 1 << 20;
+    p.evaluateCalls = 1 << 18;
+    p.integrateCalls = 16;
+    p.batches = 7;
+    p.runtime1DSize = {64};
+  } else if (scale == BenchScale::Quick) {
+    p.kinds = {{"ggx-dfg", {24, 24}, {{12, 12}, {24, 24}}},
+               {"burley-albedo", {32, 32}, {{16, 16}, {32, 32}, {64, 64}}},
+               {"ggx-fresnel-albedo", {12, 12, 6}, {{6, 6, 6}, {12, 12, 6}}}};
+    p.tols = {1e-4, 1e-8};
+    p.mcSamples = {64, 256, 1024, 4096};
+    p.glOrders = {8, 16, 32, 64};
+    p.issueSize = 24;
+    p.ref.maxCellCentres = 256;
+    p.ref.randomPoints = 128;
+    p.lookupCalls = 1 << 18;
+    p.evaluateCalls = 1 << 16;
+    p.integrateCalls = 2;
+    p.batches = 5;
+    p.runtime1DSize = {16};
+  } else {
+    p.kinds = {{"ggx-dfg", {8, 8}, {{6, 6}, {8, 8}}},
+               {"burley-albedo", {8, 8}, {{8, 8}}},
+               {"ggx-fresnel-albedo", {4, 4, 3}, {{4, 4, 3}}}};
+    p.tols = {1e-4, 1e-6};
+    p.mcSamples = {64, 256, 1024};
+    p.glOrders = {8, 16};
+    p.sizeSweepSamples = 256;
+    p.issueSize = 8;
+    p.ref.tol = 1e-9;
+    p.ref.maxCellCentres = 32;
+    p.ref.randomPoints = 16;
+    p.lookupCalls = 4096;
+    p.evaluateCalls = 4096;
+    p.integrateCalls = 1;
+    p.batches = 3;
+    p.runtime1DSize = {8};
+  }
+  return p;
+}
+
+TableSpec Sized(const std::string& name, const std::vector<int>& sizes) {
+  TableSpec s = CatalogueTable(name);
+  if (sizes.size() != s.axes.size())
+    throw std::invalid_argument("bench: table '" + name + "' has " + std::to_string(s.axes.size()) + " axes");
+  for (size_t d = 0; d < sizes.size(); ++d) s.axes[d].size = sizes[d];
+  return s;
+}
+
+std::string SizeText(const TableSpec& s) {
+  std::string t;
+  for (const AxisSpec& a : s.axes) t += (t.empty() ? "" : "x") + std::to_string(a.size);
+  return t;
+}
+
+std::string Fmt3(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+std::string Sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1e", x);
+  return buf;
+}
+
+/// A baked table with its median wall time.
+struct Measured {
+  Table table;
+  double seconds = 0;
+  int runs = 0;
+  long long evals = 0;
+};
+
+/// Runs `once(evals)` (which returns a table) 1, 3 or 5 times by the first run's wall time and
+/// keeps the first table and the median time.
+template <class F>
+Measured TimeRuns(F&& once) {
+  Measured m;
+  std::vector<double> t;
+  for (;;) {
+    auto t0 = Clock::now();
+    long long evals = 0;
+    Table table = once(evals);
+    t.push_back(Since(t0));
+    if (t.size() == 1) {
+      m.table = std::move(table);
+      m.evals = evals;
+    }
+    size_t want = t[0] < 0.25 ? 5 : t[0] < 1 ? 3 : 1;
+    if (t.size() >= want) break;
+  }
+  std::sort(t.begin(), t.end());
+  m.seconds = t[t.size() / 2];
+  m.runs = static_cast<int>(t.size());
+  return m;
+}
+
+class Bench {
+ public:
+  Bench(const BenchOptions& opt, std::FILE* log)
+      : opt_(opt), plan_(MakePlan(opt.scale)), log_(log), threads_(AllThreads(opt.threads)) {
+    plan_.ref.threads = threads_;
+  }
+
+  std::vector<BenchRow> Run() {
+    for (const Kind& k : plan_.kinds) Sweep(k);
+    BakerIssue();
+    for (const Kind& k : plan_.kinds) SizeSweep(k);
+    Threads();
+    Runtime();
+    return rows_;
+  }
+
+ private:
+  static std::string Key(const TableSpec& s) { return s.name + "@" + SizeText(s); }
+
+  const Reference& Ref(const TableSpec& spec) {
+    auto it = refs_.find(Key(spec));
+    if (it != refs_.end()) return it->second;
+    Reference r = ComputeReference(spec, plan_.ref);
+    Log("reference %s %s: tol %.0e, %zu nodes + %zu cell centres (of %zu) + %zu random points, %.2f s\n",
+        spec.name.c_str(), SizeText(spec).c_str(), plan_.ref.tol, spec.TexelCount(), r.cellCentres,
+        r.totalCells, r.randomPoints, r.seconds);
+    return refs_.emplace(Key(spec), std::move(r)).first->second;
+  }
+
+  const Measured& Kiln(const TableSpec& base, double tol, int threads) {
+    std::string key = Key(base) + "|kiln|" + Sci(tol) + "|" + std::to_string(threads);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    TableSpec spec = base;
+    spec.tol = tol;
+    BakeOptions bo;
+    bo.threads = threads;
+    bo.measureLookupError = false;
+    Measured m = TimeRuns([&](long long& evals) {
+      BakeStats st;
+      Table t = BakeTable(spec, bo, &st);
+      evals = st.evals;
+      return t;
+    });
+    return cache_.emplace(key, std::move(m)).first->second;
+  }
+
+  /// Monte Carlo (gaussLegendre false: `n` Hammersley samples) or the n x n Gauss-Legendre rule.
+  const Measured& Estimate(const TableSpec& spec, bool gaussLegendre, int n, int threads) {
+    std::string key = Key(spec) + (gaussLegendre ? "|gl|" : "|mc|") + std::to_string(n) + "|" +
+                      std::to_string(threads);
+    auto it = cache_.find(key);
+    if (it != cache_.end()) return it->second;
+    std::string method = gaussLegendre ? std::to_string(n) + "x" + std::to_string(n) +
+                                             " Gauss-Legendre rule, importance-sampled map"
+                                       : std::to_string(n) + "-sample Hammersley Monte Carlo, "
+                                                             "importance sampling";
+    Measured m = TimeRuns([&](long long& evals) {
+      PointSet points = gaussLegendre ? GaussLegendrePoints(n) : HammersleyPoints(n);
+      BakeStats st;
+      Table t = EstimateTable(spec, points, method, threads, &st);
+      evals = st.evals;
+      return t;
+    });
+    return cache_.emplace(key, std::move(m)).first->second;
+  }
+
+  BenchRow Row(const std::string& section, const std::string& method, const TableSpec& spec,
+               double setting, int threads, const Measured& m) {
+    const Reference& ref = Ref(spec);
+    BenchRow r;
+    r.section = section;
+    r.method = method;
+    r.table = spec.name;
+    r.dims = static_cast<int>(spec.axes.size());
+    r.size = SizeText(spec);
+    r.texels = static_cast<long long>(spec.TexelCount());
+    r.setting = setting;
+    r.threads = threads;
+    r.seconds = m.seconds;
+    r.runs = m.runs;
+    r.evals = m.evals;
+    ErrorStats b = BakeError(m.table, ref), lin = LookupError(m.table, ref, Filter::Linear),
+               cub = LookupError(m.table, ref, Filter::Cubic);
+    r.bakeMax = b.max;
+    r.bakeRms = b.rms;
+    r.linearMax = lin.max;
+    r.linearRms = lin.rms;
+    r.cubicMax = cub.max;
+    r.cubicRms = cub.rms;
+    r.linearMaxOffCorner = lin.maxOffCorner;
+    r.bytes = static_cast<long long>(m.table.data.size() * sizeof(float));
+    auto at = [&](const std::vector<double>& x) {
+      std::string s;
+      for (size_t d = 0; d < x.size(); ++d) s += " " + spec.axes[d].name + "=" + Fmt3(x[d]);
+      return s;
+    };
+    std::string warps;
+    for (const AxisSpec& a : spec.axes) warps += " " + a.name + ":" + warpName(a.warp);
+    r.note = "warps" + warps + "; max bake error at" + at(b.worstAt) + "; max linear lookup error at" +
+             at(lin.worstAt);
+    return r;
+  }
+
+  void Add(const BenchRow& r) {
+    rows_.push_back(r);
+    if (r.section == "runtime") {
+      Log("%-11s %-18s %-18s %-9s %10.1f ns/call %s%s\n", r.section.c_str(), r.method.c_str(),
+          r.table.c_str(), r.size.c_str(), r.nsPerCall, r.note.c_str(),
+          r.evals ? (" (" + std::to_string(r.evals) + " evals per call)").c_str() : "");
+      return;
+    }
+    Log("%-11s %-18s %-18s %-9s %-7g %2d thr %8.3f s (%d) %11lld evals  bake %.1e/%.1e  "
+        "lookup lin %.1e (off corner %.1e) cub %.1e%s%s\n",
+        r.section.c_str(), r.method.c_str(), r.table.c_str(), r.size.c_str(), r.setting, r.threads,
+        r.seconds, r.runs, r.evals, r.bakeMax, r.bakeRms, r.linearMax, r.linearMaxOffCorner, r.cubicMax,
+        r.note.empty() ? "" : "  ", r.note.c_str());
+  }
+
+  void Sweep(const Kind& k) {
+    TableSpec spec = Sized(k.table, k.base);
+    for (double tol : plan_.tols) Add(Row("sweep", "kiln", spec, tol, threads_, Kiln(spec, tol, threads_)));
+    for (int n : plan_.mcSamples)
+      Add(Row("sweep", "mc-hammersley", spec, n, threads_, Estimate(spec, false, n, threads_)));
+    for (int n : plan_.glOrders)
+      Add(Row("sweep", "gauss-legendre", spec, static_cast<double>(n) * n, threads_,
+              Estimate(spec, true, n, threads_)));
+  }
+
+  void SizeSweep(const Kind& k) {
+    for (const std::vector<int>& sizes : k.sizes) {
+      TableSpec spec = Sized(k.table, sizes);
+      Add(Row("size", "kiln", spec, spec.tol, threads_, Kiln(spec, spec.tol, threads_)));
+      Add(Row("size", "mc-hammersley", spec, plan_.sizeSweepSamples, threads_,
+              Estimate(spec, false, plan_.sizeSweepSamples, threads_)));
+    }
+  }
+
+  /// `kiln bake --only ggx-dfg --size N -j 2` (texels, lookup-error check, EXR write) against
+  /// the Monte Carlo bake of the same table on 2 threads.
+  void BakerIssue() {
+    TableSpec spec = Sized("ggx-dfg", {plan_.issueSize, plan_.issueSize});
+    const int threads = 2;
+    BakeOptions bo;
+    bo.threads = threads;
+    bo.measureLookupError = true;
+    std::string dir = (std::filesystem::temp_directory_path() /
+                       ("kiln-bench-" + std::to_string(::getpid()))).string();
+    std::filesystem::create_directories(dir);
+    auto t0 = Clock::now();
+    BakeStats st;
+    Table t = BakeTable(spec, bo, &st);
+    WriteBakedTable(dir, t, false, false);
+    double command = Since(t0);
+    std::filesystem::remove_all(dir);
+    Measured texels;
+    texels.table = t;
+    texels.seconds = st.seconds;
+    texels.runs = 1;
+    texels.evals = st.evals;
+    std::string key = Key(spec) + "|kiln|" + Sci(spec.tol) + "|" + std::to_string(threads);
+    const Measured& k = cache_.emplace(key, texels).first->second;
+    BenchRow texelRow = Row("baker-issue", "kiln", spec, spec.tol, threads, k);
+    texelRow.note = "texels only (BakeTable wall time); " + texelRow.note;
+    Add(texelRow);
+    Measured whole = texels;
+    whole.seconds = command;
+    BenchRow commandRow = Row("baker-issue", "kiln-bake-command", spec, spec.tol, threads, whole);
+    commandRow.note = "as kiln bake --only ggx-dfg --size " + std::to_string(plan_.issueSize) +
+                      " -j 2: texels " + Sci(st.seconds) + " s + its lookup-error check " +
+                      Sci(st.lookupSeconds) + " s + EXR write";
+    Add(commandRow);
+    BenchRow mc = Row("baker-issue", "mc-hammersley", spec, plan_.sizeSweepSamples, threads,
+                      Estimate(spec, false, plan_.sizeSweepSamples, threads));
+    mc.note = "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG estimator); " + mc.note;
+    Add(mc);
+  }
+
+  void Threads() {
+    const Kind& k = plan_.kinds.front();
+    TableSpec spec = Sized(k.table, k.base);
+    std::vector<int> counts = {1};
+    if (threads_ > 1) counts.push_back(threads_);
+    for (int n : counts) {
+      BenchRow r = Row("threads", "kiln", spec, spec.tol, n, Kiln(spec, spec.tol, n));
+      r.note = Kiln(spec, spec.tol, n).table.data == Kiln(spec, spec.tol, 1).table.data
+                   ? "texels bit-identical to the 1-thread bake"
+                   : "texels DIFFER from the 1-thread bake";  // DESIGN.md: they must not
+      Add(r);
+    }
+    for (int n : counts)
+      Add(Row("threads", "mc-hammersley", spec, plan_.sizeSweepSamples, n,
+              Estimate(spec, false, plan_.sizeSweepSamples, n)));
+  }
+
+  void AddTiming(const std::string& method, const std::string& table, int dims, const std::string& size,
+                 double setting, const CallTiming& t, const std::string& note) {
+    BenchRow r;
+    r.section = "runtime";
+    r.method = method;
+    r.table = table;
+    r.dims = dims;
+    r.size = size;
+    r.setting = setting;
+    r.threads = 1;
+    r.seconds = t.seconds;
+    r.runs = plan_.batches;
+    r.evals = t.evalsPerCall;
+    r.nsPerCall = t.nsPerCall;
+    r.note = note;
+    Add(r);
+  }
+
+  void Lookups(const Table& t, const std::string& size) {
+    std::string note = "median of " + std::to_string(plan_.batches) + " batches of " +
+                       std::to_string(plan_.lookupCalls) + " LutView::sample calls";
+    AddTiming("lookup-linear", t.name, t.dims(), size, NAN,
+              TimeLookups(t, Filter::Linear, plan_.lookupCalls, plan_.batches), note);
+    AddTiming("lookup-cubic", t.name, t.dims(), size, NAN,
+              TimeLookups(t, Filter::Cubic, plan_.lookupCalls, plan_.batches), note);
+  }
+
+  void Direct(const std::string& label, const AnyModel& m) {
+    AddTiming("evaluate", label, 0, "", NAN, TimeEvaluate(m, plan_.evaluateCalls, plan_.batches),
+              "Evaluate(model, wo, wi), median of " + std::to_string(plan_.batches) + " batches");
+    for (double tol : {1e-4, 1e-8})
+      AddTiming("directional-albedo", label, 0, "", tol,
+                TimeDirectionalAlbedo(m, tol, plan_.integrateCalls, plan_.batches),
+                "DirectionalAlbedo(model, mu) at tol " + Sci(tol) + "; evals column: per call");
+  }
+
+  /// Per model: lookups in its 1D, 2D (and 3D) tables against evaluating and integrating it.
+  void Runtime() {
+    for (const Kind& k : plan_.kinds) {
+      TableSpec spec = Sized(k.table, k.base);
+      std::string model = spec.model;
+      // 1D: the average-albedo table of the same model (its lookup cost does not depend on tol).
+      if (spec.quantity != "fresnel-albedo") {
+        TableSpec avg = Sized(model + "-albedo-avg", plan_.runtime1DSize);
+        avg.tol = plan_.runtimeTableTol;
+        BakeOptions bo;
+        bo.threads = threads_;
+        bo.measureLookupError = false;
+        Lookups(BakeTable(avg, bo), SizeText(avg));
+      }
+      Lookups(Kiln(spec, spec.tol, threads_).table, SizeText(spec));
+      if (spec.quantity == "fresnel-albedo") {
+        ModelParams p;
+        p.roughness = 0.5;
+        p.eta = 1.5;
+        Direct("ggx eta=1.5", MakeModel("ggx", p));
+      } else {
+        ModelParams p;
+        p.roughness = 0.5;
+        Direct(model, MakeModel(model, p));
+      }
+    }
+  }
+
+  template <class... A>
+  void Log(const char* format, A... args) {
+    if (!log_) return;
+    std::fprintf(log_, format, args...);
+    std::fflush(log_);
+  }
+
+  BenchOptions opt_;
+  Plan plan_;
+  std::FILE* log_;
+  int threads_;
+  std::map<std::string, Reference> refs_;
+  std::map<std::string, Measured> cache_;
+  std::vector<BenchRow> rows_;
+};
+
+/// The 1-minute load average (other processes share the cores), or NaN where unknown.
+double LoadAverage() {
+  double load[1] = {NAN};
+  return getloadavg(load, 1) == 1 ? load[0] : NAN;
+}
+
+}  // namespace
+
+BenchResult RunBench(const BenchOptions& opt, std::FILE* log) {
+  auto t0 = Clock::now();
+  double loadBefore = LoadAverage();
+  BenchResult result;
+  result.rows = Bench(opt, log).Run();
+  result.summary = BenchSummary(result.rows);
+  result.seconds = Since(t0);
+  char machine[160];
+  std::snprintf(machine, sizeof machine,
+                "machine: %u hardware threads; 1-minute load average %.2f at the start, %.2f at the end",
+                std::thread::hardware_concurrency(), loadBefore, LoadAverage());
+  result.summary.push_back(machine);
+  std::filesystem::create_directories(opt.outDir);
+  std::string csv = CsvText(result.rows), svg = BenchSvg(result.rows);
+  writeAtomically(opt.outDir + "/bench.csv", [&](const std::string& tmp) { writeBytes(tmp, csv); });
+  writeAtomically(opt.outDir + "/bench.svg", [&](const std::string& tmp) { writeBytes(tmp, svg); });
+  if (log) {
+    std::fprintf(log, "\n");
+    for (const std::string& line : result.summary) std::fprintf(log, "%s\n", line.c_str());
+    std::fprintf(log, "bench: %zu rows in %.1f s; wrote %s/bench.csv and %s/bench.svg\n",
+                 result.rows.size(), result.seconds, opt.outDir.c_str(), opt.outDir.c_str());
+  }
+  return result;
+}
+
+}  // namespace kiln

@@ -1,0 +1,262 @@
+#include "baker/bench/monte_carlo.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+#include <variant>
+
+#include "baker/models/fresnel.h"
+
+namespace kiln {
+namespace {
+
+/// The GGX half vectors of one roughness, for the view-independent part of every sample:
+/// hx = sin(theta_h) cos(phi_h), hz = cos(theta_h), and weight / hz (v.y = 0, so h.y is unused).
+struct GGXHalfVectors {
+  std::vector<double> hx, hz, wOverHz;
+  GGXHalfVectors(const PointSet& p, double alpha) : hx(p.size()), hz(p.size()), wOverHz(p.size()) {
+    double a2 = alpha * alpha;
+    for (size_t j = 0; j < p.size(); ++j) {
+      double u = p.u2[j], den = 1 + (a2 - 1) * u;
+      double cosT = std::sqrt((1 - u) / den), sinT = std::sqrt(a2 * u / den);
+      hx[j] = sinT * p.cosPhi[j];
+      hz[j] = cosT;
+      wOverHz[j] = p.weight[j] / cosT;
+    }
+  }
+};
+
+/// The importance-sampled microfacet sum at view mu: calls add(g, v.h) for every sample above
+/// the horizon with g = weight * f mu_l / pdf (F = 1).
+template <class Add>
+void SumGGX(const GGXHalfVectors& h, double mu, double alpha, Add&& add) {
+  double sv = SafeSqrt(1 - mu * mu), a2 = alpha * alpha;
+  double lambdaV = std::sqrt(mu * mu * (1 - a2) + a2);
+  for (size_t j = 0; j < h.hz.size(); ++j) {
+    double voh = sv * h.hx[j] + mu * h.hz[j];
+    double nol = 2 * voh * h.hz[j] - mu;
+    if (!(nol > 0) || !(voh > 0)) continue;
+    // Height-correlated Smith: Vis = G / (4 mu_o mu_l) = 0.5 / (mu_l Lv + mu_o Ll).
+    double lambdaL = std::sqrt(nol * nol * (1 - a2) + a2);
+    double vis = 0.5 / (nol * lambdaV + mu * lambdaL);
+    add(4 * vis * nol * voh * h.wOverHz[j], voh);
+  }
+}
+
+std::array<double, 2> DFGAt(const GGXHalfVectors& h, double mu, double alpha) {
+  double a = 0, b = 0;
+  SumGGX(h, mu, alpha, [&](double g, double voh) {
+    double fc = Pow5(1 - voh);
+    a += (1 - fc) * g;
+    b += fc * g;
+  });
+  return {a, b};
+}
+
+double FresnelAlbedoAt(const GGXHalfVectors& h, double mu, double alpha, double eta) {
+  double e = 0;
+  SumGGX(h, mu, alpha, [&](double g, double voh) { e += g * FrDielectric(voh, eta); });
+  return e;
+}
+
+/// Cosine-weighted light directions of a point set: phi = 2 pi u1, cos(theta) = sqrt(1 - u2)
+/// (Filament's hemisphereCosSample), so the point u2 = 0 is the normal, never the horizon.
+struct CosineDirections {
+  std::vector<Vec3> l;
+  std::vector<double> weight;
+  explicit CosineDirections(const PointSet& p) : l(p.size()), weight(p.weight) {
+    for (size_t j = 0; j < p.size(); ++j) {
+      double s = std::sqrt(p.u2[j]);
+      l[j] = {s * p.cosPhi[j], s * p.sinPhi[j], SafeSqrt(1 - p.u2[j])};
+    }
+  }
+};
+
+template <class M>
+RhoParts DiffuseAt(const CosineDirections& d, const M& m, double mu) {
+  Vec3 wo = ViewDirection(mu);
+  double lin = 0, quad = 0;
+  for (size_t j = 0; j < d.l.size(); ++j) {
+    RhoParts f = m.Parts(wo, d.l[j]);
+    lin += d.weight[j] * f.lin;
+    quad += d.weight[j] * f.quad;
+  }
+  return {Pi * lin, Pi * quad};
+}
+
+double GGXAlpha(double r) { return std::max(AlphaFromPerceptual(Clamp(r, 0.0, 1.0)), MinAlpha); }
+
+/// The model at roughness r, clamped to the model's range (as EvaluateSpec does).
+AnyModel ModelAt(const std::string& id, double r) {
+  const ModelInfo* info = FindModel(id);
+  if (!info) throw std::invalid_argument("unknown model '" + id + "'");
+  ModelParams p;
+  for (const ParamInfo& q : info->params)
+    if (q.name == "roughness") p.roughness = Clamp(r, q.lo, q.hi);
+  return MakeModel(id, p);
+}
+
+int Threads(int requested) {
+  return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
+PointSet HammersleyPoints(int n) {
+  PointSet p;
+  for (int i = 0; i < n; ++i) {
+    double phi = 2 * Pi * i / n;
+    p.cosPhi.push_back(std::cos(phi));
+    p.sinPhi.push_back(std::sin(phi));
+    p.u2.push_back(RadicalInverse2(static_cast<uint32_t>(i)));
+    p.weight.push_back(1.0 / n);
+  }
+  return p;
+}
+
+void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+  nodes.assign(n, 0);
+  weights.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    // Newton on P_n from Tricomi's first guess; converges in a few steps for every root.
+    double x = std::cos(Pi * (i + 0.75) / (n + 0.5)), dp = 1;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = x;
+      for (int k = 2; k <= n; ++k) {
+        double pk = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1);
+      double dx = p1 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) break;
+    }
+    nodes[n - 1 - i] = (1 + x) / 2;
+    weights[n - 1 - i] = 1 / ((1 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
+  }
+}
+
+PointSet GaussLegendrePoints(int n) {
+  std::vector<double> x, w;
+  GaussLegendre01(n, x, w);
+  PointSet p;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k) {
+      p.cosPhi.push_back(std::cos(2 * Pi * x[i]));
+      p.sinPhi.push_back(std::sin(2 * Pi * x[i]));
+      p.u2.push_back(x[k]);
+      p.weight.push_back(w[i] * w[k]);
+    }
+  return p;
+}
+
+std::array<double, 2> EstimateDFG(const PointSet& points, double mu, double alpha) {
+  return DFGAt(GGXHalfVectors(points, alpha), mu, alpha);
+}
+
+double EstimateFresnelAlbedo(const PointSet& points, double mu, double alpha, double eta) {
+  return FresnelAlbedoAt(GGXHalfVectors(points, alpha), mu, alpha, eta);
+}
+
+RhoParts EstimateDiffuseAlbedo(const PointSet& points, const AnyModel& model, double mu) {
+  CosineDirections d(points);
+  return std::visit([&](const auto& m) { return DiffuseAt(d, m, mu); }, model);
+}
+
+bool EstimatorSupports(const TableSpec& spec) {
+  auto named = [&](std::initializer_list<const char*> names) {
+    if (spec.axes.size() != names.size()) return false;
+    size_t i = 0;
+    for (const char* n : names)
+      if (spec.axes[i++].name != n) return false;
+    return true;
+  };
+  if (spec.quantity == "dfg") return spec.model == "ggx" && named({"mu", "roughness"});
+  if (spec.quantity == "fresnel-albedo") return named({"mu", "roughness", "eta"});
+  if (spec.quantity == "albedo") {
+    const ModelInfo* info = FindModel(spec.model);
+    return info && !info->specular() && named({"mu", "roughness"});
+  }
+  return false;
+}
+
+Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::string& method,
+                    int threads, BakeStats* stats) {
+  if (!EstimatorSupports(spec))
+    throw std::invalid_argument("table '" + spec.name + "': no Monte Carlo estimator for it");
+  Table t;
+  t.generator = "kiln 0.1.0 bench";
+  t.name = spec.name;
+  t.model = spec.model;
+  t.quantity = spec.quantity;
+  t.channels = spec.channels;
+  t.channelMeanings = spec.meanings;
+  t.axes = spec.TableAxes();
+  t.params = spec.ParamsText();
+  t.method = method;
+  size_t nc = spec.channels.size();
+  int width = spec.axes[0].size;
+  size_t rows = spec.TexelCount() / static_cast<size_t>(width);
+  t.data.assign(spec.TexelCount() * nc, 0.0f);
+  Axis muAxis = spec.axes[0].ToAxis(), rAxis = spec.axes[1].ToAxis();
+  int rSize = spec.axes[1].size;
+  auto t0 = std::chrono::steady_clock::now();
+  // Shared by every row of a diffuse table; built once, outside the rows.
+  std::unique_ptr<CosineDirections> cosine;
+  if (spec.quantity == "albedo") cosine = std::make_unique<CosineDirections>(points);
+  auto row = [&](size_t k) {
+    double r = rAxis.node(static_cast<int>(k % rSize));
+    float* out = &t.data[k * width * nc];
+    if (spec.quantity == "albedo") {
+      AnyModel model = ModelAt(spec.model, r);
+      std::visit(
+          [&](const auto& m) {
+            for (int i = 0; i < width; ++i) {
+              RhoParts e = DiffuseAt(*cosine, m, muAxis.node(i));
+              if (nc == 2) {
+                out[2 * i] = static_cast<float>(e.lin);
+                out[2 * i + 1] = static_cast<float>(e.quad);
+              } else {
+                out[i] = static_cast<float>(e.lin + e.quad);
+              }
+            }
+          },
+          model);
+      return;
+    }
+    double alpha = GGXAlpha(r);
+    GGXHalfVectors h(points, alpha);
+    if (spec.quantity == "dfg") {
+      for (int i = 0; i < width; ++i) {
+        auto ab = DFGAt(h, muAxis.node(i), alpha);
+        out[2 * i] = static_cast<float>(ab[0]);
+        out[2 * i + 1] = static_cast<float>(ab[1]);
+      }
+    } else {
+      double eta = spec.axes[2].ToAxis().node(static_cast<int>(k / rSize));
+      for (int i = 0; i < width; ++i)
+        out[i] = static_cast<float>(FresnelAlbedoAt(h, muAxis.node(i), alpha, eta));
+    }
+  };
+  tbb::task_arena arena(Threads(threads));
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 1), [&](const tbb::blocked_range<size_t>& b) {
+      for (size_t k = b.begin(); k != b.end(); ++k) row(k);
+    });
+  });
+  if (stats) {
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    stats->evals = static_cast<long long>(spec.TexelCount() * points.size());
+    stats->lookupSeconds = 0;
+  }
+  return t;
+}
+
+}  // namespace kiln

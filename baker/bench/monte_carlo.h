@@ -1,0 +1,73 @@
+// The table bake the peers ship, for comparison: Monte Carlo over Hammersley points with
+// importance sampling (Karis 2013 "Real Shading in Unreal Engine 4"; Filament libs/ibl DFG;
+// LearnOpenGL "Specular IBL"; the Khronos glTF IBL sampler), and the same estimator with the
+// Hammersley points replaced by a fixed Gauss-Legendre product rule.
+//
+// Conventions (the same as kiln's, so that errors compare like for like): alpha = r^2 (clamped
+// to MinAlpha like MakeModel), height-correlated Smith, BRDF values without the cosine, view
+// v = (sqrt(1 - mu^2), 0, mu), normal +z. A point set holds N points u = (u1, u2) in [0, 1)^2
+// with weights summing to 1; Hammersley's are (i / N, radicalInverse(i)) with weight 1 / N.
+//   Microfacet (dfg, fresnel-albedo): h from GGX's D cos pdf, phi_h = 2 pi u1,
+//     cos^2 theta_h = (1 - u2) / (1 + (alpha^2 - 1) u2); l = reflect(v, h); the sample weight is
+//     f mu_l / pdf(l) = 4 Vis mu_l (v.h) / (n.h), Vis = G / (4 mu_o mu_l); samples with
+//     mu_l <= 0 weigh 0. dfg splits it by Fc = (1 - v.h)^5 into A (1 - Fc) and B (Fc);
+//     fresnel-albedo multiplies it by FrDielectric(v.h, eta).
+//   Diffuse (albedo of a light-space model): cosine-weighted l (pdf mu_l / pi, seed 002),
+//     phi_l = 2 pi u1, cos theta_l = sqrt(1 - u2) (u2 = 0 is the normal: no sample lies on the
+//     horizon, where some models' f is not finite); the sample weight is pi f(v, l).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "baker/bake/bake.h"
+#include "baker/models/registry.h"
+#include "baker/tables/spec.h"
+
+namespace kiln {
+
+/// Van der Corput radical inverse in base 2 of i (its bits mirrored about the binary point),
+/// in [0, 1).
+inline double RadicalInverse2(uint32_t i) {
+  i = (i << 16) | (i >> 16);
+  i = ((i & 0x55555555u) << 1) | ((i & 0xAAAAAAAAu) >> 1);
+  i = ((i & 0x33333333u) << 2) | ((i & 0xCCCCCCCCu) >> 2);
+  i = ((i & 0x0F0F0F0Fu) << 4) | ((i & 0xF0F0F0F0u) >> 4);
+  i = ((i & 0x00FF00FFu) << 8) | ((i & 0xFF00FF00u) >> 8);
+  return i * 0x1p-32;
+}
+
+/// A weighted point set on the unit square, stored as the sampling code needs it: the azimuth
+/// 2 pi u1 as its cosine and sine, u2, and the weight.
+struct PointSet {
+  std::vector<double> cosPhi, sinPhi, u2, weight;
+  size_t size() const { return u2.size(); }
+};
+
+/// The N Hammersley points (i / N, radicalInverse(i)), weight 1 / N.
+PointSet HammersleyPoints(int n);
+
+/// The n x n Gauss-Legendre product rule on the unit square (N = n^2 points).
+PointSet GaussLegendrePoints(int n);
+
+/// Nodes and weights of the n-point Gauss-Legendre rule on [0, 1] (Newton on P_n, double).
+void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<double>& weights);
+
+/// One texel's estimates (the table bake below runs the same code). alpha is the GGX alpha.
+std::array<double, 2> EstimateDFG(const PointSet& points, double mu, double alpha);
+double EstimateFresnelAlbedo(const PointSet& points, double mu, double alpha, double eta);
+RhoParts EstimateDiffuseAlbedo(const PointSet& points, const AnyModel& model, double mu);
+
+/// True when EstimateTable can bake `spec`: quantity dfg of model ggx, fresnel-albedo, or
+/// albedo of a diffuse (light-space) model.
+bool EstimatorSupports(const TableSpec& spec);
+
+/// Bakes `spec`'s texels (the same nodes, layout and metadata as BakeTable, no lookup-error
+/// check) with the estimator over `points`, on `threads` threads (0: all cores) with oneTBB, one
+/// task per row. `method` names the estimator in the table's kiln.method. stats->evals counts
+/// integrand evaluations (texels x points). Throws std::invalid_argument if !EstimatorSupports.
+Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::string& method,
+                    int threads, BakeStats* stats = nullptr);
+
+}  // namespace kiln
