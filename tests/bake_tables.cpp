@@ -55,11 +55,7 @@ TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral 
     double worst = 0;
     for (size_t i = 0; i < n; i += (n > 60 ? 7 : 1)) {
       double x[3];
-      size_t k = i;
-      for (size_t d = 0; d < spec.axes.size(); ++d) {
-        x[d] = spec.axes[d].ToAxis().node(static_cast<int>(k % spec.axes[d].size));
-        k /= spec.axes[d].size;
-      }
+      NodeCoordinates(spec, i, x);
       IntegrationStats st;
       std::vector<double> exact = EvaluateSpec(spec, x, spec.quantity.find("avg") != std::string::npos ? 1e-10 : 1e-11, st);
       for (size_t c = 0; c < nc; ++c)

@@ -13,7 +13,7 @@ namespace {
 using kiln::Axis;
 using kiln::Warp;
 
-const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
+const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4, Warp::Angle};
 
 /// Axes exercising every warp over a few ranges and sizes.
 std::vector<Axis> sampleAxes() {
@@ -41,6 +41,8 @@ double inverseWarp(const Axis& a, double t) {
         case Warp::Square: return a.lo + (a.hi - a.lo) * std::sqrt(t);
         case Warp::Log: return a.lo * std::pow(a.hi / a.lo, t);
         case Warp::Root4: return a.lo + (a.hi - a.lo) * std::pow(t, 4.0);
+        case Warp::Root4Layer: break;  // no closed form: tested on its own below
+        case Warp::Angle: return a.lo + (a.hi - a.lo) * std::sin(t * M_PI / 2);
     }
     return 0.0;
 }
@@ -182,4 +184,63 @@ TEST_CASE("valid() states the conditions an axis must meet", "[runtime][axis]") 
     CHECK_FALSE(Axis{2.0, 1.0, 4, Warp::Linear}.valid());
     CHECK_FALSE(Axis{0.0, 1.0, 4, Warp::Log}.valid());
     CHECK_FALSE(Axis{0.0, std::numeric_limits<double>::infinity(), 4, Warp::Linear}.valid());
+}
+
+TEST_CASE("root4-layer: the warp of y and of the layer scale c, inverted to the last bit",
+          "[runtime][axis][layer]") {
+    for (double c : {1e-12, 1e-8, 1e-4, 0.01, 0.3, 1.0})
+        for (int n : {2, 3, 17, 128}) {
+            const Axis a{0.0, 1.0, n, Warp::Root4Layer};
+            INFO("c " << c << " N " << n);
+            CHECK(a.node(0, c) == 0.0);
+            CHECK(a.node(n - 1, c) == 1.0);
+            for (int i = 0; i < n; ++i) {
+                CHECK(a.texel(a.node(i, c), c) == double(i));
+                if (i > 0) CHECK(a.node(i, c) > a.node(i - 1, c));
+            }
+            for (double y : {1e-15, 1e-9, 3e-5, 0.01, 0.2, 0.7, 0.999}) {
+                const double t = 0.5 * (std::pow(y, 0.25) + y * (1 + c) / (y + c));
+                CHECK(a.warped(y, c) == Approx(t).epsilon(1e-14));
+                CHECK(a.unwarped(t, c) == Approx(y).epsilon(1e-12));
+            }
+        }
+    // A quarter of the nodes inside the layer y < c, whatever its width.
+    for (double c : {1e-10, 1e-6, 1e-3}) {
+        const Axis a{0.0, 1.0, 129, Warp::Root4Layer};
+        int inside = 0;
+        for (int i = 0; i < a.size; ++i) inside += a.node(i, c) < c;
+        INFO("c " << c << ": " << inside << " of 129 nodes below c");
+        CHECK(inside >= 129 / 4);
+    }
+    Warp parsed = Warp::Linear;
+    REQUIRE(kiln::warpFromName("root4-layer", parsed));
+    CHECK(parsed == Warp::Root4Layer);
+}
+
+TEST_CASE("root4-layer: only on axis 0 of a view of 2+ axes; lookups at its nodes are exact",
+          "[runtime][axis][layer]") {
+    const Axis mu{0.0, 1.0, 9, Warp::Root4Layer}, r{0.0, 1.0, 5, Warp::Sqrt};
+    std::vector<float> data(9 * 5);
+    for (std::size_t k = 0; k < data.size(); ++k) data[k] = 0.1f * float(k) + 0.01f;
+    kiln::LutView view;
+    view.data = data.data();
+    view.channels = 1;
+    view.dims = 2;
+    view.axis[0] = mu;
+    view.axis[1] = r;
+    REQUIRE(view.valid());
+    for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 9; ++i) {
+            const double x[2] = {mu.node(i, kiln::layerScale(0.0, 1.0, r.node(j))), r.node(j)};
+            float got = 0;
+            view.sample(x, &got);
+            CHECK(got == data[std::size_t(j) * 9 + std::size_t(i)]);
+        }
+    kiln::LutView swapped = view;
+    swapped.axis[0] = r;
+    swapped.axis[1] = mu;
+    CHECK_FALSE(swapped.valid());
+    kiln::LutView oneD = view;
+    oneD.dims = 1;
+    CHECK_FALSE(oneD.valid());
 }

@@ -46,7 +46,8 @@ struct Texture {
 /// from the stacked image for 3D (as kilnSample3D in kiln_lut.glsl).
 double gpuSample(const LutView& lut, const double* x, int c) {
     const Texture tex{lut.data, lut.size(0), lut.size(1) * lut.size(2), lut.channels};
-    const double u = lut.axis[0].gpuCoord(x[0]);
+    // A root4-layer axis 0 follows axis 1's value (kilnLayerScale in the shader).
+    const double u = lut.axis[0].gpuCoord(x[0], lut.layerScaleAt(x));
     if (lut.dims == 1) return tex.bilinear(u, 0.5, c);
     if (lut.dims == 2) return tex.bilinear(u, lut.axis[1].gpuCoord(x[1]), c);
     const int n1 = lut.size(1), n2 = lut.size(2);
@@ -64,19 +65,25 @@ double gpuSample(const LutView& lut, const double* x, int c) {
 
 TEST_CASE("hardware bilinear filtering at gpuCoord equals the CPU linear lookup",
           "[runtime][gpu]") {
-    const Warp warps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
+    const Warp warps[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4,
+                          Warp::Root4Layer, Warp::Angle};
     std::mt19937 rng(2024);
     std::uniform_real_distribution<float> value(-1.0f, 1.0f);
     for (Warp warp : warps) {
         const double lo = warp == Warp::Log ? 0.05 : -0.5;
         const double hi = 2.0;
-        const std::vector<std::vector<Axis>> shapes = {
+        std::vector<std::vector<Axis>> shapes = {
             {{lo, hi, 13, warp}},
             {{lo, hi, 9, warp}, {lo, hi, 6, warp}},
             {{lo, hi, 2, warp}, {lo, hi, 5, Warp::Linear}},
             {{lo, hi, 7, warp}, {lo, hi, 4, warp}, {lo, hi, 5, warp}},
             {{lo, hi, 3, Warp::Linear}, {lo, hi, 5, warp}, {lo, hi, 2, warp}},
         };
+        if (warp == Warp::Root4Layer)  // only on axis 0, before a roughness-like axis 1
+            shapes = {
+                {{lo, hi, 9, warp}, {0.0, 1.0, 6, Warp::Sqrt}},
+                {{lo, hi, 7, warp}, {0.0, 0.3, 4, Warp::Linear}, {lo, hi, 5, Warp::Linear}},
+            };
         for (const auto& axes : shapes) {
             LutView lut;
             lut.channels = 2;

@@ -24,7 +24,7 @@ TEST_CASE("kiln plan prints each table with reasons, axes, size and state", "[sc
   CHECK(r.err.empty());
   CHECK(r.out.find("(glTF, 2 materials): 3 tables") != std::string::npos);
   CHECK(r.out.find("ggx-dfg-r0.3-0.6  [missing]") != std::string::npos);
-  CHECK(r.out.find("axes: mu 0..1 (4, root4) x roughness 0.3..0.6 (2, sqrt) = 8 texels") != std::string::npos);
+  CHECK(r.out.find("axes: mu 0..1 (4, root4-layer) x roughness 0.3..0.6 (2, sqrt) = 8 texels") != std::string::npos);
   CHECK(r.out.find("    'Brass' (/materials/1): base GGX lobe, roughnessFactor 0.6") != std::string::npos);
   CHECK(r.out.find("unused material: no mesh primitive uses it ['Leftover' (/materials/2)]") != std::string::npos);
 

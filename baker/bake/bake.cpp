@@ -25,15 +25,6 @@ namespace {
 
 constexpr const char* kGenerator = "kiln 0.1.0";
 
-/// Coordinates of texel `index` (axis 0 fastest), at the nodes of the spec's axes.
-void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
-  for (size_t d = 0; d < spec.axes.size(); ++d) {
-    const AxisSpec& a = spec.axes[d];
-    x[d] = a.ToAxis().node(static_cast<int>(index % a.size));
-    index /= a.size;
-  }
-}
-
 /// Redraws a one-line progress bar on stderr every 100 ms while `done` < `total`.
 class ProgressBar {
  public:
@@ -133,8 +124,10 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   // bound by re-integrating texels), never below the tolerance, plus float32 rounding (2^-24).
   double estimate = 0;
   for (size_t i = 0; i < n; ++i) estimate = std::max(estimate, errors[i]);
+  // A fixed-rule table declares the rule's bound (spec.h, kFixedRuleBound).
   bool integrated = spec.Method().rfind("closed form", 0) != 0;
-  t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
+  if (UsesFixedRule(spec)) t.bakeError = kFixedRuleBound + 0x1p-24;
+  else t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
   if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupRandomPoints, opt.threads);
   auto t2 = std::chrono::steady_clock::now();
   if (stats) {
@@ -153,10 +146,12 @@ void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, i
   for (const AxisSpec& a : spec.axes) cells *= static_cast<size_t>(std::max(1, a.size - 1));
   long long random = static_cast<long long>(std::min<size_t>(static_cast<size_t>(std::max(0, randomPoints)), cells));
   LookupErrorReport rep =
-      MeasureLookupError(spec, table.view(), random, spec.tol, threads, Filter::Linear, 4096);
+      MeasureLookupError(spec, table.view(), random, 0, threads, Filter::Linear, 4096, /*alsoCubic=*/true);
   table.lookupError.max = rep.max * kDeclaredBoundMargin;
   table.lookupError.rms = rep.rms;
   table.lookupError.filter = "linear";
+  table.lookupError.cubicMax = rep.cubicMax;
+  table.lookupError.cubicRms = rep.cubicRms;
   char buf[256];
   std::snprintf(buf, sizeof buf,
                 "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max over %lld points "
@@ -211,6 +206,8 @@ void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
     e["bake_error"] = t.bakeError;
     e["lookup_error"] = {{"max", t.lookupError.max}, {"rms", t.lookupError.rms},
                          {"filter", t.lookupError.filter}, {"where", t.lookupError.where}};
+    if (t.lookupError.cubicMax >= 0)
+      e["lookup_error_cubic"] = {{"max", t.lookupError.cubicMax}, {"rms", t.lookupError.cubicRms}};
     e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;
     e["bytes_float32"] = t.data.size() * 4;
     e["spec_hash"] = t.specHash;
@@ -221,7 +218,9 @@ void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
   doc["format"] = kFormatVersion;
   doc["tables"] = ordered_json::array();
   for (auto& [name, e] : entries) doc["tables"].push_back(e);
-  writeBytes(path, doc.dump(2) + "\n");
+  // Like every table: a killed bake leaves the old manifest or the new one, never a partial one.
+  std::string text = doc.dump(2) + "\n";
+  writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, text); });
 }
 
 }  // namespace kiln

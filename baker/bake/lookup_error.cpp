@@ -21,7 +21,7 @@ std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
 }
 
 LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view, long long randomPoints,
-                                     double refTol, int threads, Filter filter, long long maxCells) {
+                                     double refTol, int threads, Filter filter, long long maxCells, bool alsoCubic) {
   size_t dims = spec.axes.size();
   size_t allCells = 1;
   for (const AxisSpec& a : spec.axes) allCells *= static_cast<size_t>(std::max(1, a.size - 1));
@@ -30,9 +30,11 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   LookupErrorReport rep;
   std::vector<double> err(total, 0);
   std::vector<char> inCorner(total, 0);
+  std::vector<double> errCubic(alsoCubic ? total : 0, 0);
   auto point = [&](size_t i, double* x) {
     size_t k = i < cells ? i * allCells / cells : 0;  // evenly strided when cells < allCells
     uint64_t s = 0x9E3779B97F4A7C15ull * (i - cells + 1);
+    double t0 = 0;
     for (size_t d = 0; d < dims; ++d) {
       Axis ax = spec.axes[d].ToAxis();
       int cellsHere = std::max(1, ax.size - 1);
@@ -47,7 +49,9 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
         texel = static_cast<double>(s >> 11) * (1.0 / 9007199254740992.0) * cellsHere;
       }
       x[d] = ax.size > 1 ? ax.unwarped(texel / (ax.size - 1)) : ax.lo;
+      if (d == 0) t0 = ax.size > 1 ? texel / (ax.size - 1) : 0;
     }
+    if (spec.axes[0].warp == Warp::Root4Layer) x[0] = spec.axes[0].ToAxis().unwarped(t0, LayerScaleOf(spec, x));
   };
   int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   tbb::task_arena arena(n);
@@ -57,12 +61,20 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
         double x[3] = {0, 0, 0};
         point(i, x);
         IntegrationStats st;
-        std::vector<double> exact = EvaluateSpec(spec, x, refTol, st);
-        float got[8] = {};
-        view.sample(x, got, filter);
+        std::vector<double> exact = refTol > 0 ? EvaluateSpec(spec, x, refTol, st) : EvaluateSpec(spec, x, st);
+        // One float per channel of the table, and at least one per exact value (a table with
+        // fewer channels than its quantity then compares the missing ones against 0).
+        std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
+        view.sample(x, got.data(), filter);
         double m = 0;
         for (size_t c = 0; c < exact.size(); ++c) m = std::max(m, std::abs(got[c] - exact[c]));
         err[i] = m;
+        if (alsoCubic) {
+          view.sample(x, got.data(), Filter::Cubic);
+          double mc = 0;
+          for (size_t c = 0; c < exact.size(); ++c) mc = std::max(mc, std::abs(got[c] - exact[c]));
+          errCubic[i] = mc;
+        }
         inCorner[i] = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
       }
     });
@@ -76,6 +88,15 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   }
   rep.max = err[worst];
   rep.rms = std::sqrt(sum / static_cast<double>(total));
+  if (alsoCubic) {
+    double sumCubic = 0;
+    rep.cubicMax = 0;
+    for (double e : errCubic) {
+      rep.cubicMax = std::max(rep.cubicMax, e);
+      sumCubic += e * e;
+    }
+    rep.cubicRms = std::sqrt(sumCubic / static_cast<double>(total));
+  }
   rep.points = static_cast<long long>(total);
   double x[3];
   point(worst, x);

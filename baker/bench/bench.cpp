@@ -283,7 +283,10 @@ class Bench {
 
   void Sweep(const Kind& k) {
     TableSpec spec = Sized(k.table, k.base);
-    for (double tol : plan_.tols) Add(Row("sweep", "kiln", spec, tol, threads_, Kiln(spec, tol, threads_)));
+    if (UsesFixedRule(spec))  // one method, no tolerance: the fixed rule (spec.h)
+      Add(Row("sweep", "kiln-fixed-rule", spec, kFixedRuleBound, threads_, Kiln(spec, spec.tol, threads_)));
+    else
+      for (double tol : plan_.tols) Add(Row("sweep", "kiln", spec, tol, threads_, Kiln(spec, tol, threads_)));
     for (int n : plan_.mcSamples)
       Add(Row("sweep", "mc-hammersley", spec, n, threads_, Estimate(spec, false, n, threads_)));
     for (int n : plan_.glOrders)

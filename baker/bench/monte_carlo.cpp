@@ -213,13 +213,14 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
   if (spec.quantity == "albedo") cosine = std::make_unique<CosineDirections>(points);
   auto row = [&](size_t k) {
     double r = rAxis.node(static_cast<int>(k % rSize));
+    double c = spec.axes[0].warp == Warp::Root4Layer ? layerScale(rAxis.lo, rAxis.hi, r) : 1e-12;
     float* out = &t.data[k * width * nc];
     if (spec.quantity == "albedo") {
       AnyModel model = ModelAt(spec.model, r);
       std::visit(
           [&](const auto& m) {
             for (int i = 0; i < width; ++i) {
-              RhoParts e = DiffuseAt(*cosine, m, muAxis.node(i));
+              RhoParts e = DiffuseAt(*cosine, m, muAxis.node(i, c));
               if (nc == 2) {
                 out[2 * i] = static_cast<float>(e.lin);
                 out[2 * i + 1] = static_cast<float>(e.quad);
@@ -235,14 +236,14 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
     GGXHalfVectors h(points, alpha);
     if (spec.quantity == "dfg") {
       for (int i = 0; i < width; ++i) {
-        auto ab = DFGAt(h, muAxis.node(i), alpha);
+        auto ab = DFGAt(h, muAxis.node(i, c), alpha);
         out[2 * i] = static_cast<float>(ab[0]);
         out[2 * i + 1] = static_cast<float>(ab[1]);
       }
     } else {
       double eta = spec.axes[2].ToAxis().node(static_cast<int>(k / rSize));
       for (int i = 0; i < width; ++i)
-        out[i] = static_cast<float>(FresnelAlbedoAt(h, muAxis.node(i), alpha, eta));
+        out[i] = static_cast<float>(FresnelAlbedoAt(h, muAxis.node(i, c), alpha, eta));
     }
   };
   tbb::task_arena arena(Threads(threads));

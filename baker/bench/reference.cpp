@@ -62,10 +62,12 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
   long long evals = ParallelEvals(texels, opt.threads, [&](size_t i) {
     double x[3] = {0, 0, 0};
     size_t k = i;
+    int i0 = static_cast<int>(k % axes[0].size);
     for (size_t d = 0; d < dims; ++d) {
       x[d] = axes[d].node(static_cast<int>(k % axes[d].size));
       k /= axes[d].size;
     }
+    x[0] = axes[0].node(i0, LayerScaleOf(spec, x));  // a root4-layer axis 0 follows axis 1
     IntegrationStats st;
     std::vector<double> v = EvaluateSpec(spec, x, opt.tol, st);
     for (size_t c = 0; c < nc; ++c) ref.nodes[i * nc + c] = v[c];
@@ -92,11 +94,15 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
   ref.points.resize(texel.size());
   ref.inCorner.assign(count, 0);
   bool overMu = dims >= 2 && spec.axes[0].name == "mu";
-  for (size_t j = 0; j < count; ++j)
+  for (size_t j = 0; j < count; ++j) {
+    double* x = &ref.points[j * dims];
     for (size_t d = 0; d < dims; ++d) {
-      ref.points[j * dims + d] = AxisValueAtTexel(axes[d], texel[j * dims + d]);
+      x[d] = AxisValueAtTexel(axes[d], texel[j * dims + d]);
       if (overMu && (d == 1 || spec.axes[d].name == "eta") && texel[j * dims + d] < 1) ref.inCorner[j] = 1;
     }
+    if (axes[0].size > 1)  // a root4-layer axis 0 follows axis 1
+      x[0] = axes[0].unwarped(texel[j * dims] / (axes[0].size - 1), LayerScaleOf(spec, x));
+  }
   ref.pointValues.assign(count * nc, 0);
   evals += ParallelEvals(count, opt.threads, [&](size_t j) {
     IntegrationStats st;
@@ -126,6 +132,9 @@ ErrorStats BakeError(const Table& table, const Reference& ref) {
         e.worstAt.push_back(a.node(static_cast<int>(k % a.size)));
         k /= a.size;
       }
+      if (ref.axes[0].warp == Warp::Root4Layer && ref.axes.size() >= 2)
+        e.worstAt[0] = ref.axes[0].node(static_cast<int>(i % ref.axes[0].size),
+                                        layerScale(ref.axes[1].lo, ref.axes[1].hi, e.worstAt[1]));
     }
     sum += m * m;
   }

@@ -24,24 +24,27 @@ void RegisterBake(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
-  sub->add_option("--only", args->only, "comma-separated table names (default: all)");
+  auto* oOnly = sub->add_option("--only", args->only, "comma-separated table names (default: all)");
   auto* oSize = sub->add_option("--size", args->size, "nodes on every axis (default: each table's own)");
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_flag("--half", args->half, "store half floats instead of float32");
   sub->add_flag("--header", args->header, "also write a C++ header per table");
   sub->add_option("--roughness", args->roughness, "roughness of the *-brdf tables")->capture_default_str();
-  sub->add_option("--scene", args->scene, "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
+  auto* oScene = sub->add_option("--scene", args->scene,
+                                 "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
   sub->add_flag("--no-lookup-error", args->noLookup,
                 "skip measuring the lookup error (the file then declares none)");
-  sub->callback([args, oSize] {
+  sub->callback([args, oSize, oOnly, oScene] {
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("bake: --size " + std::to_string(args->size) + " must be in [2, 4096]");
-    if (args->threads < 0 || args->threads > 1024)
-      throw std::invalid_argument("bake: -j " + std::to_string(args->threads) + " must be in [1, 1024]");
+    CheckThreads("bake", args->threads);
     if (!(args->roughness >= 0 && args->roughness <= 1))
       throw std::invalid_argument("bake: --roughness must be in [0, 1]");
-    if (!args->scene.empty()) {
-      if (!args->only.empty()) throw std::invalid_argument("bake: give --scene or --only, not both");
+    // Given but empty is an error, never "not given": --only '' would bake the whole catalogue.
+    if (oOnly->count() && args->only.empty()) throw std::invalid_argument("bake: --only '' names no table");
+    if (oScene->count() && args->scene.empty()) throw std::invalid_argument("bake: --scene '' names no file");
+    if (oScene->count()) {
+      if (oOnly->count()) throw std::invalid_argument("bake: give --scene or --only, not both");
       struct stat st {};
       if (stat(args->out.c_str(), &st) != 0 && mkdir(args->out.c_str(), 0755) != 0)
         throw std::runtime_error("bake: cannot create folder '" + args->out + "'");
@@ -59,7 +62,7 @@ void RegisterBake(CLI::App& app) {
     copt.size = args->size;
     copt.brdfRoughness = args->roughness;
     std::vector<TableSpec> specs;
-    if (args->only.empty()) {
+    if (!oOnly->count()) {
       specs = DefaultCatalogue(copt);
     } else {
       for (const std::string& name : splitList(args->only, ','))

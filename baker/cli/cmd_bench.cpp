@@ -5,6 +5,7 @@
 
 #include "baker/bench/bench.h"
 #include "baker/cli/bench_commands.h"
+#include "baker/cli/commands.h"
 
 namespace kiln::cli {
 
@@ -24,8 +25,7 @@ void RegisterBench(CLI::App& app) {
                   "threads of the bakes and references (default: all cores); the baker-issue "
                   "comparison always uses 2");
   sub->callback([args] {
-    if (args->threads < 0 || args->threads > 1024)
-      throw std::invalid_argument("bench: -j " + std::to_string(args->threads) + " must be in [1, 1024]");
+    CheckThreads("bench", args->threads);
     BenchOptions opt;
     opt.scale = args->quick ? BenchScale::Quick : BenchScale::Full;
     opt.outDir = args->out;

@@ -33,6 +33,9 @@ void RegisterInspect(CLI::App& app) {
     std::printf("bake error      %.3g\n", t.bakeError);
     std::printf("lookup error    max %.3g rms %.3g (%s) at %s\n", t.lookupError.max, t.lookupError.rms,
                 t.lookupError.filter.c_str(), t.lookupError.where.c_str());
+    if (t.lookupError.cubicMax >= 0)
+      std::printf("lookup cubic    max %.3g rms %.3g (same points)\n", t.lookupError.cubicMax,
+                  t.lookupError.cubicRms);
     std::printf("spec hash       %s\n", t.specHash.c_str());
     size_t nc = t.channels.size();
     for (size_t c = 0; c < nc; ++c) {

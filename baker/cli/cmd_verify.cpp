@@ -58,6 +58,7 @@ void RegisterVerify(CLI::App& app) {
     if (args->cells < 0) throw std::invalid_argument("verify: --cells must be >= 0");
     if (args->points < 0) throw std::invalid_argument("verify: --points must be >= 0");
     if (!(args->tol > 0 && args->tol <= 1e-4)) throw std::invalid_argument("verify: --tol must be in (0, 1e-4]");
+    CheckThreads("verify", args->threads);
     std::vector<std::string> files;
     for (const std::string& p : args->paths)
       for (const std::string& f : ExrFiles(p)) files.push_back(f);
@@ -66,19 +67,45 @@ void RegisterVerify(CLI::App& app) {
     std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
                 "where (max)");
     for (const std::string& f : files) {
+      // A file that does not load, or whose metadata cannot be evaluated (unreadable params,
+      // unknown model or quantity, channels the quantity does not have), fails on its own line;
+      // the other files are still checked.
+      auto fail = [&](const std::string& why) {
+        std::printf("%-40s FAILED: %s\n", f.c_str(), why.c_str());
+        ++failed;
+      };
       Table t;
       std::string error;
       if (!loadTable(f, t, error)) {
-        std::printf("%-40s FAILED: %s\n", f.c_str(), error.c_str());
-        ++failed;
+        fail(error);
         continue;
       }
-      TableSpec spec = SpecFromTable(t);
+      TableSpec spec;
+      try {
+        spec = SpecFromTable(t);
+      } catch (const std::exception& e) {
+        fail("cannot read kiln.params '" + t.params + "' (" + e.what() + ")");
+        continue;
+      }
       std::string filter = args->filter.empty() ? t.lookupError.filter : args->filter;
       bool checked = filter == t.lookupError.filter;
-      LookupErrorReport rep = MeasureLookupError(spec, t.view(), args->points, args->tol, args->threads,
-                                                 filter == "cubic" ? Filter::Cubic : Filter::Linear,
-                                                 args->cells);
+      LookupErrorReport rep;
+      try {
+        double lo[3] = {0, 0, 0};
+        for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) lo[d] = spec.axes[d].lo;
+        IntegrationStats stats;
+        size_t channels = EvaluateSpec(spec, lo, args->tol, stats).size();
+        if (channels != t.channels.size()) {
+          fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity + "' has " +
+               std::to_string(channels));
+          continue;
+        }
+        rep = MeasureLookupError(spec, t.view(), args->points, args->tol, args->threads,
+                                 filter == "cubic" ? Filter::Cubic : Filter::Linear, args->cells);
+      } catch (const std::exception& e) {
+        fail(e.what());
+        continue;
+      }
       // The direct evaluation itself is only good to tol: allow that much on top of the bound.
       bool ok = !checked || (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError);
       std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,

@@ -19,6 +19,15 @@ struct ModelParamOptions {
 /// Prints a double with %.17g (round-trips exactly).
 std::string FullPrecision(double x);
 
+/// Makes every numeric option and argument of every subcommand of `app` (those CLI11 types INT,
+/// UINT or FLOAT) refuse an empty or non-numeric value with a one-line error naming it: CLI11 2.1
+/// would read '' as 0. main() calls it once, after every subcommand is registered.
+void RefuseNonNumbers(CLI::App& app);
+
+/// The -j/--threads check of every command that takes it: 0 (all cores) or [1, 1024]; throws
+/// std::invalid_argument "COMMAND: -j N must be in [1, 1024]" otherwise.
+void CheckThreads(const std::string& command, int threads);
+
 void RegisterList(CLI::App& app);
 void RegisterEval(CLI::App& app);
 void RegisterIntegrate(CLI::App& app);

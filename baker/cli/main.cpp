@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   kiln::cli::RegisterVerify(app);
   kiln::cli::RegisterPlan(app);
   kiln::cli::RegisterBench(app);
+  kiln::cli::RefuseNonNumbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,4 +1,6 @@
 #include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
 
 #include "baker/cli/commands.h"
 
@@ -36,6 +38,38 @@ std::string FullPrecision(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
+}
+
+namespace {
+
+/// "" when `text` is a whole integer (integer) or number as CLI11 reads it (strtoll base 0 or
+/// strtod, to the last character), else the complaint.
+std::string NumberProblem(const std::string& text, bool integer) {
+  std::string wanted = integer ? "an integer" : "a number";
+  if (text.empty()) return "needs " + wanted + ", got ''";
+  char* end = nullptr;
+  if (integer) std::strtoll(text.c_str(), &end, 0);
+  else std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size()) return "needs " + wanted + ", got '" + text + "'";
+  return "";
+}
+
+}  // namespace
+
+void RefuseNonNumbers(CLI::App& app) {
+  for (CLI::Option* o : app.get_options()) {
+    std::string type = o->get_type_name();
+    type = type.substr(0, type.find(':'));  // validators append ":DESCRIPTION"
+    bool integer = type == "INT" || type == "UINT";
+    if (!integer && type != "FLOAT") continue;
+    o->check(CLI::Validator([integer](std::string& text) { return NumberProblem(text, integer); }, ""));
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) RefuseNonNumbers(*sub);
+}
+
+void CheckThreads(const std::string& command, int threads) {
+  if (threads < 0 || threads > 1024)
+    throw std::invalid_argument(command + ": -j " + std::to_string(threads) + " must be in [1, 1024]");
 }
 
 }  // namespace kiln::cli

@@ -92,7 +92,7 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
   double sinTheta_o = wo.x, theta_o = std::acos(mu_o);
   double thetaEnd = std::min(Pi / 2, Pi / 4 + theta_o / 2);
   // Outer panel boundaries in theta_h: 0, the start of the horizon cut, model kinks, the end.
-  double thetas[24];
+  double thetas[32];
   int nt = 0;
   thetas[nt++] = 0;
   double thetaCut = Pi / 4 - theta_o / 2;
@@ -100,10 +100,16 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
   // Grazing views: the cut sweeps from phi = pi to pi/2 over theta_h in [thetaCut, ~30 thetaCut];
   // geometric panels resolve that scale at once instead of by bisection.
   // The same happens mirrored at the end, where the cut closes over pi/2 - theta_h in
-  // [thetaCut, ~30 thetaCut] (pi/2 - thetaEnd = thetaCut).
-  for (double t = 4 * thetaCut; thetaCut > 0 && t < std::min(0.5, thetaEnd) && nt < 10; t *= 4)
+  // [thetaCut, ~30 thetaCut] (pi/2 - thetaEnd = thetaCut); there the weight also grows like
+  // 1 / cos(theta_h) ~ v^(-1/2), so the panels must reach out to O(1): a panel edge left at
+  // pi/2 - t with t << 1 would leave a near-singularity of scale t just outside it that the rule
+  // of the panel next to it cannot see (it cost 4e4 mu alpha at mu_o = 1e-10). 12 panels a side,
+  // with the ratio grown beyond 4 when thetaCut is tiny.
+  double ratio = thetaCut > 0 ? std::max(4.0, std::pow(0.5 / thetaCut, 1.0 / 12)) : 4;
+  for (double t = ratio * thetaCut; thetaCut > 0 && t < std::min(0.5, thetaEnd) && nt < 14;
+       t *= ratio)
     thetas[nt++] = t;
-  for (double t = 4 * thetaCut; thetaCut > 0 && Pi / 2 - t > 0.5 && nt < 18; t *= 4)
+  for (double t = ratio * thetaCut; thetaCut > 0 && Pi / 2 - t > 0.5 && nt < 26; t *= ratio)
     thetas[nt++] = Pi / 2 - t;
   double kinks[4];
   int nk = model.ThetaKinks(theta_o, kinks);
@@ -113,7 +119,7 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
   SortSmall(thetas, nt);
   // Panel i spans v in [vs[i+1], vs[i]] (v decreases as theta grows); the outer variable x runs
   // over [0, panels] with panel i at [i, i+1].
-  double vs[24];
+  double vs[32];
   for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : model.VFromTheta(thetas[i]);
   int panels = nt - 1;
   double innerTol = opt.tol / 10;

@@ -90,6 +90,8 @@ std::string warpEnumerator(Warp warp) {
         case Warp::Sqrt: return "kiln::Warp::Sqrt";
         case Warp::Square: return "kiln::Warp::Square";
         case Warp::Root4: return "kiln::Warp::Root4";
+        case Warp::Root4Layer: return "kiln::Warp::Root4Layer";
+        case Warp::Angle: return "kiln::Warp::Angle";
         case Warp::Log: return "kiln::Warp::Log";
     }
     throw std::runtime_error("unknown warp");

@@ -97,6 +97,10 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
     setDouble(h, "kiln.lookup_error.rms", t.lookupError.rms);
     setString(h, "kiln.lookup_error.where", t.lookupError.where);
     setString(h, "kiln.lookup_error.filter", t.lookupError.filter);
+    if (t.lookupError.cubicMax >= 0) {
+        setDouble(h, "kiln.lookup_error.cubic_max", t.lookupError.cubicMax);
+        setDouble(h, "kiln.lookup_error.cubic_rms", t.lookupError.cubicRms);
+    }
     setString(h, "kiln.spec_hash", t.specHash);
 }
 

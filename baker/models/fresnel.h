@@ -1,6 +1,7 @@
 // Fresnel reflectance: exact dielectric and conductor (Born & Wolf; pbrt-v4 util/scattering.h),
 // Schlick's approximation (Schlick 1994) and F0 from the index of refraction.
 #pragma once
+#include <algorithm>
 #include <complex>
 
 #include "baker/math/vec3.h"
@@ -16,13 +17,20 @@ inline double FrDielectric(double cosTheta_i, double eta) {
     eta = 1 / eta;
     cosTheta_i = -cosTheta_i;
   }
-  double sin2Theta_i = 1 - Sqr(cosTheta_i);
-  double sin2Theta_t = sin2Theta_i / Sqr(eta);
-  if (sin2Theta_t >= 1) return 1.0;
-  double cosTheta_t = SafeSqrt(1 - sin2Theta_t);
-  double r_parl = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
-  double r_perp = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
-  return (Sqr(r_parl) + Sqr(r_perp)) / 2;
+  // cos^2(theta_t) = 1 - sin^2(theta_i) / eta^2 = (cos^2(theta_i) + eta^2 - 1) / eta^2, and the
+  // numerators of r_perp and r_parl multiplied by their conjugates, so that nothing cancels at
+  // grazing incidence with eta near 1 (where the textbook 1 - (1 - mu^2) / eta^2 loses mu^2
+  // below the rounding of 1 and reports total internal reflection at eta = 1):
+  //   r_perp = (1 - eta^2) / (cos_i + eta cos_t)^2,
+  //   r_parl = (eta^2 - 1) ((eta^2 + 1) cos_i^2 - 1) / (eta^2 (eta cos_i + cos_t)^2).
+  double eta2m1 = (eta - 1) * (eta + 1);
+  double cos2Theta_t = (Sqr(cosTheta_i) + eta2m1) / Sqr(eta);
+  if (cos2Theta_t <= 0) return 1.0;  // total internal reflection (and grazing incidence)
+  double cosTheta_t = std::sqrt(cos2Theta_t);
+  double r_perp = -eta2m1 / Sqr(cosTheta_i + eta * cosTheta_t);
+  double r_parl = eta2m1 * ((Sqr(eta) + 1) * Sqr(cosTheta_i) - 1) /
+                  (Sqr(eta) * Sqr(eta * cosTheta_i + cosTheta_t));
+  return std::min(1.0, (Sqr(r_parl) + Sqr(r_perp)) / 2);  // |r| = 1 may round to 1 + 2^-52
 }
 
 /// Unpolarized Fresnel reflectance of a conductor with complex index eta = n + i k (k >= 0;
@@ -32,11 +40,12 @@ inline double FrComplex(double cosTheta_i, double n, double k) {
   using C = std::complex<double>;
   cosTheta_i = Clamp(cosTheta_i, 0.0, 1.0);
   C eta(n, k);
-  double sin2Theta_i = 1 - Sqr(cosTheta_i);
-  C sin2Theta_t = sin2Theta_i / (eta * eta);
-  C cosTheta_t = std::sqrt(1.0 - sin2Theta_t);
-  C r_parl = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
-  C r_perp = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
+  // The cancellation-free forms of FrDielectric, which hold for a complex eta as well.
+  C eta2 = eta * eta, eta2m1 = (eta - 1.0) * (eta + 1.0);
+  C cosTheta_t = std::sqrt((Sqr(cosTheta_i) + eta2m1) / eta2);
+  C r_perp = -eta2m1 / ((cosTheta_i + eta * cosTheta_t) * (cosTheta_i + eta * cosTheta_t));
+  C r_parl = eta2m1 * ((eta2 + 1.0) * Sqr(cosTheta_i) - 1.0) /
+             (eta2 * (eta * cosTheta_i + cosTheta_t) * (eta * cosTheta_i + cosTheta_t));
   double R = (std::norm(r_parl) + std::norm(r_perp)) / 2;
   return std::isfinite(R) ? Clamp(R, 0.0, 1.0) : 1.0;
 }

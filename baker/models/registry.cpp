@@ -27,7 +27,7 @@ std::vector<ModelInfo> BuildModels() {
       {"frostbite", "renormalised Disney diffuse (Lagarde 2014)", "r as is",
        {Rough(1, "Disney roughness"), Rho()}, true, false, true, false, D::Light},
       {"oren-nayar", "full Oren-Nayar with interreflection (Oren & Nayar 1994)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, true, D::Light},
+       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, false, true, D::Light},
       {"oren-nayar-qualitative", "qualitative Oren-Nayar (Oren & Nayar 1994)", sigma,
        {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, false, D::Light},
       {"oren-nayar-qualitative-ir", "qualitative Oren-Nayar, A with 0.57 (interreflection)", sigma,

@@ -31,7 +31,7 @@ struct ModelInfo {
   std::vector<ParamInfo> params;
   bool reciprocal;        ///< f(o, l) = f(l, o)
   bool energyConserving;  ///< E(mu) <= 1 for every mu at rho = 1, F = 1
-  bool nonNegative;       ///< f >= 0 everywhere above the horizon
+  bool nonNegative;       ///< f >= 0 everywhere above the horizon, for every rho in [0, 1]
   bool hasRho2;           ///< has a term quadratic in rho (tables get a separate channel)
   IntegrationDomain domain;
   bool specular() const { return domain == IntegrationDomain::HalfVector; }

@@ -23,31 +23,72 @@ std::string PointerChild(const std::string& parent, size_t index) {
   return parent + "/" + std::to_string(index);
 }
 
-Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix) {
-  try {
-    return Json::parse(text);
-  } catch (const Json::parse_error& e) {
-    // e.byte is 1-based and points just past the offending character.
-    size_t end = e.byte == 0 ? 0 : std::min(text.size(), static_cast<size_t>(e.byte - 1));
-    int line = 1, column = 1;
-    for (size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
+namespace {
+
+/// Builds the document as Json::parse does, and remembers where the parser stopped and on which
+/// token when it fails: only parse_error carries its byte, not out_of_range (a number that
+/// overflows a double).
+class PlacedDomParser : public nlohmann::detail::json_sax_dom_parser<Json> {
+ public:
+  using json_sax_dom_parser::json_sax_dom_parser;
+  size_t position = 0;  ///< bytes read when the parser failed, 0 when it did not
+  std::string token;    ///< the last token read then
+
+  template <class Exception>
+  bool parse_error(size_t pos, const std::string& lastToken, const Exception& ex) {
+    position = pos;
+    token = lastToken;
+    return json_sax_dom_parser::parse_error(pos, lastToken, ex);
+  }
+};
+
+/// "line L, column C" of text[offset] (0-based offset; 1-based line and column).
+std::string LineColumn(const std::string& text, size_t offset) {
+  int line = 1, column = 1;
+  for (size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
     }
-    // nlohmann's message is "[json.exception.parse_error.101] parse error at line 1, column 2:
-    // syntax error while parsing value - invalid literal; last read: 'x'": keep what follows
-    // the position.
-    std::string what = e.what();
-    size_t colon = what.find(": ");
-    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-    for (char& c : detail)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw SceneError(file, prefix + "line " + std::to_string(line) + ", column " + std::to_string(column),
-                     "not valid JSON (" + detail + ")");
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+/// nlohmann's message without its "[json.exception.out_of_range.406] " head, on one line.
+std::string JsonErrorDetail(const std::string& what) {
+  size_t head = what.rfind("[json.exception.", 0) == 0 ? what.find("] ") : std::string::npos;
+  std::string detail = head == std::string::npos ? what : what.substr(head + 2);
+  for (char& c : detail)
+    if (c == '\n' || c == '\r') c = ' ';
+  return detail;
+}
+
+}  // namespace
+
+Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix) {
+  Json doc;
+  PlacedDomParser parser(doc);
+  try {
+    Json::sax_parse(text, &parser);
+    return doc;
+  } catch (const Json::parse_error& e) {
+    // e.byte is 1-based and points just past the offending character. nlohmann's message is
+    // "[json.exception.parse_error.101] parse error at line 1, column 2: syntax error while
+    // parsing value - invalid literal; last read: 'x'": keep what follows the position.
+    size_t end = e.byte == 0 ? 0 : std::min(text.size(), static_cast<size_t>(e.byte - 1));
+    std::string detail = JsonErrorDetail(e.what());
+    size_t colon = detail.find(": ");
+    if (colon != std::string::npos) detail = detail.substr(colon + 2);
+    throw SceneError(file, prefix + LineColumn(text, end), "not valid JSON (" + detail + ")");
+  } catch (const Json::exception& e) {
+    // Valid JSON kiln cannot hold, e.g. "[json.exception.out_of_range.406] number overflow
+    // parsing '1e999'": placed at the start of the token when the parser said where it stopped.
+    std::string place;
+    if (parser.position > 0)
+      place = prefix + LineColumn(text, parser.position - std::min(parser.position, parser.token.size()));
+    throw SceneError(file, place, "cannot be read (" + JsonErrorDetail(e.what()) + ")");
   }
 }
 

@@ -34,20 +34,42 @@ void Resize(TableSpec& spec, int size) {
 }  // namespace
 
 // Sizes and warps (README "The catalogue" gives the measured lookup errors):
-// - mu: root4 warp for the microfacet and Fresnel tables. Near grazing a microfacet albedo is a
-//   function of mu / alpha (a layer of width alpha = r^2 at mu = 0) and a dielectric Fresnel term
-//   of mu / sqrt(eta - 1): nodes at mu = (i/(N-1))^4 resolve those layers down to small r and eta.
-//   sqrt for the diffuse albedos (polynomials in 1 - mu) and the BRDF tables.
+// - mu: near grazing a microfacet albedo is a function of mu / alpha (a layer of width
+//   alpha = r^2 at mu = 0) and a dielectric Fresnel term of mu / sqrt(eta - 1). The microfacet
+//   dfg and albedo tables take the root4-layer warp (lut.h): half of the nodes follow the layer
+//   at every roughness, so the corner (mu, r) -> (0, 0) interpolates like the rest (a fixed warp
+//   cannot: the layer's width goes to 0 with r). The Fresnel tables take root4, nodes at
+//   mu = (i/(N-1))^4, which resolves the layer down to small eta - 1. sqrt for the diffuse
+//   albedos (polynomials in 1 - mu) and the BRDF tables.
 // - roughness: sqrt for the microfacet tables (the layer above moves with r^2), linear for the
 //   diffuse ones; eta: sqrt (dense near 1, same reason); n, k: linear; Blinn-Phong's s: log.
 AxisSpec DefaultMuAxis(const std::string& quantity) {
   if (quantity == "fresnel-albedo") return {"mu", 0, 1, 48, Warp::Root4};
   if (quantity == "fresnel-conductor") return {"mu", 0, 1, 32, Warp::Root4};
+  if (quantity == "dfg" || quantity == "albedo") return {"mu", 0, 1, 128, Warp::Root4Layer};
   return {"mu", 0, 1, 128, Warp::Root4};
+}
+
+/// The mu axis of a diffuse albedo table. Most diffuse models are polynomials in mu and 1 - mu
+/// (Burley, Frostbite, Shirley, ...) and bend most near grazing: sqrt. The Oren-Nayar qualitative
+/// family, normalised Fujii and Gotanda's GGX diffuse are smooth in the angles instead, so their
+/// albedo has a square-root point at mu = 1 (sin(theta_o) terms): angle, nodes uniform in theta_o
+/// (measured: oren-nayar-qualitative 8.3e-3 with sqrt, 3.5e-4 with angle; the polynomial models
+/// err 2-10x more with angle than with sqrt).
+AxisSpec DiffuseMuAxis(const std::string& model) {
+  if (model == "gotanda-ggx") return {"mu", 0, 1, 128, Warp::Angle};
+  if (model == "oren-nayar-qualitative" || model == "oren-nayar-qualitative-ir" ||
+      model == "fujii-normalized")
+    return {"mu", 0, 1, 64, Warp::Angle};
+  return {"mu", 0, 1, 64, Warp::Sqrt};
 }
 
 AxisSpec DefaultRoughnessAxis(const std::string& model) {
   const ModelInfo& m = Info(model);
+  // blinn-phong's albedo climbs to sqrt(pi) at r = 1 with a curvature of ~70: 128 sqrt nodes
+  // (spacing 2 / 127 there) left 2e-3 of lookup error, so it gets 256 (a linear axis errs more
+  // near r = 0: 1e-2 in its first cell, measured).
+  if (model == "blinn-phong") return {"roughness", 0, 1, 256, Warp::Sqrt};
   for (const ParamInfo& p : m.params)
     if (p.name == "roughness")
       return m.specular() ? AxisSpec{"roughness", 0, p.hi, 128, Warp::Sqrt}
@@ -200,7 +222,7 @@ std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt) {
   out.push_back(FresnelAlbedoSpec(DefaultMuAxis("fresnel-albedo"), r3, DefaultEtaAxis()));
   out.push_back(FresnelAlbedoAvgSpec(rAvg, etaAvg));
   for (const char* m : kDiffuseModels) {
-    out.push_back(AlbedoSpec(m, {"mu", 0, 1, 64, Warp::Sqrt}, DefaultRoughnessAxis(m)));
+    out.push_back(AlbedoSpec(m, DiffuseMuAxis(m), DefaultRoughnessAxis(m)));
     out.push_back(AlbedoAvgSpec(m, DefaultRoughnessAxis(m)));
   }
   out.push_back(FresnelDielectricSpec(DefaultMuAxis("fresnel-dielectric"), {"eta", 1, 3, 128, Warp::Sqrt}));

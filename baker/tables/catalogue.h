@@ -36,6 +36,7 @@ TableSpec BrdfSpec(const std::string& model, double roughness, AxisSpec mu_l, Ax
 /// The catalogue's default axes (size and warp chosen per table kind).
 AxisSpec DefaultMuAxis(const std::string& quantity);
 AxisSpec DefaultRoughnessAxis(const std::string& model);
+AxisSpec DiffuseMuAxis(const std::string& model);
 AxisSpec DefaultEtaAxis();
 
 }  // namespace kiln

@@ -52,11 +52,30 @@ struct TableSpec {
 /// made by this version of kiln. Throws std::invalid_argument for unparseable params.
 TableSpec SpecFromTable(const Table& table);
 
-/// The exact channel values of `spec` at a point x (one coordinate per axis, axis order).
-/// Throws std::invalid_argument for an unknown quantity or model.
+/// The layer scale of a root4-layer axis 0 at the point x (kiln::layerScale of axis 1's value;
+/// 1e-12 for any other warp).
+double LayerScaleOf(const TableSpec& spec, const double* x);
+
+/// Coordinates of texel `index` (axis 0 fastest) at the nodes of the spec's axes; a root4-layer
+/// axis 0 places its nodes by the value of axis 1 (lut.h, Warp::Root4Layer).
+void NodeCoordinates(const TableSpec& spec, size_t index, double* x);
+
+/// True when the bake computes the table's texels with the fixed rule of
+/// integrate/fixed_rule_dfg.h (GGX dfg and albedo) instead of adaptive quadrature.
+bool UsesFixedRule(const TableSpec& spec);
+
+/// The absolute error a fixed-rule texel is declared to (before float rounding): the rule is
+/// tuned to 5e-7 over the 128 x 128 catalogue grid against adaptive quadrature at 1e-11, which
+/// tests/integrate_fixed_rule.cpp and tests/bake_tables.cpp re-check.
+constexpr double kFixedRuleBound = 6e-7;
+
+/// The channel values of `spec` at a point x (one coordinate per axis, axis order) by the
+/// table's own bake method: the fixed rule where UsesFixedRule, else adaptive quadrature to
+/// spec.tol. Throws std::invalid_argument for an unknown quantity or model.
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats);
 
-/// Same, with a different tolerance (references for the bake and lookup error checks).
+/// The same values by adaptive quadrature to `tol`, whatever the bake method (the independent
+/// references of the bake and lookup error checks).
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
                                  IntegrationStats& stats);
 

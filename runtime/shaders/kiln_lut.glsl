@@ -10,6 +10,7 @@
 //
 // Mapping (the same as kiln::Axis::gpuCoord in kiln/lut.h):
 //     t = warp((x - lo) / (hi - lo))   (log: t = ln(x / lo) / ln(hi / lo)), x clamped to [lo, hi]
+//                                      (root4-layer: also of c = max(x1^2, 1e-12), x1 axis 1's value)
 //     s = t * (size - 1)               continuous node index
 //     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
 //
@@ -26,6 +27,8 @@
 #define KILN_WARP_SQUARE 2
 #define KILN_WARP_LOG 3
 #define KILN_WARP_ROOT4 4
+#define KILN_WARP_ROOT4_LAYER 5  // axis 0 only: follows the value of axis 1 (kiln/lut.h)
+#define KILN_WARP_ANGLE 6
 
 struct KilnAxis {
     float lo;    // kiln.axis<i>.lo
@@ -34,25 +37,41 @@ struct KilnAxis {
     int warp;    // KILN_WARP_* from kiln.axis<i>.warp
 };
 
-// Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi].
-float kilnWarped(float x, KilnAxis a) {
+// Layer scale c = max(r^2, 1e-12) of a root4-layer axis 0, r the value of axis 1
+// clamped to that axis.
+float kilnLayerScale(float r, KilnAxis a1) {
+    float rc = clamp(r, a1.lo, a1.hi);
+    return max(rc * rc, 1e-12);
+}
+
+// Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi]. c: the layer
+// scale of a root4-layer axis (kilnLayerScale), ignored by the other warps.
+float kilnWarped(float x, KilnAxis a, float c) {
     float xc = clamp(x, a.lo, a.hi);
     if (a.warp == KILN_WARP_LOG) return clamp(log(xc / a.lo) / log(a.hi / a.lo), 0.0, 1.0);
     float y = (xc - a.lo) / (a.hi - a.lo);
     if (a.warp == KILN_WARP_SQRT) return sqrt(y);
     if (a.warp == KILN_WARP_SQUARE) return y * y;
     if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
+    if (a.warp == KILN_WARP_ANGLE) return 1.0 - acos(y) * 0.63661977236758134;  // 2 / pi
+    if (a.warp == KILN_WARP_ROOT4_LAYER) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
     return y;
 }
 
 // Continuous node index s = t * (size - 1) of x.
+float kilnTexel(float x, KilnAxis a, float c) {
+    return kilnWarped(x, a, c) * max(a.size - 1.0, 0.0);
+}
 float kilnTexel(float x, KilnAxis a) {
-    return kilnWarped(x, a) * max(a.size - 1.0, 0.0);
+    return kilnTexel(x, a, 1e-12);
 }
 
 // Texture coordinate (0.5 + s) / size of x, for hardware bilinear filtering.
+float kilnCoord(float x, KilnAxis a, float c) {
+    return (0.5 + kilnTexel(x, a, c)) / a.size;
+}
 float kilnCoord(float x, KilnAxis a) {
-    return (0.5 + kilnTexel(x, a)) / a.size;
+    return kilnCoord(x, a, 1e-12);
 }
 
 // 1D table (size0 x 1 image) at x.
@@ -62,7 +81,7 @@ vec4 kilnSample1D(sampler2D lut, float x, KilnAxis a0) {
 
 // 2D table at x = (x0, x1): one hardware bilinear fetch.
 vec4 kilnSample2D(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
-    return textureLod(lut, vec2(kilnCoord(x.x, a0), kilnCoord(x.y, a1)), 0.0);
+    return textureLod(lut, vec2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a1)), kilnCoord(x.y, a1)), 0.0);
 }
 
 // 3D table (slices along axis 2 stacked vertically) at x = (x0, x1, x2): a
@@ -70,7 +89,7 @@ vec4 kilnSample2D(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
 // never bleeds into the neighbouring slice: its v stays between the centres
 // of the slice's first and last rows.
 vec4 kilnSample3D(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    float u = kilnCoord(x.x, a0);
+    float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a1));
     float s1 = kilnTexel(x.y, a1);
     float s2 = kilnTexel(x.z, a2);
     float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
@@ -96,12 +115,12 @@ vec4 kilnBlendExact(sampler2D lut, vec2 p) {
 
 // As kilnSample2D, with the blend in full float precision.
 vec4 kilnSample2DExact(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
-    return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0), kilnTexel(x.y, a1)));
+    return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a1)), kilnTexel(x.y, a1)));
 }
 
 // As kilnSample3D, with the blends in full float precision.
 vec4 kilnSample3DExact(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    float s0 = kilnTexel(x.x, a0);
+    float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a1));
     float s1 = kilnTexel(x.y, a1);
     float s2 = kilnTexel(x.z, a2);
     float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));

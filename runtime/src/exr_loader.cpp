@@ -118,7 +118,7 @@ void readAttributes(const Imf::Header& h, Table& table) {
         const std::string warp = requireString(h, prefix + "warp");
         if (!warpFromName(warp.c_str(), a.axis.warp))
             throw Refusal(prefix + "warp is '" + warp +
-                          "', not one of linear, sqrt, square, log");
+                          "', not one of linear, sqrt, square, log, root4, root4-layer, angle");
         const std::string axisIssue = axisProblem(a.axis);
         if (!axisIssue.empty())
             throw Refusal("axis " + std::to_string(d) + " ('" + a.name + "'): " + axisIssue);
@@ -132,6 +132,8 @@ void readAttributes(const Imf::Header& h, Table& table) {
     table.lookupError.rms = optionalDouble(h, "kiln.lookup_error.rms", -1.0);
     table.lookupError.where = optionalString(h, "kiln.lookup_error.where");
     table.lookupError.filter = optionalString(h, "kiln.lookup_error.filter");
+    table.lookupError.cubicMax = optionalDouble(h, "kiln.lookup_error.cubic_max", -1.0);
+    table.lookupError.cubicRms = optionalDouble(h, "kiln.lookup_error.cubic_rms", -1.0);
     table.specHash = optionalString(h, "kiln.spec_hash");
 }
 
@@ -158,10 +160,65 @@ void checkChannels(const Imf::ChannelList& list, const std::vector<std::string>&
     }
 }
 
+/// Walks the attribute list of every header (OpenEXR file layout: magic, version word, then per
+/// part a list of name\0 type\0 int32-size value, ended by an empty name; a multi-part file
+/// ends its list of headers with one more empty name) and refuses an attribute whose declared
+/// size does not fit in the rest of the file. OpenEXR 3.1 allocates (and for strings fills) the
+/// declared size before it reads the value, so a 1 KB file declaring a 2 GB attribute would cost
+/// 2 GB before it fails: this check answers from the bytes that are there.
+void checkAttributeSizes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(0, std::ios::end);
+    const std::int64_t fileSize = static_cast<std::int64_t>(in.tellg());
+    in.seekg(0, std::ios::beg);
+    unsigned char start[8];
+    if (!in.read(reinterpret_cast<char*>(start), 8)) throw Refusal("truncated OpenEXR header");
+    const bool multiPart = (start[5] & 0x10) != 0;  // bit 12 of the version word
+    const std::size_t maxName = (start[5] & 0x04) != 0 ? 255 : 31;  // bit 10: long names
+    // Reads a \0-terminated string of at most maxName characters; false at an empty one.
+    auto readName = [&](std::string& name, const char* what) {
+        name.clear();
+        for (;;) {
+            const int ch = in.get();
+            if (ch == std::ifstream::traits_type::eof())
+                throw Refusal(std::string("truncated OpenEXR header (inside an attribute ") + what + ")");
+            if (ch == 0) return !name.empty();
+            if (name.size() >= maxName)
+                throw Refusal(std::string("corrupt OpenEXR header (an attribute ") + what +
+                              " longer than " + std::to_string(maxName) + " characters)");
+            name.push_back(static_cast<char>(ch));
+        }
+    };
+    std::string name, type;
+    for (int part = 0;; ++part) {
+        int attributes = 0;
+        while (readName(name, "name")) {
+            if (!readName(type, "type name"))
+                throw Refusal("corrupt OpenEXR header (attribute '" + name + "' has no type)");
+            unsigned char b[4];
+            if (!in.read(reinterpret_cast<char*>(b), 4)) throw Refusal("truncated OpenEXR header");
+            const std::int32_t size = static_cast<std::int32_t>(
+                std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
+                std::uint32_t{b[3]} << 24);
+            const std::int64_t left = fileSize - static_cast<std::int64_t>(in.tellg());
+            if (size < 0 || size > left)
+                throw Refusal("cannot read the OpenEXR header (truncated or corrupt file): attribute '" +
+                              name + "' declares " +
+                              std::to_string(size) + " bytes, the file has " + std::to_string(left) +
+                              " left");
+            in.seekg(size, std::ios::cur);
+            ++attributes;
+        }
+        if (!multiPart || attributes == 0) return;  // single part: one list; multi-part: empty header ends
+        if (part > 1024) throw Refusal("corrupt OpenEXR header (too many parts)");
+    }
+}
+
 /// Reads the whole table or throws.
 Table readTable(const std::string& path) {
     checkReadableFile(path);
     if (!Imf::isOpenExrFile(path.c_str())) throw Refusal("not an OpenEXR file");
+    checkAttributeSizes(path);
 
     std::unique_ptr<Imf::InputFile> file;
     try {

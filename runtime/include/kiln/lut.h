@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 
 namespace kiln {
 
@@ -27,7 +28,18 @@ namespace kiln {
 ///   Log:    t = ln(x / lo) / ln(hi / lo)  (nodes uniform in ln x; needs 0 < lo < hi)
 ///   Root4:  t = y^(1/4)  (nodes very dense near lo: a layer of width w at lo is
 ///                         resolved once w^(1/4) >> 4 / N)
-enum class Warp { Linear, Sqrt, Square, Log, Root4 };
+///   Root4Layer: t = (y^(1/4) + y (1 + c) / (y + c)) / 2, c = max(r^2, 1e-12), where r
+///           is the value of axis 1 (clamped to that axis). Only on axis 0 of a table
+///           of two or more axes, a view-cosine axis before a roughness axis: near
+///           grazing a microfacet albedo is a function of mu / alpha (alpha = r^2), a
+///           layer whose width goes to 0 with the roughness. The second term reaches
+///           half its range at y ~ c, so about a quarter of the nodes lie inside the
+///           layer at every roughness and the corner (mu, r) -> (0, 0) interpolates
+///           like the rest of the table; the first keeps root4's nodes in the bulk.
+///   Angle:  t = 1 - (2 / pi) acos(y)  (nodes uniform in the angle theta = acos(y):
+///                         a function of theta_o, smooth in the angle, has a square-root
+///                         point at y = 1 (mu = cos theta) that this resolves)
+enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle };
 
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log" or "root4".
 /// Returns "unknown" for a value outside the enumeration.
@@ -38,6 +50,8 @@ inline const char* warpName(Warp warp) noexcept {
         case Warp::Square: return "square";
         case Warp::Log: return "log";
         case Warp::Root4: return "root4";
+        case Warp::Root4Layer: return "root4-layer";
+        case Warp::Angle: return "angle";
     }
     return "unknown";
 }
@@ -47,7 +61,8 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
     if (name == nullptr) return false;
-    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4};
+    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4,
+                        Warp::Root4Layer, Warp::Angle};
     for (Warp candidate : all) {
         if (std::strcmp(name, warpName(candidate)) == 0) {
             warp = candidate;
@@ -66,9 +81,22 @@ inline bool warpFromName(const char* name, Warp& warp) noexcept {
 ///           An axis with fewer than 3 nodes is interpolated linearly.
 enum class Filter { Linear, Cubic };
 
+/// pi, for the Angle warp.
+constexpr double kPi = 3.14159265358979323846;
+
+/// The layer scale c = max(r^2, 1e-12) of the Root4Layer warp, from the value r
+/// of the axis it couples to (clamped to that axis; NaN maps to its lo).
+inline double layerScale(double lo, double hi, double r) noexcept {
+    const double rc = !(r > lo) ? lo : (!(r < hi) ? hi : r);
+    const double c = rc * rc;
+    return c > 1e-12 ? c : 1e-12;
+}
+
 /// One axis of a table: `size` nodes over [lo, hi] placed by `warp`.
 /// A plain aggregate; it is usable (valid()) when size >= 1, lo and hi are
 /// finite, lo < hi, and lo > 0 for the log warp.
+/// Every mapping takes the layer scale c of the Root4Layer warp (layerScale() of
+/// the coupled axis' value); the other warps ignore it.
 struct Axis {
     double lo = 0.0;
     double hi = 1.0;
@@ -85,23 +113,20 @@ struct Axis {
     /// lo * (hi / lo)^(i / (N - 1))). Exactly lo at i = 0 and exactly hi at
     /// i = N - 1; i is clamped to [0, N - 1]. An axis of size 1 has its single
     /// node at lo.
-    double node(int i) const noexcept {
+    double node(int i, double c = 1e-12) const noexcept {
         if (size <= 1 || i <= 0) return lo;
         if (i >= size - 1) return hi;
-        const double t = static_cast<double>(i) / static_cast<double>(size - 1);
-        switch (warp) {
-            case Warp::Linear: return lo + (hi - lo) * t;
-            case Warp::Sqrt: return lo + (hi - lo) * (t * t);
-            case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
-            case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
-            case Warp::Root4: return lo + (hi - lo) * ((t * t) * (t * t));
-        }
-        return lo;
+        return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c);
+    }
+
+    /// The Root4Layer warp of y in [0, 1] (see Warp).
+    static double layerWarp(double y, double c) noexcept {
+        return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
     }
 
     /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
     /// (clamp to edge); a NaN x maps to t = 0.
-    double warped(double x) const noexcept {
+    double warped(double x, double c = 1e-12) const noexcept {
         if (!(x > lo)) return 0.0;  // also catches NaN
         if (!(x < hi)) return 1.0;
         double t = 0.0;
@@ -115,22 +140,35 @@ struct Axis {
             }
             case Warp::Log: t = std::log(x / lo) / std::log(hi / lo); break;
             case Warp::Root4: t = std::sqrt(std::sqrt((x - lo) / (hi - lo))); break;
+            case Warp::Root4Layer: t = layerWarp((x - lo) / (hi - lo), c); break;
+            case Warp::Angle: t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi); break;
         }
         if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
         return t < 1.0 ? t : 1.0;
     }
 
     /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
-    /// (t is clamped). node(i) == unwarped(i / (N - 1)) up to rounding.
-    double unwarped(double t) const noexcept {
+    /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
+    /// form: bisection on y to the last bit (monotone, so deterministic).
+    double unwarped(double t, double c = 1e-12) const noexcept {
         if (!(t > 0.0)) return lo;
         if (!(t < 1.0)) return hi;
         switch (warp) {
+            case Warp::Root4Layer: {
+                double ya = 0.0, yb = 1.0;
+                for (int k = 0; k < 200; ++k) {
+                    const double ym = 0.5 * (ya + yb);
+                    if (ym <= ya || ym >= yb) break;
+                    (layerWarp(ym, c) < t ? ya : yb) = ym;
+                }
+                return lo + (hi - lo) * yb;
+            }
             case Warp::Linear: return lo + (hi - lo) * t;
             case Warp::Sqrt: return lo + (hi - lo) * (t * t);
             case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
             case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
             case Warp::Root4: return lo + (hi - lo) * ((t * t) * (t * t));
+            case Warp::Angle: return lo + (hi - lo) * std::sin(t * (kPi / 2.0));
         }
         return lo;
     }
@@ -140,9 +178,9 @@ struct Axis {
     /// snapped onto it, so texel(node(i)) == i exactly despite the rounding of
     /// the warp round trip, and a lookup at a node returns the stored value bit
     /// for bit. Always 0 on an axis of size 1.
-    double texel(double x) const noexcept {
+    double texel(double x, double c = 1e-12) const noexcept {
         if (size <= 1) return 0.0;
-        const double s = warped(x) * static_cast<double>(size - 1);
+        const double s = warped(x, c) * static_cast<double>(size - 1);
         const double nearest = std::floor(s + 0.5);
         return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
     }
@@ -150,9 +188,9 @@ struct Axis {
     /// Texture coordinate of x for hardware bilinear filtering of a texture of
     /// `size` texels with texel centres at (i + 0.5) / size:
     /// (0.5 + texel(x)) / size. Lies in [0.5 / N, 1 - 0.5 / N].
-    double gpuCoord(double x) const noexcept {
+    double gpuCoord(double x, double c = 1e-12) const noexcept {
         const int n = size > 1 ? size : 1;
-        return (0.5 + texel(x)) / static_cast<double>(n);
+        return (0.5 + texel(x, c)) / static_cast<double>(n);
     }
 };
 
@@ -181,13 +219,22 @@ struct LutView {
                static_cast<std::size_t>(channels > 0 ? channels : 0);
     }
 
-    /// True when data is set, channels >= 1, dims is 1..3 and every used axis
-    /// is valid(). sample() and at() return zeros on an invalid view.
+    /// True when data is set, channels >= 1, dims is 1..3, every used axis is
+    /// valid(), and a Root4Layer warp sits only on axis 0 of a view of 2+ axes.
+    /// sample() and at() return zeros on an invalid view.
     bool valid() const noexcept {
         if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
-        for (int d = 0; d < dims; ++d)
+        for (int d = 0; d < dims; ++d) {
             if (!axis[d].valid()) return false;
+            if (axis[d].warp == Warp::Root4Layer && (d != 0 || dims < 2)) return false;
+        }
         return true;
+    }
+
+    /// The layer scale of axis 0 at the point x (Root4Layer; 1e-12 otherwise).
+    double layerScaleAt(const double* x) const noexcept {
+        if (dims < 2 || axis[0].warp != Warp::Root4Layer) return 1e-12;
+        return layerScale(axis[1].lo, axis[1].hi, x[1]);
     }
 
     /// Stored value of channel c at node (i0, i1, i2). Indices are clamped to
@@ -210,8 +257,9 @@ struct LutView {
             return;
         }
         Stencil stencil[3];
+        const double c = layerScaleAt(x);
         for (int d = 0; d < 3; ++d) {
-            if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter);
+            if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c);
         }
         for (int c = 0; c < channels; ++c) {
             double sum = 0.0;
@@ -235,6 +283,11 @@ struct LutView {
                     }
                 }
             }
+            // A cubic may overshoot its nodes; near the largest float that would round to
+            // infinity, so the result saturates at the largest finite float instead.
+            const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+            if (sum > fmax) sum = fmax;
+            if (sum < -fmax) sum = -fmax;
             out[c] = static_cast<float>(sum);
         }
     }
@@ -258,11 +311,11 @@ private:
                static_cast<std::size_t>(channels);
     }
 
-    static Stencil makeStencil(const Axis& a, double x, Filter filter) noexcept {
+    static Stencil makeStencil(const Axis& a, double x, Filter filter, double c) noexcept {
         Stencil st;
         const int n = a.size;
         if (n <= 1) return st;  // single node, weight 1
-        const double s = a.texel(x);
+        const double s = a.texel(x, c);
         int i = static_cast<int>(std::floor(s));
         if (i > n - 2) i = n - 2;
         if (i < 0) i = 0;

@@ -28,6 +28,8 @@ struct LookupError {
     double rms = -1.0;   ///< rms of the same
     std::string where;   ///< where the max was found, free text
     std::string filter;  ///< filter it was measured with: "linear" or "cubic"
+    double cubicMax = -1.0;  ///< the same max with the cubic filter (informative, not a bound)
+    double cubicRms = -1.0;  ///< rms with the cubic filter
 };
 
 /// A kiln table: metadata and texels. A plain value; validateTable says

@@ -1,0 +1,212 @@
+// Stress: hostile command-line arguments. Unknown models and tables, out-of-range values, sizes
+// of 0 and absurd sizes, NaN and infinities, malformed numbers: every command answers with one
+// clear line on stderr naming the problem, nothing on stdout and a non-zero exit that is not a
+// signal. tests/cli_contract.cpp and tests/cli_bake.cpp hold the first few cases of each command;
+// these are the edges around them.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+
+#include "stress_util.h"
+
+using namespace kiln::stress;
+
+
+namespace {
+
+struct Case {
+  std::string args;
+  std::string expected;  ///< a substring the one-line error must contain
+};
+
+void CheckRefused(const std::vector<Case>& cases) {
+  for (const Case& c : cases) {
+    auto r = RunKilnFor(60, c.args);
+    INFO("kiln " << c.args << "\n  exit " << r.exitCode << "\n  stdout: " << r.out << "\n  stderr: " << r.err);
+    CHECK(IsCleanRefusal(r));
+    CHECK(r.err.find(c.expected) != std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("kiln eval refuses unknown models and NaN, infinite or out-of-range arguments",
+          "[stress][hostile][cli]") {
+  const std::string pair = " --mu-o 0.5 --mu-l 0.5";
+  CheckRefused({
+      {"eval --model nope" + pair, "unknown model 'nope'"},
+      {"eval --model ''" + pair, "unknown model ''"},
+      {"eval --model GGX" + pair, "unknown model 'GGX'"},
+      {"eval --model ggx --mu-o nan --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx --mu-o 0.5 --mu-l inf", "--mu-l"},
+      {"eval --model ggx --mu-o -1e-300 --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx --mu-o 1e999 --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx --mu-o 0x10 --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx --mu-o 0.5.5 --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx" + pair + " --phi nan", "--phi"},
+      {"eval --model ggx" + pair + " --phi -inf", "--phi"},
+      {"eval --model ggx" + pair + " --roughness nan", "roughness"},
+      {"eval --model ggx" + pair + " --roughness -1e-9", "roughness"},
+      {"eval --model oren-nayar" + pair + " --roughness 1.5708", "roughness"},  // just above pi/2
+      {"eval --model lambert" + pair + " --rho nan", "rho"},
+      {"eval --model lambert" + pair + " --rho 1.0000001", "rho"},
+      {"eval --model ggx" + pair + " --eta 0", "eta"},
+      {"eval --model ggx" + pair + " --eta inf", "eta"},
+      {"eval --model ggx" + pair + " --eta 1.5 --k -1", "k"},
+      {"eval --model ggx" + pair + " --eta 1.5 --k nan", "k"},
+      {"eval --model ggx" + pair + " --k 3", "k needs eta"},
+      {"eval --model ggx" + pair + " --f0 0.04 --eta 1.5", "not both"},
+      {"eval --model ggx" + pair + " --f0 nan", "f0"},
+      {"eval --model ashikhmin-shirley" + pair + " --nu 1e8", "nu"},
+      {"eval --model ashikhmin-shirley" + pair + " --nv -1", "nv"},
+      {"eval --model triace-lambert" + pair + " --rs inf", "rs"},
+      {"eval --model ggx" + pair + " --nu 5", "takes no parameter 'nu'"},
+      {"eval --model ggx" + pair + " --bogus 1", "--bogus"},
+  });
+}
+
+TEST_CASE("kiln integrate refuses NaN, infinite and absurd tolerances, indices and angles",
+          "[stress][hostile][cli]") {
+  CheckRefused({
+      {"integrate albedo --model ggx --mu nan", "--mu"},
+      {"integrate albedo --model ggx --mu -inf", "--mu"},
+      {"integrate dfg --model ggx --mu 1.0000001", "--mu"},
+      {"integrate albedo --model ggx --mu 0.5 --tol nan", "--tol"},
+      {"integrate albedo --model ggx --mu 0.5 --tol 0", "--tol"},
+      {"integrate albedo --model ggx --mu 0.5 --tol -1e-9", "--tol"},
+      {"integrate albedo --model ggx --mu 0.5 --tol inf", "--tol"},
+      {"integrate albedo-avg --model burley --roughness nan", "roughness"},
+      {"integrate albedo-avg --model nope", "unknown model 'nope'"},
+      {"integrate fresnel-avg --eta nan", "--eta"},
+      {"integrate fresnel-avg --eta 0", "--eta"},
+      {"integrate fresnel-avg --eta -1.5", "--eta"},
+      {"integrate fresnel-avg --eta inf", "--eta"},
+      {"integrate fresnel-avg --eta 1e300", "--eta"},
+      {"integrate fresnel-avg --eta 1.5 --k nan", "--k"},
+      {"integrate fresnel-avg --eta 1.5 --k 1e300", "--k"},
+      {"integrate fresnel-avg --eta 1.5 --model ggx", "takes no --model"},
+      {"integrate ALBEDO --model ggx --mu 0.5", "ALBEDO"},
+  });
+}
+
+TEST_CASE("kiln bake refuses unknown tables, absurd sizes and thread counts, NaN roughness, and an "
+          "output folder it cannot write",
+          "[stress][hostile][cli][bake]") {
+  ScratchDir dir("hostile_args");
+  std::string out = " --out " + Quote(dir / "out");
+  WriteFile(dir / "a-file", "not a folder");
+  CheckRefused({
+      {"bake --only ggx-dfg,,lambert-albedo --size 3" + out, "unknown table ''"},
+      {"bake --only GGX-DFG" + out, "unknown table 'GGX-DFG'"},
+      {"bake --only 'ggx-dfg;rm -rf /'" + out, "unknown table"},
+      {"bake --only lambert-albedo --size 1" + out, "--size 1"},
+      {"bake --only lambert-albedo --size -3" + out, "--size"},
+      {"bake --only lambert-albedo --size 4097" + out, "--size 4097"},
+      {"bake --only lambert-albedo --size 99999999999" + out, "--size"},
+      {"bake --only lambert-albedo --size nan" + out, "--size"},
+      {"bake --only lambert-albedo --size 2.5" + out, "--size"},
+      // 4096^3 texels: refused before any work is done.
+      {"bake --only ggx-fresnel-albedo --size 4096" + out, "too many"},
+      {"bake --only lambert-albedo -j 1025" + out, "-j"},
+      {"bake --only lambert-albedo -j nan" + out, "--threads"},
+      {"bake --only oren-nayar-brdf --roughness nan" + out, "--roughness"},
+      {"bake --only oren-nayar-brdf --roughness inf" + out, "--roughness"},
+      {"bake --only oren-nayar-brdf --roughness -0.0001" + out, "--roughness"},
+      {"bake --only lambert-albedo --size 3 --out " + Quote(dir / "a-file"), "a-file"},
+      {"bake --only lambert-albedo --size 3 --out " + Quote(dir / "a-file/below"), "a-file/below"},
+      {"bake --only lambert-albedo --size 3 --out /proc/kiln-cannot-write-here", "/proc/kiln-cannot-write-here"},
+      {"bake --scene" + out, "not expected"},
+      {"bake --scene x.gltf --only lambert-albedo" + out, "not both"},
+  });
+  // Nothing was written by any of them.
+  CHECK((!std::filesystem::exists(dir / "out") || std::filesystem::is_empty(dir / "out")));
+}
+
+TEST_CASE("kiln sample, verify and plan refuse absurd numbers", "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_args_tables");
+  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  std::string table = Quote(dir / "fresnel-dielectric.exr");
+  std::string scene = Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
+  CheckRefused({
+      {"sample " + table, "coords"},
+      {"sample " + table + " 0.5 nan", "finite"},
+      {"sample " + table + " 0.5 1e999", "finite"},
+      {"verify " + table + " --points -1", "--points"},
+      {"verify " + table + " --points nan", "--points"},
+      {"verify " + table + " --points 1e20", "--points"},
+      {"verify " + table + " --cells -1", "--cells"},
+      {"verify " + table + " --tol 0", "--tol"},
+      {"verify " + table + " --tol nan", "--tol"},
+      {"verify " + table + " --tol 1", "--tol"},
+      {"verify", "paths"},
+      {"plan " + scene + " --size 1", "--size 1"},
+      {"plan " + scene + " --size 5000", "--size 5000"},
+      {"plan " + scene + " --size nan", "--size"},
+      {"plan", "scene"},
+      {"frobnicate", "subcommand"},
+      {"", "subcommand"},
+      {"list --all-of-them", "--all-of-them"},
+  });
+}
+
+// CLI11 2.1 would convert an empty string to 0 for a numeric option (`kiln eval --model ggx
+// --mu-o ''` would print f at mu_o = 0): every numeric option and argument of every command
+// refuses an empty or non-numeric value with one line naming it (RefuseNonNumbers in
+// baker/cli/model_options.cpp).
+TEST_CASE("An empty numeric argument is refused, not read as 0", "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_args_empty");
+  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  std::string table = Quote(dir / "fresnel-dielectric.exr");
+  std::string scene = Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
+  std::string out = " --out " + Quote(dir / "out");
+  CheckRefused({
+      {"eval --model ggx --mu-o '' --mu-l 0.5", "--mu-o"},
+      {"eval --model ggx --mu-o 0.5 --mu-l ''", "--mu-l"},
+      {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --phi ''", "--phi"},
+      {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --roughness ''", "--roughness"},
+      {"eval --model lambert --mu-o 0.5 --mu-l 0.5 --rho ''", "--rho"},
+      {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --f0 ' '", "--f0"},
+      {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --eta ''", "--eta"},
+      {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --eta 1.5 --k ''", "--k"},
+      {"eval --model triace-lambert --mu-o 0.5 --mu-l 0.5 --rs ''", "--rs"},
+      {"eval --model ashikhmin-shirley --mu-o 0.5 --mu-l 0.5 --nu ''", "--nu"},
+      {"eval --model ashikhmin-shirley --mu-o 0.5 --mu-l 0.5 --nv abc", "--nv"},
+      {"integrate albedo --model ggx --mu ''", "--mu"},
+      {"integrate albedo --model ggx --mu 0.5 --tol ''", "--tol"},
+      {"integrate fresnel-avg --eta ''", "--eta"},
+      {"bake --only lambert-albedo --size ''" + out, "--size"},
+      {"bake --only lambert-albedo -j ''" + out, "--threads"},
+      {"bake --only oren-nayar-brdf --roughness ''" + out, "--roughness"},
+      {"sample " + table + " '' 1.5", "coords"},
+      {"sample " + table + " 0.5 x", "coords"},
+      {"verify " + table + " --points ''", "--points"},
+      {"verify " + table + " --cells ''", "--cells"},
+      {"verify " + table + " --tol ''", "--tol"},
+      {"verify " + table + " -j ''", "--threads"},
+      {"plan " + scene + " --size ''", "--size"},
+      {"bench -j ''" + out, "--threads"},
+  });
+  CHECK((!std::filesystem::exists(dir / "out") || std::filesystem::is_empty(dir / "out")));
+}
+
+// An empty --only ('') names no table, and an empty --scene no file: both are refused, never
+// taken as not given (which would bake the whole catalogue, hours); each run is killed after 20 s.
+TEST_CASE("kiln bake --only '' is refused, not the whole catalogue", "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_args_only");
+  for (const std::string option : {"--only", "--scene"}) {
+    auto r = RunKilnFor(20, "bake " + option + " '' --out " + Quote(dir / "out"));
+    INFO("bake " << option << " '': exit " << r.exitCode << ", stderr: " << r.err);
+    CHECK(IsCleanRefusal(r));
+    CHECK(r.err.find(option) != std::string::npos);
+  }
+  CHECK((!std::filesystem::exists(dir / "out") || std::filesystem::is_empty(dir / "out")));
+}
+
+// kiln verify checks -j like kiln bake and kiln bench (0: all cores, else [1, 1024]): -j
+// 1000000000 would make tbb::task_arena crash the process, and -j -3 is no thread count.
+TEST_CASE("kiln verify refuses absurd thread counts", "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_args_verify");
+  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  std::string table = Quote(dir / "fresnel-dielectric.exr");
+  CheckRefused({{"verify " + table + " --points 1 -j 1000000000", "-j"}, {"verify " + table + " --points 1 -j -3", "-j"}});
+}
