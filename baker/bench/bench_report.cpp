@@ -18,6 +18,8 @@ struct Style {
 
 Style MethodStyle(const std::string& method) {
   if (method == "kiln") return {"kiln, adaptive Gauss-Kronrod (label: tol)", "#d62728", Marker::Circle};
+  if (method == "kiln-fixed-rule")
+    return {"kiln, fixed visible-normal rule (label: declared error)", "#d62728", Marker::Diamond};
   if (method == "mc-hammersley")
     return {"Monte Carlo, Hammersley + imp. sampling (samples)", "#1f77b4", Marker::Square};
   return {"Gauss-Legendre n x n, same map (points)", "#2ca02c", Marker::Triangle};
@@ -69,7 +71,7 @@ std::string BenchSvg(const std::vector<BenchRow>& rows) {
   for (const std::string& table : sweep) {
     PlotPanel p;
     std::string size;
-    for (const char* method : {"kiln", "mc-hammersley", "gauss-legendre"}) {
+    for (const char* method : {"kiln", "kiln-fixed-rule", "mc-hammersley", "gauss-legendre"}) {
       Style st = MethodStyle(method);
       PlotSeries s{st.name, st.colour, st.marker, false, {}};
       for (const BenchRow& r : rows)
@@ -120,12 +122,16 @@ std::string BenchSvg(const std::vector<BenchRow>& rows) {
 std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
   std::vector<std::string> out;
   const double nan = NAN;
+  // "tol 1e-06" for an adaptive kiln row, "the fixed rule" for the fixed one.
+  auto how = [](const BenchRow& k) {
+    return k.method == "kiln-fixed-rule" ? std::string("the fixed rule") : "tol " + Short(k.setting);
+  };
   for (const std::string& table : Tables(rows, "sweep")) {
     const BenchRow* mc = Find(rows, "sweep", table, "mc-hammersley", 1024);
     std::vector<const BenchRow*> kiln, mcs, gls;
     for (const BenchRow& r : rows)
       if (r.section == "sweep" && r.table == table) {
-        if (r.method == "kiln") kiln.push_back(&r);
+        if (r.method == "kiln" || r.method == "kiln-fixed-rule") kiln.push_back(&r);
         if (r.method == "mc-hammersley") mcs.push_back(&r);
         if (r.method == "gauss-legendre") gls.push_back(&r);
       }
@@ -144,7 +150,7 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
           break;
         }
       if (match) {
-        line += " kiln reaches that error (or less) fastest at tol " + Short(match->setting) + ": " +
+        line += " kiln reaches that error (or less) fastest with " + how(*match) + ": " +
                 Errors(*match) + " = " + Fmt("%.3g", match->seconds / mc->seconds) + "x the MC time;";
         // Equal error: where the MC rows' error-time line (least squares in log-log over the
         // rows with >= 1024 samples) reaches that kiln row's max error. An extrapolation.
@@ -167,14 +173,14 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
         }
       }
     }
-    line += " kiln's best: tol " + Short(best->setting) + ", " + Errors(*best) + ";";
+    line += " kiln's best: " + how(*best) + ", " + Errors(*best) + ";";
     if (!mcs.empty()) {
       const BenchRow* m = *std::min_element(mcs.begin(), mcs.end(), byError);
       line += " best MC (" + Short(m->setting) + " samples) " + Errors(*m) + ";";
       // Measured, no extrapolation: the fastest kiln row at least as accurate as MC's best.
       for (const BenchRow* k : kiln)
         if (k->bakeMax <= m->bakeMax) {
-          line += " kiln beats that at tol " + Short(k->setting) + " in " + Fmt("%.3g", k->seconds) +
+          line += " kiln beats that with " + how(*k) + " in " + Fmt("%.3g", k->seconds) +
                   " s (" + Fmt("%.2g", k->seconds / m->seconds) + "x the time, " +
                   Fmt("%.2g", m->bakeMax / k->bakeMax) + "x smaller max error);";
           break;

@@ -169,7 +169,7 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
     double tolHere = innerTol / (2 * jac * panels);
     return (2 * jac) * IntegrateAdaptive<N>(inner, phis, np, tolHere, opt.maxPanels);
   };
-  double xs[24];
+  double xs[32];
   for (int i = 0; i <= panels; ++i) xs[i] = i;
   double err = 0;
   Channels<N> r = IntegrateAdaptive<N>(outer, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);

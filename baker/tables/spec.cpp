@@ -138,9 +138,9 @@ bool UsesFixedRule(const TableSpec& spec) {
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   if (!UsesFixedRule(spec)) return EvaluateSpec(spec, x, spec.tol, stats);
-  // alpha as MakeModel derives it from the roughness (clamped to the model's range).
-  AnyModel model = MakeModel("ggx", WithRoughness("ggx", x[1]));
-  double alpha = std::get<MicrofacetBRDF<GGXDistribution>>(model).dist.alpha;
+  // alpha as MakeModel("ggx") derives it from the roughness clamped to ggx's range [0, 1]
+  // (tests/integrate_fixed_rule.cpp compares against the adaptive path, which calls MakeModel).
+  double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
   std::array<double, 2> ab = FixedRuleGGXDFG(Clamp(x[0], 0.0, 1.0), alpha, {}, &stats.evals);
   stats.errorEstimate = kFixedRuleBound;
   if (spec.quantity == "albedo") return {ab[0] + ab[1]};  // F = 1: A + B is the albedo

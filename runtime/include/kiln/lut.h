@@ -149,19 +149,37 @@ struct Axis {
 
     /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
     /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
-    /// form: bisection on y to the last bit (monotone, so deterministic).
+    /// form: safeguarded Newton to the last bits (deterministic).
     double unwarped(double t, double c = 1e-12) const noexcept {
         if (!(t > 0.0)) return lo;
         if (!(t < 1.0)) return hi;
         switch (warp) {
             case Warp::Root4Layer: {
-                double ya = 0.0, yb = 1.0;
+                // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
+                // smooth with slope >= 1/2, safeguarded as rtsafe (Numerical Recipes 9.4): a
+                // bisection of the bracket [sa, sb] whenever a step would leave it or would not
+                // halve the step before, so it cannot cycle. Deterministic, to the last bits.
+                double sa = 0.0, sb = 1.0, s = t, step = 1.0, stepBefore = 1.0;
                 for (int k = 0; k < 200; ++k) {
-                    const double ym = 0.5 * (ya + yb);
-                    if (ym <= ya || ym >= yb) break;
-                    (layerWarp(ym, c) < t ? ya : yb) = ym;
+                    const double s4 = (s * s) * (s * s);
+                    const double r = 0.5 * (s + s4 * (1.0 + c) / (s4 + c)) - t;
+                    if (r == 0.0) break;
+                    (r < 0.0 ? sa : sb) = s;
+                    const double q = (s4 + c) * (s4 + c);
+                    const double slope = 0.5 * (1.0 + 4.0 * (1.0 + c) * c * (s * s * s) / q);
+                    double next = s - r / slope;
+                    stepBefore = step;
+                    if (!(next > sa && next < sb) || std::fabs(2.0 * r) > std::fabs(stepBefore * slope)) {
+                        step = 0.5 * (sb - sa);
+                        next = sa + step;
+                    } else {
+                        step = r / slope;
+                    }
+                    const bool done = std::fabs(next - s) <= 1e-16 * next || !(sb > sa);
+                    s = next;
+                    if (done) break;
                 }
-                return lo + (hi - lo) * yb;
+                return lo + (hi - lo) * ((s * s) * (s * s));
             }
             case Warp::Linear: return lo + (hi - lo) * t;
             case Warp::Sqrt: return lo + (hi - lo) * (t * t);
