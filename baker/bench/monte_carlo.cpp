@@ -120,29 +120,6 @@ PointSet HammersleyPoints(int n) {
   return p;
 }
 
-void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
-  nodes.assign(n, 0);
-  weights.assign(n, 0);
-  for (int i = 0; i < n; ++i) {
-    // Newton on P_n from Tricomi's first guess; converges in a few steps for every root.
-    double x = std::cos(Pi * (i + 0.75) / (n + 0.5)), dp = 1;
-    for (int it = 0; it < 100; ++it) {
-      double p0 = 1, p1 = x;
-      for (int k = 2; k <= n; ++k) {
-        double pk = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-        p0 = p1;
-        p1 = pk;
-      }
-      dp = n * (x * p1 - p0) / (x * x - 1);
-      double dx = p1 / dp;
-      x -= dx;
-      if (std::abs(dx) < 1e-16) break;
-    }
-    nodes[n - 1 - i] = (1 + x) / 2;
-    weights[n - 1 - i] = 1 / ((1 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
-  }
-}
-
 PointSet GaussLegendrePoints(int n) {
   std::vector<double> x, w;
   GaussLegendre01(n, x, w);

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "baker/bake/bake.h"
+#include "baker/math/quadrature.h"  // GaussLegendre01
 #include "baker/models/registry.h"
 #include "baker/tables/spec.h"
 
@@ -50,9 +51,6 @@ PointSet HammersleyPoints(int n);
 
 /// The n x n Gauss-Legendre product rule on the unit square (N = n^2 points).
 PointSet GaussLegendrePoints(int n);
-
-/// Nodes and weights of the n-point Gauss-Legendre rule on [0, 1] (Newton on P_n, double).
-void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 /// One texel's estimates (the table bake below runs the same code). alpha is the GGX alpha.
 std::array<double, 2> EstimateDFG(const PointSet& points, double mu, double alpha);

@@ -74,6 +74,7 @@
 #include <immintrin.h>
 #endif
 
+#include "baker/math/quadrature.h"
 #include "baker/models/roughness.h"
 
 namespace kiln {
@@ -120,23 +121,10 @@ const GaussRule& Gauss(int n) {
     std::vector<GaussRule> r(kMaxNodes + 1);
     for (int n = 1; n <= kMaxNodes; ++n) {
       r[n].n = n;
-      for (int i = 0; i < n; ++i) {
-        double x = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1;
-        for (int it = 0; it < 100; ++it) {
-          double p0 = 1, p1 = x;
-          for (int k = 2; k <= n; ++k) {
-            double pk = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
-            p0 = p1;
-            p1 = pk;
-          }
-          dp = n * (x * p1 - p0) / (x * x - 1);
-          double dx = p1 / dp;
-          x -= dx;
-          if (std::abs(dx) < 1e-16) break;
-        }
-        r[n].x[n - 1 - i] = (1 + x) / 2;
-        r[n].w[n - 1 - i] = 1 / ((1 - x * x) * dp * dp);
-      }
+      std::vector<double> x, w;
+      GaussLegendre01(n, x, w);
+      std::copy(x.begin(), x.end(), r[n].x);
+      std::copy(w.begin(), w.end(), r[n].w);
     }
     return r;
   }();

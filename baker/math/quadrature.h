@@ -11,6 +11,30 @@ namespace kiln {
 template <int N>
 using Channels = std::array<double, N>;
 
+/// Nodes (ascending) and weights of the n-point Gauss-Legendre rule on [0, 1]: Newton on P_n
+/// from Tricomi's first guess, in double; the weights sum to 1.
+inline void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+  nodes.assign(n, 0);
+  weights.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    double x = std::cos(3.14159265358979323846 * (i + 0.75) / (n + 0.5)), dp = 1;
+    for (int it = 0; it < 100; ++it) {
+      double p0 = 1, p1 = x;
+      for (int k = 2; k <= n; ++k) {
+        double pk = ((2 * k - 1) * x * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = pk;
+      }
+      dp = n * (x * p1 - p0) / (x * x - 1);
+      double dx = p1 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) break;
+    }
+    nodes[n - 1 - i] = (1 + x) / 2;
+    weights[n - 1 - i] = 1 / ((1 - x * x) * dp * dp);  // 2 / ((1 - x^2) P'^2), halved for [0, 1]
+  }
+}
+
 template <std::size_t N>
 std::array<double, N>& operator+=(std::array<double, N>& a, const std::array<double, N>& b) {
   for (std::size_t c = 0; c < N; ++c) a[c] += b[c];
