@@ -160,8 +160,10 @@ void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, i
   table.lookupError.where = buf;
 }
 
-void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header) {
-  writeTable(dir + "/" + table.name + ".exr", table, half);
+void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header,
+                     int threads) {
+  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  writeTable(dir + "/" + table.name + ".exr", table, half, threads);
   if (header) writeCppHeader(dir + "/" + table.name + ".h", table);
 }
 

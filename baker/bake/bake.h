@@ -29,8 +29,10 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats 
 /// (kDeclaredBoundMargin x the measured max) and the rms.
 void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, int threads);
 
-/// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically.
-void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header);
+/// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically; the EXR's
+/// blocks are compressed on `threads` threads (0: all cores; same bytes for any count).
+void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header,
+                     int threads = 1);
 
 /// The spec hash stored in DIR/<name>.exr, or "" when the file is missing or not a kiln table.
 std::string StoredSpecHash(const std::string& exrPath);

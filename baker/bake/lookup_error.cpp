@@ -31,6 +31,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   std::vector<double> err(total, 0);
   std::vector<char> inCorner(total, 0);
   std::vector<double> errCubic(alsoCubic ? total : 0, 0);
+  const bool layered = spec.axes[0].warp == Warp::Root4Layer;
   auto point = [&](size_t i, double* x) {
     size_t k = i < cells ? i * allCells / cells : 0;  // evenly strided when cells < allCells
     uint64_t s = 0x9E3779B97F4A7C15ull * (i - cells + 1);
@@ -48,10 +49,11 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
         s ^= s >> 29;
         texel = static_cast<double>(s >> 11) * (1.0 / 9007199254740992.0) * cellsHere;
       }
-      x[d] = ax.size > 1 ? ax.unwarped(texel / (ax.size - 1)) : ax.lo;
       if (d == 0) t0 = ax.size > 1 ? texel / (ax.size - 1) : 0;
+      // (a root4-layer axis 0 is placed below, once, by the value of axis 1)
+      if (d != 0 || !layered) x[d] = ax.size > 1 ? ax.unwarped(texel / (ax.size - 1)) : ax.lo;
     }
-    if (spec.axes[0].warp == Warp::Root4Layer) x[0] = spec.axes[0].ToAxis().unwarped(t0, LayerScaleOf(spec, x));
+    if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t0, LayerScaleOf(spec, x));
   };
   int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   tbb::task_arena arena(n);

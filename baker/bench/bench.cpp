@@ -324,7 +324,7 @@ class Bench {
     Measured whole = TimeRuns([&](long long& evals) {
       BakeStats st;
       Table t = BakeTable(spec, bo, &st);
-      WriteBakedTable(dir, t, false, false);
+      WriteBakedTable(dir, t, false, false, threads);
       evals = st.evals;
       lookupSeconds = st.lookupSeconds;
       return t;

@@ -82,7 +82,7 @@ void RegisterBake(CLI::App& app) {
     for (const TableSpec& spec : specs) {
       BakeStats stats;
       Table t = BakeTable(spec, bopt, &stats);
-      WriteBakedTable(args->out, t, args->half, args->header);
+      WriteBakedTable(args->out, t, args->half, args->header, args->threads);
       if (tty)
         std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n", t.name.c_str(),
                     stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError, t.lookupError.max);

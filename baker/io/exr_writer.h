@@ -23,8 +23,12 @@ void setKilnAttributes(Imf::Header& header, const Table& table);
 /// place; on any error the temporary file is removed, an existing file at
 /// `path` is left intact, and std::runtime_error is thrown with a one-line
 /// message. Refuses a table that fails validateTable, and in half mode a
-/// texel whose magnitude exceeds the largest half (65504). The temporary file
-/// is read back with loadTable before the rename.
-void writeTable(const std::string& path, const Table& table, bool half);
+/// texel whose magnitude exceeds the largest half (65504). Before the rename the
+/// temporary file is reopened and must be complete (header and every line
+/// offset readable): OpenEXR writes the offsets in a destructor that swallows
+/// errors such as a full disk. `threads` > 1 compresses the line blocks on
+/// OpenEXR's global thread pool (grown to that size); the bytes do not depend
+/// on it.
+void writeTable(const std::string& path, const Table& table, bool half, int threads = 1);
 
 }  // namespace kiln

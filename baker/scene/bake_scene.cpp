@@ -34,7 +34,7 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOpt
     }
     BakeStats stats;
     Table table = BakeTable(spec, opt, &stats);
-    WriteBakedTable(dir, table, half, header);
+    WriteBakedTable(dir, table, half, header, opt.threads);
     if (log) {
       std::fprintf(log, "baked   %-36s %8zu texels %8.2f s", spec.name.c_str(), spec.TexelCount(),
                    stats.seconds + stats.lookupSeconds);

@@ -69,6 +69,8 @@ std::string TableSpec::Method() const {
 std::string TableSpec::Hash() const {
   std::string text = std::string(kIntegratorVersion) + "|" + std::to_string(kFormatVersion) + "|" +
                      name + "|" + model + "|" + quantity + "|" + G17(tol) + "|" + ParamsText();
+  // The fixed rule's own version (its tuned node counts): its tables re-bake when it changes.
+  if (UsesFixedRule(*this)) text += "|fixed-rule:2";
   for (const std::string& c : channels) text += "|c:" + c;
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
@@ -119,16 +121,17 @@ double LayerScaleOf(const TableSpec& spec, const double* x) {
 }
 
 void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
+  // A root4-layer axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative).
+  const bool layered = !spec.axes.empty() && spec.axes[0].warp == Warp::Root4Layer;
   int i0 = 0;
   for (size_t d = 0; d < spec.axes.size(); ++d) {
     const AxisSpec& a = spec.axes[d];
     int i = static_cast<int>(index % a.size);
     if (d == 0) i0 = i;
-    x[d] = a.ToAxis().node(i);
+    if (d != 0 || !layered) x[d] = a.ToAxis().node(i);
     index /= a.size;
   }
-  if (!spec.axes.empty() && spec.axes[0].warp == Warp::Root4Layer)
-    x[0] = spec.axes[0].ToAxis().node(i0, LayerScaleOf(spec, x));
+  if (layered) x[0] = spec.axes[0].ToAxis().node(i0, LayerScaleOf(spec, x));
 }
 
 bool UsesFixedRule(const TableSpec& spec) {
@@ -141,7 +144,7 @@ std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, Integra
   // alpha as MakeModel("ggx") derives it from the roughness clamped to ggx's range [0, 1]
   // (tests/integrate_fixed_rule.cpp compares against the adaptive path, which calls MakeModel).
   double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
-  std::array<double, 2> ab = FixedRuleGGXDFG(Clamp(x[0], 0.0, 1.0), alpha, {}, &stats.evals);
+  std::array<double, 2> ab = FixedRuleGGXDFG(Clamp(x[0], 0.0, 1.0), alpha, &stats.evals);
   stats.errorEstimate = kFixedRuleBound;
   if (spec.quantity == "albedo") return {ab[0] + ab[1]};  // F = 1: A + B is the albedo
   return {ab[0], ab[1]};
