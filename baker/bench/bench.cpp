@@ -329,16 +329,44 @@ class Bench {
       lookupSeconds = st.lookupSeconds;
       return t;
     });
-    std::filesystem::remove_all(dir);
     BenchRow commandRow = Row("baker-issue", "kiln-bake-command", spec, spec.tol, threads, whole);
     commandRow.note = "as kiln bake --only ggx-dfg --size " + std::to_string(plan_.issueSize) +
                       " -j 2: texels + its lookup-error check (" + Sci(lookupSeconds) +
                       " s in the last run) + EXR write";
     Add(commandRow);
+    // The like-for-like pair: kiln without its lookup-error check (--no-lookup-error) and the
+    // Monte Carlo bake, each followed by the same EXR write (neither measures a lookup error).
+    BakeOptions bn = bo;
+    bn.measureLookupError = false;
+    Measured noCheck = TimeRuns([&](long long& evals) {
+      BakeStats st;
+      Table t = BakeTable(spec, bn, &st);
+      WriteBakedTable(dir, t, false, false, threads);
+      evals = st.evals;
+      return t;
+    });
+    BenchRow noCheckRow = Row("baker-issue", "kiln-bake-written", spec, spec.tol, threads, noCheck);
+    noCheckRow.note = "as kiln bake --only ggx-dfg --size " + std::to_string(plan_.issueSize) +
+                      " -j 2 --no-lookup-error: texels + EXR write";
+    Add(noCheckRow);
     BenchRow mc = Row("baker-issue", "mc-hammersley", spec, plan_.sizeSweepSamples, threads,
                       Estimate(spec, false, plan_.sizeSweepSamples, threads));
     mc.note = "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG estimator); " + mc.note;
     Add(mc);
+    const int n = plan_.sizeSweepSamples;
+    Measured mcWritten = TimeRuns([&](long long& evals) {
+      PointSet points = HammersleyPoints(n);
+      BakeStats st;
+      Table t = EstimateTable(spec, points, std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling",
+                              threads, &st);
+      WriteBakedTable(dir, t, false, false, threads);
+      evals = st.evals;
+      return t;
+    });
+    BenchRow mcRow = Row("baker-issue", "mc-hammersley-written", spec, n, threads, mcWritten);
+    mcRow.note = "the Monte Carlo bake + the same EXR write";
+    Add(mcRow);
+    std::filesystem::remove_all(dir);
   }
 
   void Threads() {
