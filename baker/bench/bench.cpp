@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <thread>
@@ -162,6 +163,31 @@ Measured TimeRuns(F&& once) {
   return m;
 }
 
+/// Runs every `once` once per round, `rounds` rounds, and keeps each one's first table and
+/// median time: the machine's speed drifts by tens of percent over seconds, so times that are to
+/// be compared are taken side by side.
+std::vector<Measured> InterleavedRuns(const std::vector<std::function<Table(long long&)>>& once, int rounds) {
+  std::vector<Measured> m(once.size());
+  std::vector<std::vector<double>> times(once.size());
+  for (int r = 0; r < rounds; ++r)
+    for (size_t i = 0; i < once.size(); ++i) {
+      auto t0 = Clock::now();
+      long long evals = 0;
+      Table t = once[i](evals);
+      times[i].push_back(Since(t0));
+      if (r == 0) {
+        m[i].table = std::move(t);
+        m[i].evals = evals;
+      }
+    }
+  for (size_t i = 0; i < once.size(); ++i) {
+    std::sort(times[i].begin(), times[i].end());
+    m[i].seconds = times[i][times[i].size() / 2];
+    m[i].runs = rounds;
+  }
+  return m;
+}
+
 class Bench {
  public:
   Bench(const BenchOptions& opt, std::FILE* log)
@@ -304,69 +330,76 @@ class Bench {
   }
 
   /// `kiln bake --only ggx-dfg --size N -j 2` (texels, lookup-error check, EXR write) against
-  /// the Monte Carlo bake of the same table on 2 threads.
+  /// the Monte Carlo bake of the same table on 2 threads. The machine's speed drifts by tens of
+  /// percent over seconds, so every variant runs once per round, rounds repeated, medians kept:
+  /// the ratios come from times taken side by side.
   void BakerIssue() {
     TableSpec spec = Sized("ggx-dfg", {plan_.issueSize, plan_.issueSize});
-    const int threads = 2;
-    // The texels (BakeTable, no lookup-error check), median of runs like the Monte Carlo bake.
-    const Measured& k = Kiln(spec, spec.tol, threads);
-    BenchRow texelRow = Row("baker-issue", "kiln", spec, spec.tol, threads, k);
-    texelRow.note = "texels only (BakeTable wall time); " + texelRow.note;
-    Add(texelRow);
-    // The whole command: texels, the lookup-error check and the EXR write, median of runs.
-    BakeOptions bo;
-    bo.threads = threads;
-    bo.measureLookupError = true;
+    const int threads = 2, n = plan_.sizeSweepSamples, rounds = 7;
+    const std::string size = std::to_string(plan_.issueSize);
     std::string dir = (std::filesystem::temp_directory_path() /
                        ("kiln-bench-" + std::to_string(::getpid()))).string();
     std::filesystem::create_directories(dir);
+    BakeOptions texels, command;
+    texels.threads = command.threads = threads;
+    texels.measureLookupError = false;
+    command.measureLookupError = true;
+    PointSet points = HammersleyPoints(n);
+    const std::string mcMethod = std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling";
     double lookupSeconds = 0;
-    Measured whole = TimeRuns([&](long long& evals) {
-      BakeStats st;
-      Table t = BakeTable(spec, bo, &st);
-      WriteBakedTable(dir, t, false, false, threads);
-      evals = st.evals;
-      lookupSeconds = st.lookupSeconds;
-      return t;
-    });
-    BenchRow commandRow = Row("baker-issue", "kiln-bake-command", spec, spec.tol, threads, whole);
-    commandRow.note = "as kiln bake --only ggx-dfg --size " + std::to_string(plan_.issueSize) +
-                      " -j 2: texels + its lookup-error check (" + Sci(lookupSeconds) +
-                      " s in the last run) + EXR write";
-    Add(commandRow);
-    // The like-for-like pair: kiln without its lookup-error check (--no-lookup-error) and the
-    // Monte Carlo bake, each followed by the same EXR write (neither measures a lookup error).
-    BakeOptions bn = bo;
-    bn.measureLookupError = false;
-    Measured noCheck = TimeRuns([&](long long& evals) {
-      BakeStats st;
-      Table t = BakeTable(spec, bn, &st);
-      WriteBakedTable(dir, t, false, false, threads);
-      evals = st.evals;
-      return t;
-    });
-    BenchRow noCheckRow = Row("baker-issue", "kiln-bake-written", spec, spec.tol, threads, noCheck);
-    noCheckRow.note = "as kiln bake --only ggx-dfg --size " + std::to_string(plan_.issueSize) +
-                      " -j 2 --no-lookup-error: texels + EXR write";
-    Add(noCheckRow);
-    BenchRow mc = Row("baker-issue", "mc-hammersley", spec, plan_.sizeSweepSamples, threads,
-                      Estimate(spec, false, plan_.sizeSweepSamples, threads));
-    mc.note = "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG estimator); " + mc.note;
-    Add(mc);
-    const int n = plan_.sizeSweepSamples;
-    Measured mcWritten = TimeRuns([&](long long& evals) {
-      PointSet points = HammersleyPoints(n);
-      BakeStats st;
-      Table t = EstimateTable(spec, points, std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling",
-                              threads, &st);
-      WriteBakedTable(dir, t, false, false, threads);
-      evals = st.evals;
-      return t;
-    });
-    BenchRow mcRow = Row("baker-issue", "mc-hammersley-written", spec, n, threads, mcWritten);
-    mcRow.note = "the Monte Carlo bake + the same EXR write";
-    Add(mcRow);
+    struct Variant {
+      std::string method, note;
+      double setting;
+      std::function<Table(long long&)> once;
+    };
+    std::vector<Variant> v;
+    auto kilnBake = [&](const BakeOptions& bo, bool write) {
+      return [&, bo, write](long long& evals) {
+        BakeStats st;
+        Table t = BakeTable(spec, bo, &st);
+        if (write) WriteBakedTable(dir, t, false, false, threads);
+        evals = st.evals;
+        if (bo.measureLookupError) lookupSeconds = st.lookupSeconds;
+        return t;
+      };
+    };
+    auto mcBake = [&](bool write) {
+      return [&, write](long long& evals) {
+        BakeStats st;
+        Table t = EstimateTable(spec, points, mcMethod, threads, &st);
+        if (write) WriteBakedTable(dir, t, false, false, threads);
+        evals = st.evals;
+        return t;
+      };
+    };
+    v.push_back({"kiln", "texels only (BakeTable wall time)", spec.tol, kilnBake(texels, false)});
+    v.push_back({"kiln-bake-command", "as kiln bake --only ggx-dfg --size " + size +
+                 " -j 2: texels + its lookup-error check + EXR write", spec.tol, kilnBake(command, true)});
+    v.push_back({"kiln-bake-written", "as kiln bake --only ggx-dfg --size " + size +
+                 " -j 2 --no-lookup-error: texels + EXR write", spec.tol, kilnBake(texels, true)});
+    v.push_back({"mc-hammersley", "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG "
+                 "estimator), half vectors of a row computed once", double(n), mcBake(false)});
+    v.push_back({"mc-hammersley-written", "the Monte Carlo bake + the same EXR write", double(n), mcBake(true)});
+    v.push_back({"mc-hammersley-per-texel", "the same estimator with every texel drawing its own points and half "
+                 "vectors, as Filament's libs/ibl DFV and the UE4/LearnOpenGL listings", double(n),
+                 [&](long long& evals) {
+                   BakeStats st;
+                   Table t = EstimateDFGTablePerTexel(spec, n, threads, &st);
+                   evals = st.evals;
+                   return t;
+                 }});
+    std::vector<std::function<Table(long long&)>> once;
+    for (const Variant& x : v) once.push_back(x.once);
+    std::vector<Measured> measured = InterleavedRuns(once, rounds);
     std::filesystem::remove_all(dir);
+    for (size_t i = 0; i < v.size(); ++i) {
+      const Variant& x = v[i];
+      BenchRow row = Row("baker-issue", x.method, spec, x.setting, threads, measured[i]);
+      row.note = x.note + (x.method == "kiln-bake-command" ? " (lookup-error check " + Sci(lookupSeconds) +
+                                                                 " s in the last run)" : "") +
+                 "; median of " + std::to_string(rounds) + " rounds, variants interleaved; " + row.note;
+      Add(row);
+    }
   }
 
   void Threads() {
@@ -374,16 +407,41 @@ class Bench {
     TableSpec spec = Sized(k.table, k.base);
     std::vector<int> counts = {1};
     if (threads_ > 1) counts.push_back(threads_);
-    for (int n : counts) {
-      BenchRow r = Row("threads", "kiln", spec, spec.tol, n, Kiln(spec, spec.tol, n));
-      r.note = Kiln(spec, spec.tol, n).table.data == Kiln(spec, spec.tol, 1).table.data
-                   ? "texels bit-identical to the 1-thread bake"
-                   : "texels DIFFER from the 1-thread bake";  // DESIGN.md: they must not
+    const int n = plan_.sizeSweepSamples;
+    PointSet points = HammersleyPoints(n);
+    std::vector<std::function<Table(long long&)>> once;
+    for (int c : counts)
+      once.push_back([&, c](long long& evals) {
+        BakeOptions bo;
+        bo.threads = c;
+        bo.measureLookupError = false;
+        BakeStats st;
+        Table t = BakeTable(spec, bo, &st);
+        evals = st.evals;
+        return t;
+      });
+    for (int c : counts)
+      once.push_back([&, c](long long& evals) {
+        BakeStats st;
+        Table t = EstimateTable(spec, points, std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling",
+                                c, &st);
+        evals = st.evals;
+        return t;
+      });
+    std::vector<Measured> m = InterleavedRuns(once, 7);
+    const std::string how = "median of 7 rounds, thread counts interleaved";
+    for (size_t i = 0; i < counts.size(); ++i) {
+      BenchRow r = Row("threads", "kiln", spec, spec.tol, counts[i], m[i]);
+      r.note = (m[i].table.data == m[0].table.data ? "texels bit-identical to the 1-thread bake"
+                                                   : "texels DIFFER from the 1-thread bake") +  // must not
+               std::string("; ") + how;
       Add(r);
     }
-    for (int n : counts)
-      Add(Row("threads", "mc-hammersley", spec, plan_.sizeSweepSamples, n,
-              Estimate(spec, false, plan_.sizeSweepSamples, n)));
+    for (size_t i = 0; i < counts.size(); ++i) {
+      BenchRow r = Row("threads", "mc-hammersley", spec, n, counts[i], m[counts.size() + i]);
+      r.note = how;
+      Add(r);
+    }
   }
 
   void AddTiming(const std::string& method, const std::string& table, int dims, const std::string& size,

@@ -2,7 +2,8 @@
 //
 // Sections: "sweep" (error against time per method at the table's base size), "size" (lookup
 // error against table size and bytes), "threads" (the same bake on 1 and on all threads),
-// "baker-issue" (kiln bake of ggx-dfg at 128 x 128 against 1024-sample Monte Carlo),
+// "baker-issue" (kiln bake of ggx-dfg at 128 x 128 against 1024-sample Monte Carlo: kiln texels,
+// the whole command, texels + EXR write; Monte Carlo, + EXR write, sampled per texel),
 // "runtime" (ns per call of a lookup, a model evaluation, a direct integration).
 // Errors are absolute, max over channels; NaN (an empty CSV field) where not measured.
 #pragma once

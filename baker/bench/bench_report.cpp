@@ -219,6 +219,9 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
     if (written && mcWritten)
       line += "; both written to EXR, no lookup-error check: " + Fmt("%.3g", written->seconds) + " s against " +
               Fmt("%.3g", mcWritten->seconds) + " s, " + Fmt("%.3g", written->seconds / mcWritten->seconds) + "x";
+    if (const BenchRow* perTexel = Find(rows, "baker-issue", "ggx-dfg", "mc-hammersley-per-texel", nan))
+      line += "; MC with per-texel sampling (as Filament's generator) " + Fmt("%.3g", perTexel->seconds) +
+              " s: the whole kiln command " + Fmt("%.3g", cmd->seconds / perTexel->seconds) + "x";
     out.push_back(line);
   }
   for (const char* method : {"kiln", "mc-hammersley"}) {

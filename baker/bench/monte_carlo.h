@@ -68,4 +68,12 @@ bool EstimatorSupports(const TableSpec& spec);
 Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::string& method,
                     int threads, BakeStats* stats = nullptr);
 
+/// The same GGX DFG estimate as EstimateTable with n Hammersley points, written the way engine
+/// tools usually write it (Filament's libs/ibl DFV, the UE4 and LearnOpenGL listings): every
+/// texel draws its own points and half vectors (radical inverse, cos/sin of the azimuth, the GGX
+/// inversion) inside its sample loop, nothing shared between texels. The same sums in double, so
+/// the texels agree with EstimateTable's to rounding. Quantity dfg of ggx only (else throws
+/// std::invalid_argument); oneTBB over rows on `threads` threads.
+Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats = nullptr);
+
 }  // namespace kiln
