@@ -83,20 +83,10 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   if (spec.TexelCount() > (size_t(1) << 26))
     throw std::invalid_argument("table '" + spec.name + "': " + std::to_string(spec.TexelCount()) +
                                 " texels is too many (at most 2^26)");
-  Table t;
-  t.generator = kGenerator;
-  t.name = spec.name;
-  t.model = spec.model;
-  t.quantity = spec.quantity;
-  t.channels = spec.channels;
-  t.channelMeanings = spec.meanings;
-  t.axes = spec.TableAxes();
-  t.params = spec.ParamsText();
-  t.method = spec.Method();
+  Table t = TableShell(spec, kGenerator, spec.Method());
   t.tolerance = spec.tol;
   t.specHash = spec.Hash();
   size_t n = spec.TexelCount(), nc = spec.channels.size();
-  t.data.assign(n * nc, 0.0f);
   std::vector<long long> evals(n, 0);
   std::vector<double> errors(n, 0);
   auto t0 = std::chrono::steady_clock::now();

@@ -16,6 +16,9 @@
 namespace kiln {
 namespace {
 
+/// kiln.generator of the tables the bench's estimators make.
+constexpr const char* kBenchGenerator = "kiln 0.1.0 bench";
+
 /// The GGX half vectors of one roughness, for the view-independent part of every sample:
 /// hx = sin(theta_h) cos(phi_h), hz = cos(theta_h), and weight / hz (v.y = 0, so h.y is unused).
 struct GGXHalfVectors {
@@ -166,22 +169,6 @@ bool EstimatorSupports(const TableSpec& spec) {
 
 namespace {
 
-/// A table of `spec` with its metadata and zeroed texels.
-Table EmptyTable(const TableSpec& spec, const std::string& method) {
-  Table t;
-  t.generator = "kiln 0.1.0 bench";
-  t.name = spec.name;
-  t.model = spec.model;
-  t.quantity = spec.quantity;
-  t.channels = spec.channels;
-  t.channelMeanings = spec.meanings;
-  t.axes = spec.TableAxes();
-  t.params = spec.ParamsText();
-  t.method = method;
-  t.data.assign(spec.TexelCount() * spec.channels.size(), 0.0f);
-  return t;
-}
-
 /// Filament's DFV loop for one texel: n Hammersley points, GGX importance sampling of h, height-
 /// correlated Smith visibility, weight 4 Vis mu_l (v.h) / (n.h), Fc = (1 - v.h)^5.
 std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
@@ -210,7 +197,7 @@ std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
 Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats) {
   if (!(spec.quantity == "dfg" && spec.model == "ggx" && EstimatorSupports(spec)))
     throw std::invalid_argument("table '" + spec.name + "': no per-texel Monte Carlo estimator for it");
-  Table t = EmptyTable(spec, std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
+  Table t = TableShell(spec, kBenchGenerator, std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
   const int width = spec.axes[0].size, rSize = spec.axes[1].size;
   Axis muAxis = spec.axes[0].ToAxis(), rAxis = spec.axes[1].ToAxis();
   auto t0 = std::chrono::steady_clock::now();
@@ -241,7 +228,7 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
                     int threads, BakeStats* stats) {
   if (!EstimatorSupports(spec))
     throw std::invalid_argument("table '" + spec.name + "': no Monte Carlo estimator for it");
-  Table t = EmptyTable(spec, method);
+  Table t = TableShell(spec, kBenchGenerator, method);
   size_t nc = spec.channels.size();
   int width = spec.axes[0].size;
   size_t rows = spec.TexelCount() / static_cast<size_t>(width);

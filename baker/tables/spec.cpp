@@ -97,6 +97,21 @@ size_t TableSpec::TexelCount() const {
   return n;
 }
 
+Table TableShell(const TableSpec& spec, const std::string& generator, const std::string& method) {
+  Table t;
+  t.generator = generator;
+  t.name = spec.name;
+  t.model = spec.model;
+  t.quantity = spec.quantity;
+  t.channels = spec.channels;
+  t.channelMeanings = spec.meanings;
+  t.axes = spec.TableAxes();
+  t.params = spec.ParamsText();
+  t.method = method;
+  t.data.assign(spec.TexelCount() * spec.channels.size(), 0.0f);
+  return t;
+}
+
 TableSpec SpecFromTable(const Table& table) {
   TableSpec s;
   s.name = table.name;

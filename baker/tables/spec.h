@@ -52,6 +52,11 @@ struct TableSpec {
 /// made by this version of kiln. Throws std::invalid_argument for unparseable params.
 TableSpec SpecFromTable(const Table& table);
 
+/// A table of `spec` before its texels: name, model, quantity, channels and their meanings,
+/// axes, params, the given generator and method, and zeroed texels. The bake and the bench's
+/// estimators fill in the rest.
+Table TableShell(const TableSpec& spec, const std::string& generator, const std::string& method);
+
 /// The layer scale of a root4-layer axis 0 at the point x (kiln::layerScale of axis 1's value;
 /// 1e-12 for any other warp).
 double LayerScaleOf(const TableSpec& spec, const double* x);
