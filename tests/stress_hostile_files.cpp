@@ -232,12 +232,7 @@ TEST_CASE("kiln verify refuses every hostile file, and checks the good ones in t
     CHECK(IsCleanRefusal(r, /*allowStdout=*/true));  // the report table goes to stdout
     if (h.name != "missing file" && h.name != "a folder") CHECK(r.out.find("FAILED") != std::string::npos);
   }
-  for (const Hostile& h : fx.absurd) {
-    std::string args = "verify " + Quote(h.path) + " --points 20 -j 2";
-    auto r = RunKilnFor(60, args);
-    INFO(h.name << ": " << Describe(args, r));
-    CHECK(IsCleanRefusal(r, true));
-  }
+  // (the absurd-but-valid files: the next test, which checks more of the same runs)
   // A folder of good and bad tables: every file is reported, the good one passes, exit 1.
   ScratchDir mixed("hostile_mixed");
   std::filesystem::copy_file(fx.good, mixed / "a-good.exr");
