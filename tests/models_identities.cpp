@@ -1,4 +1,4 @@
-// The exact identities of MODELS.md, each checked against the models and integrators.
+// The exact identities of docs/models.md, each checked against the models and integrators.
 #include <catch2/catch.hpp>
 #include <cmath>
 

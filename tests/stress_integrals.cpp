@@ -197,7 +197,7 @@ TEST_CASE("Fresnel average at the eta and k edges: in [0, 1], continuous at eta 
   CHECK(std::abs(favg(1 - 1e-9, 0) - favg(1.0, 0)) <= kContinuity);
   // k -> 0 meets the dielectric, on both sides of eta = 1.
   for (double eta : etas) CHECK(std::abs(favg(eta, 1e-12) - favg(eta, 0)) <= kContinuity);
-  // 1 - F_avg(eta) = eta^2 (1 - F_avg(1/eta)) at the ends of the eta range (MODELS.md): at
+  // 1 - F_avg(eta) = eta^2 (1 - F_avg(1/eta)) at the ends of the eta range (docs/models.md): at
   // eta = 0.01 nearly everything is totally reflected, 1 - F_avg = 5e-6.
   double lhs = 1 - favg(100, 0, 1e-13), rhs = 1e4 * (1 - favg(0.01, 0, 1e-13));
   INFO("1 - F_avg(100) = " << lhs << ", 1e4 (1 - F_avg(0.01)) = " << rhs);

@@ -11,7 +11,7 @@
 //   and the height-correlated and V-cavity microfacet lobes' D G / (4 mu_o mu_l) ~ 1/mu at the
 //   mirror pair (a separable G = G1(o) G1(l) ~ mu_o mu_l / alpha^2 keeps them bounded). There only
 //   finiteness is required; continuity is checked with the other direction at mu >= 1e-3.
-// - Specular horizon convention. A specular lobe is zero unless mu_o, mu_l > 0 (MODELS.md 13):
+// - Specular horizon convention. A specular lobe is zero unless mu_o, mu_l > 0 (docs/models.md 13):
 //   f(mu = 0) is exactly 0 while the one-sided limit is not. For those models the test checks
 //   f(0) == 0 and that the limit exists: f(1e-12) = f(1e-14) (for a lobe wider than the probe,
 //   r >= 0.1; a lobe of alpha = 1e-12 has its own structure at mu ~ 1e-12).

@@ -1,4 +1,4 @@
-// The hemispherical integrals kiln tabulates (MODELS.md "Hemispherical integrals"), for any model,
+// The hemispherical integrals kiln tabulates (docs/models.md "Hemispherical integrals"), for any model,
 // deterministic, in double precision, to an absolute tolerance (default 1e-9).
 #pragma once
 #include <array>

@@ -32,7 +32,7 @@ struct GotandaFresnelDiffuse {
 };
 
 /// f mu_l = 21/(20 pi) (1 - f0) (F_r L_m + V_d B_p) with e = o (eq. 35 and the three terms after
-/// it; see MODELS.md 8). A fitted model: neither reciprocal nor bound to conserve energy.
+/// it; see docs/models.md 8). A fitted model: neither reciprocal nor bound to conserve energy.
 /// Valid for sigma in [0, 1] (the fit's range; above it (1 - mu_o)^(5 - 4 s2) blows up).
 struct GotandaGGXDiffuse {
   static constexpr const char* kId = "gotanda-ggx";

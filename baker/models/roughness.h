@@ -19,7 +19,7 @@ inline double PbrtV3RoughnessToAlpha(double r) {
   return 1.62142 + 0.819955 * x + 0.1734 * x * x + 0.0171201 * x * x * x +
          0.000640711 * x * x * x * x;
 }
-/// Blinn-Phong exponent for a Beckmann-equivalent alpha: s = 2 / alpha^2 - 2 (MODELS.md 13).
+/// Blinn-Phong exponent for a Beckmann-equivalent alpha: s = 2 / alpha^2 - 2 (docs/models.md 13).
 inline double BlinnPhongExponentFromAlpha(double alpha) {
   alpha = std::max(alpha, MinAlpha);
   return std::max(0.0, 2 / (alpha * alpha) - 2);
