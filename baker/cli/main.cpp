@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"kiln: BRDF integral lookup tables, baked exactly"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every subcommand");
+  app.set_version_flag("--version", "kiln " KILN_VERSION);
   kiln::cli::RegisterList(app);
   kiln::cli::RegisterEval(app);
   kiln::cli::RegisterIntegrate(app);
@@ -26,6 +27,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "kiln: error: %s\n", e.what());

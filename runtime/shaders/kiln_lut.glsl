@@ -14,7 +14,12 @@
 //     s = t * (size - 1)               continuous node index
 //     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
 //
-// Precision: hardware bilinear filtering quantizes the blend weights (8 bits
+// Precision: every value here is highp (32-bit float). The mappings need it:
+// in mediump (fp16, the default of many ES fragment shaders) the layer scale's
+// floor 1e-12 flushes to 0 and the coordinate at mu = 0, roughness 0 becomes
+// 0/0 = NaN. Desktop GLSL accepts the qualifiers and ignores them.
+//
+// Hardware bilinear filtering quantizes the blend weights (8 bits
 // of fraction on common GPUs), which can add an error of about 1/512 of the
 // step between neighbouring texels. The *Exact variants blend with
 // texelFetch in full float precision, matching the CPU runtime.
@@ -31,25 +36,25 @@
 #define KILN_WARP_ANGLE 6
 
 struct KilnAxis {
-    float lo;    // kiln.axis<i>.lo
-    float hi;    // kiln.axis<i>.hi
-    float size;  // kiln.axis<i>.size, number of nodes
+    highp float lo;    // kiln.axis<i>.lo
+    highp float hi;    // kiln.axis<i>.hi
+    highp float size;  // kiln.axis<i>.size, number of nodes
     int warp;    // KILN_WARP_* from kiln.axis<i>.warp
 };
 
 // Layer scale c = max(r^2, 1e-12) of a root4-layer axis 0, r the value of axis 1
 // clamped to that axis.
-float kilnLayerScale(float r, KilnAxis a1) {
-    float rc = clamp(r, a1.lo, a1.hi);
+highp float kilnLayerScale(highp float r, KilnAxis a1) {
+    highp float rc = clamp(r, a1.lo, a1.hi);
     return max(rc * rc, 1e-12);
 }
 
 // Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi]. c: the layer
 // scale of a root4-layer axis (kilnLayerScale), ignored by the other warps.
-float kilnWarped(float x, KilnAxis a, float c) {
-    float xc = clamp(x, a.lo, a.hi);
+highp float kilnWarped(highp float x, KilnAxis a, highp float c) {
+    highp float xc = clamp(x, a.lo, a.hi);
     if (a.warp == KILN_WARP_LOG) return clamp(log(xc / a.lo) / log(a.hi / a.lo), 0.0, 1.0);
-    float y = (xc - a.lo) / (a.hi - a.lo);
+    highp float y = (xc - a.lo) / (a.hi - a.lo);
     if (a.warp == KILN_WARP_SQRT) return sqrt(y);
     if (a.warp == KILN_WARP_SQUARE) return y * y;
     if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
@@ -59,28 +64,28 @@ float kilnWarped(float x, KilnAxis a, float c) {
 }
 
 // Continuous node index s = t * (size - 1) of x.
-float kilnTexel(float x, KilnAxis a, float c) {
+highp float kilnTexel(highp float x, KilnAxis a, highp float c) {
     return kilnWarped(x, a, c) * max(a.size - 1.0, 0.0);
 }
-float kilnTexel(float x, KilnAxis a) {
+highp float kilnTexel(highp float x, KilnAxis a) {
     return kilnTexel(x, a, 1e-12);
 }
 
 // Texture coordinate (0.5 + s) / size of x, for hardware bilinear filtering.
-float kilnCoord(float x, KilnAxis a, float c) {
+highp float kilnCoord(highp float x, KilnAxis a, highp float c) {
     return (0.5 + kilnTexel(x, a, c)) / a.size;
 }
-float kilnCoord(float x, KilnAxis a) {
+highp float kilnCoord(highp float x, KilnAxis a) {
     return kilnCoord(x, a, 1e-12);
 }
 
 // 1D table (size0 x 1 image) at x.
-vec4 kilnSample1D(sampler2D lut, float x, KilnAxis a0) {
+highp vec4 kilnSample1D(highp sampler2D lut, highp float x, KilnAxis a0) {
     return textureLod(lut, vec2(kilnCoord(x, a0), 0.5), 0.0);
 }
 
 // 2D table at x = (x0, x1): one hardware bilinear fetch.
-vec4 kilnSample2D(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
+highp vec4 kilnSample2D(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis a1) {
     return textureLod(lut, vec2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a1)), kilnCoord(x.y, a1)), 0.0);
 }
 
@@ -88,47 +93,47 @@ vec4 kilnSample2D(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
 // bilinear fetch in the two slices around x2, blended linearly. The fetch
 // never bleeds into the neighbouring slice: its v stays between the centres
 // of the slice's first and last rows.
-vec4 kilnSample3D(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a1));
-    float s1 = kilnTexel(x.y, a1);
-    float s2 = kilnTexel(x.z, a2);
-    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
-    float k1 = min(k0 + 1.0, a2.size - 1.0);
-    float rows = a1.size * a2.size;
-    vec4 c0 = textureLod(lut, vec2(u, (k0 * a1.size + 0.5 + s1) / rows), 0.0);
-    vec4 c1 = textureLod(lut, vec2(u, (k1 * a1.size + 0.5 + s1) / rows), 0.0);
+highp vec4 kilnSample3D(highp sampler2D lut, highp vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    highp float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a1));
+    highp float s1 = kilnTexel(x.y, a1);
+    highp float s2 = kilnTexel(x.z, a2);
+    highp float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    highp float k1 = min(k0 + 1.0, a2.size - 1.0);
+    highp float rows = a1.size * a2.size;
+    highp vec4 c0 = textureLod(lut, vec2(u, (k0 * a1.size + 0.5 + s1) / rows), 0.0);
+    highp vec4 c1 = textureLod(lut, vec2(u, (k1 * a1.size + 0.5 + s1) / rows), 0.0);
     return mix(c0, c1, s2 - k0);
 }
 
 // Bilinear blend in full precision at continuous texel position p (column,
 // row), node i at integer i, clamped to the image.
-vec4 kilnBlendExact(sampler2D lut, vec2 p) {
-    ivec2 last = textureSize(lut, 0) - 1;
-    vec2 base = floor(p);
-    vec2 f = p - base;
-    ivec2 i0 = clamp(ivec2(base), ivec2(0), last);
-    ivec2 i1 = min(i0 + 1, last);
-    vec4 a = mix(texelFetch(lut, i0, 0), texelFetch(lut, ivec2(i1.x, i0.y), 0), f.x);
-    vec4 b = mix(texelFetch(lut, ivec2(i0.x, i1.y), 0), texelFetch(lut, i1, 0), f.x);
+highp vec4 kilnBlendExact(highp sampler2D lut, highp vec2 p) {
+    highp ivec2 last = textureSize(lut, 0) - 1;
+    highp vec2 base = floor(p);
+    highp vec2 f = p - base;
+    highp ivec2 i0 = clamp(ivec2(base), ivec2(0), last);
+    highp ivec2 i1 = min(i0 + 1, last);
+    highp vec4 a = mix(texelFetch(lut, i0, 0), texelFetch(lut, ivec2(i1.x, i0.y), 0), f.x);
+    highp vec4 b = mix(texelFetch(lut, ivec2(i0.x, i1.y), 0), texelFetch(lut, i1, 0), f.x);
     return mix(a, b, f.y);
 }
 
 // As kilnSample2D, with the blend in full float precision.
-vec4 kilnSample2DExact(sampler2D lut, vec2 x, KilnAxis a0, KilnAxis a1) {
+highp vec4 kilnSample2DExact(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis a1) {
     return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a1)), kilnTexel(x.y, a1)));
 }
 
 // As kilnSample3D, with the blends in full float precision.
-vec4 kilnSample3DExact(sampler2D lut, vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a1));
-    float s1 = kilnTexel(x.y, a1);
-    float s2 = kilnTexel(x.z, a2);
-    float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
-    float k1 = min(k0 + 1.0, a2.size - 1.0);
+highp vec4 kilnSample3DExact(highp sampler2D lut, highp vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    highp float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a1));
+    highp float s1 = kilnTexel(x.y, a1);
+    highp float s2 = kilnTexel(x.z, a2);
+    highp float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
+    highp float k1 = min(k0 + 1.0, a2.size - 1.0);
     // Clamp the row within the slice so the blend never reaches the next one.
-    float r = min(s1, a1.size - 1.0);
-    vec4 c0 = kilnBlendExact(lut, vec2(s0, k0 * a1.size + r));
-    vec4 c1 = kilnBlendExact(lut, vec2(s0, k1 * a1.size + r));
+    highp float r = min(s1, a1.size - 1.0);
+    highp vec4 c0 = kilnBlendExact(lut, vec2(s0, k0 * a1.size + r));
+    highp vec4 c1 = kilnBlendExact(lut, vec2(s0, k1 * a1.size + r));
     return mix(c0, c1, s2 - k0);
 }
 

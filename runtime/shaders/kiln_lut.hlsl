@@ -15,7 +15,11 @@
 //     s = t * (size - 1)               continuous node index
 //     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
 //
-// Precision: hardware bilinear filtering quantizes the blend weights (8 bits
+// Precision: every value here is `float` (32-bit). Keep it so: `half` or
+// `min16float` coordinates (fp16) flush the layer scale's floor 1e-12 to 0 and
+// make the coordinate at mu = 0, roughness 0 a NaN (0/0).
+//
+// Hardware bilinear filtering quantizes the blend weights (8 bits
 // of fraction on common GPUs), which can add an error of about 1/512 of the
 // step between neighbouring texels. The *Exact variants blend Load()ed texels
 // in full float precision, matching the CPU runtime.
