@@ -97,13 +97,13 @@ TEST_CASE("The ggx dfg and albedo tables are baked by the fixed rule, the others
           "[integrate][fixed-rule][tables]") {
   TableSpec dfg;
   dfg.model = "ggx";
-  dfg.quantity = "dfg";
+  dfg.quantity = FindQuantity("dfg")->id;
   dfg.axes = {AxisSpec{"mu", 0, 1, 8, Warp::Root4}, AxisSpec{"roughness", 0, 1, 8, Warp::Sqrt}};
   dfg.channels = {"A", "B"};
   CHECK(UsesFixedRule(dfg));
   CHECK(dfg.Method().find("fixed") != std::string::npos);
   TableSpec albedo = dfg;
-  albedo.quantity = "albedo";
+  albedo.quantity = FindQuantity("albedo")->id;
   albedo.channels = {"E"};
   CHECK(UsesFixedRule(albedo));
   const double x[2] = {0.3, 0.4};

@@ -486,8 +486,8 @@ class Bench {
       TableSpec spec = Sized(k.table, k.base);
       std::string model = spec.model;
       // 1D: the average-albedo table of the same model (its lookup cost does not depend on tol).
-      if (spec.quantity != "fresnel-albedo") {
-        TableSpec avg = Sized(model + "-albedo-avg", plan_.runtime1DSize);
+      if (spec.quantity != Quantity::FresnelAlbedo) {
+        TableSpec avg = Sized(TableName(Quantity::AlbedoAvg, model), plan_.runtime1DSize);
         avg.tol = plan_.runtimeTableTol;
         BakeOptions bo;
         bo.threads = threads_;
@@ -495,7 +495,7 @@ class Bench {
         Lookups(BakeTable(avg, bo), SizeText(avg));
       }
       Lookups(Kiln(spec, spec.tol, threads_).table, SizeText(spec));
-      if (spec.quantity == "fresnel-albedo") {
+      if (spec.quantity == Quantity::FresnelAlbedo) {
         ModelParams p;
         p.roughness = 0.5;
         p.eta = 1.5;

@@ -158,9 +158,9 @@ bool EstimatorSupports(const TableSpec& spec) {
       if (spec.axes[i++].name != n) return false;
     return true;
   };
-  if (spec.quantity == "dfg") return spec.model == "ggx" && named({"mu", "roughness"});
-  if (spec.quantity == "fresnel-albedo") return named({"mu", "roughness", "eta"});
-  if (spec.quantity == "albedo") {
+  if (spec.quantity == Quantity::Dfg) return spec.model == "ggx" && named({"mu", "roughness"});
+  if (spec.quantity == Quantity::FresnelAlbedo) return named({"mu", "roughness", "eta"});
+  if (spec.quantity == Quantity::Albedo) {
     const ModelInfo* info = FindModel(spec.model);
     return info && !info->specular() && named({"mu", "roughness"});
   }
@@ -195,7 +195,7 @@ std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
 }  // namespace
 
 Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats) {
-  if (!(spec.quantity == "dfg" && spec.model == "ggx" && EstimatorSupports(spec)))
+  if (!(spec.quantity == Quantity::Dfg && spec.model == "ggx" && EstimatorSupports(spec)))
     throw std::invalid_argument("table '" + spec.name + "': no per-texel Monte Carlo estimator for it");
   Table t = TableShell(spec, kBenchGenerator, std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
   const int width = spec.axes[0].size, rSize = spec.axes[1].size;
@@ -237,12 +237,12 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
   auto t0 = std::chrono::steady_clock::now();
   // Shared by every row of a diffuse table; built once, outside the rows.
   std::unique_ptr<CosineDirections> cosine;
-  if (spec.quantity == "albedo") cosine = std::make_unique<CosineDirections>(points);
+  if (spec.quantity == Quantity::Albedo) cosine = std::make_unique<CosineDirections>(points);
   auto row = [&](size_t k) {
     double r = rAxis.node(static_cast<int>(k % rSize));
     double c = spec.axes[0].warp == Warp::Root4Layer ? layerScale(rAxis.lo, rAxis.hi, r) : 1e-12;
     float* out = &t.data[k * width * nc];
-    if (spec.quantity == "albedo") {
+    if (spec.quantity == Quantity::Albedo) {
       AnyModel model = ModelAt(spec.model, r);
       std::visit(
           [&](const auto& m) {
@@ -261,7 +261,7 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
     }
     double alpha = GGXAlpha(r);
     GGXHalfVectors h(points, alpha);
-    if (spec.quantity == "dfg") {
+    if (spec.quantity == Quantity::Dfg) {
       for (int i = 0; i < width; ++i) {
         auto ab = DFGAt(h, muAxis.node(i, c), alpha);
         out[2 * i] = static_cast<float>(ab[0]);
