@@ -1,4 +1,5 @@
 // dfg: the split-sum DFG terms (Karis 2013) of a microfacet model, over (mu, roughness) -> A, B.
+#include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
 
 namespace kiln {
@@ -71,6 +72,7 @@ const QuantityInfo& DfgQuantity() {
     q.integrateHelp = "dfg (A B)";
     q.integrateNeedsMu = true;
     q.integrate = Integrate;
+    q.monteCarlo = &kGgxDfgMonteCarlo;
     return q;
   }();
   return info;

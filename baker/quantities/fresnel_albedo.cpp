@@ -1,5 +1,6 @@
 // fresnel-albedo: GGX's directional albedo with exact dielectric Fresnel at index eta, over
 // (mu, roughness, eta) -> E (dielectric layering, transmission).
+#include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
 
 namespace kiln {
@@ -53,6 +54,7 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
     q.sceneProblem = SceneProblem;
     q.readsParams = true;
+    q.monteCarlo = &kGgxFresnelAlbedoMonteCarlo;
     return q;
   }();
   return info;

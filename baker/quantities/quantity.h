@@ -20,6 +20,7 @@ struct CatalogueOptions;
 struct ModelInfo;
 struct ModelParams;
 struct IntegrationStats;
+struct MonteCarloEstimator;
 
 /// Every table kind, in registry order (baker/quantities/list.inc).
 enum class Quantity {
@@ -90,6 +91,10 @@ struct QuantityInfo {
   /// Throws std::invalid_argument for missing or refused options, naming the command.
   std::string (*integrate)(const IntegrateRequest& request, const ModelParams& params,
                            IntegrationStats& stats) = nullptr;
+
+  // --- kiln bench --------------------------------------------------------------------------
+  /// The Monte Carlo estimator the bench compares kiln with (bench/monte_carlo.h); null: none.
+  const MonteCarloEstimator* monteCarlo = nullptr;
 };
 
 /// The descriptor of `q`.
