@@ -1,9 +1,8 @@
 // The quantity registry (baker/quantities/): one descriptor per table kind, looked up by name
 // once; and the catalogue it builds is the committed one, spec for spec (hash, method, channels,
 // meanings, axes, params against luts/manifest.json), so the re-bake is byte for byte.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -39,8 +38,9 @@ TEST_CASE("Every quantity has one descriptor, found by its name", "[quantities]"
 
 TEST_CASE("The names scenes, files and kiln integrate use are unchanged", "[quantities]") {
   CHECK(SceneTableKinds() ==
-        std::vector<std::string>{"dfg", "albedo", "albedo-avg", "fresnel-albedo", "fresnel-albedo-avg",
-                                 "fresnel-dielectric", "fresnel-dielectric-avg", "fresnel-conductor"});
+        std::vector<std::string>{"dfg", "albedo", "albedo-avg", "fresnel-albedo",
+                                 "fresnel-albedo-avg", "fresnel-dielectric",
+                                 "fresnel-dielectric-avg", "fresnel-conductor"});
   std::set<std::string> integrable;
   for (const QuantityInfo* q : AllQuantities())
     if (q->integrateName) integrable.insert(q->integrateName);
@@ -64,7 +64,8 @@ TEST_CASE("A table with an unknown quantity is refused by name", "[quantities]")
 
 TEST_CASE("The catalogue's specs are the committed tables' (hash, method, channels, axes)",
           "[quantities][luts]") {
-  auto manifest = nlohmann::json::parse(test::ReadFile(std::string(KILN_SOURCE_DIR) + "/luts/manifest.json"));
+  auto manifest =
+      nlohmann::json::parse(test::ReadFile(std::string(KILN_SOURCE_DIR) + "/luts/manifest.json"));
   std::map<std::string, nlohmann::json> byName;
   for (auto& e : manifest["tables"]) byName[e["name"].get<std::string>()] = e;
   std::vector<TableSpec> catalogue = DefaultCatalogue();

@@ -170,7 +170,9 @@ struct Rows {
       : mu(spec.axes[0].ToAxis()), r(spec.axes[1].ToAxis()), width(spec.axes[0].size),
         rSize(spec.axes[1].size) {}
   double Roughness(size_t k) const { return r.node(static_cast<int>(k % rSize)); }
-  double LayerScale(double rk) const { return mu.warp == Warp::Root4Layer ? layerScale(r.lo, r.hi, rk) : 1e-12; }
+  double LayerScale(double rk) const {
+    return mu.warp == Warp::Root4Layer ? layerScale(r.lo, r.hi, rk) : 1e-12;
+  }
 };
 
 bool GgxDfgSupports(const TableSpec& spec) {
@@ -189,7 +191,9 @@ MonteCarloRows GgxDfgRows(const TableSpec& spec, const PointSet& points) {
   };
 }
 
-bool GgxFresnelAlbedoSupports(const TableSpec& spec) { return AxesNamed(spec, {"mu", "roughness", "eta"}); }
+bool GgxFresnelAlbedoSupports(const TableSpec& spec) {
+  return AxesNamed(spec, {"mu", "roughness", "eta"});
+}
 
 MonteCarloRows GgxFresnelAlbedoRows(const TableSpec& spec, const PointSet& points) {
   return [rows = Rows(spec), etaAxis = spec.axes[2].ToAxis(), &points](size_t k, float* out) {
@@ -231,7 +235,8 @@ MonteCarloRows DiffuseAlbedoRows(const TableSpec& spec, const PointSet& points) 
 }  // namespace
 
 const MonteCarloEstimator kGgxDfgMonteCarlo = {GgxDfgSupports, GgxDfgRows};
-const MonteCarloEstimator kGgxFresnelAlbedoMonteCarlo = {GgxFresnelAlbedoSupports, GgxFresnelAlbedoRows};
+const MonteCarloEstimator kGgxFresnelAlbedoMonteCarlo = {GgxFresnelAlbedoSupports,
+                                                         GgxFresnelAlbedoRows};
 const MonteCarloEstimator kDiffuseAlbedoMonteCarlo = {DiffuseAlbedoSupports, DiffuseAlbedoRows};
 
 bool EstimatorSupports(const TableSpec& spec) {

@@ -19,13 +19,15 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
 
 /// Microfacet models: the root4-layer mu axis (catalogue.cpp); diffuse ones: DiffuseMuAxis.
 std::vector<AxisSpec> DefaultAxes(const std::string& model) {
-  AxisSpec mu = IsSpecular(model) ? AxisSpec{"mu", 0, 1, 128, Warp::Root4Layer} : DiffuseMuAxis(model);
+  AxisSpec mu =
+      IsSpecular(model) ? AxisSpec{"mu", 0, 1, 128, Warp::Root4Layer} : DiffuseMuAxis(model);
   return {mu, DefaultRoughnessAxis(model)};
 }
 
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
-  for (const std::string& m : CatalogueMicrofacetModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const std::string& m : CatalogueMicrofacetModels())
+    out.push_back(MakeSpec(m, DefaultAxes(m)));
   for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }

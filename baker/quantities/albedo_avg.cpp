@@ -15,7 +15,9 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
                {"average albedo 2 int E(mu) mu dmu at rho = 1, F = 1"}, std::move(axes));
 }
 
-std::vector<AxisSpec> DefaultAxes(const std::string& model) { return {DefaultRoughnessAxis(model)}; }
+std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  return {DefaultRoughnessAxis(model)};
+}
 
 /// The microfacet models' average albedo is smooth in roughness: 64 nodes (their 2D tables 128).
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {

@@ -16,11 +16,14 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 
 std::vector<AxisSpec> DefaultAxes(const std::string&) { return {{"s", 1, 10000, 1024, Warp::Log}}; }
 
-std::vector<TableSpec> Catalogue(const CatalogueOptions&) { return {MakeSpec("", DefaultAxes(""))}; }
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  return {MakeSpec("", DefaultAxes(""))};
+}
 
 std::vector<double> Evaluate(const TableSpec&, const double* x, double, IntegrationStats& stats) {
   ++stats.evals;
-  return {NormalizedBlinnPhong::Normalization(x[0]), NormalizedBlinnPhong::NormalizationApprox(x[0])};
+  return {NormalizedBlinnPhong::Normalization(x[0]),
+          NormalizedBlinnPhong::NormalizationApprox(x[0])};
 }
 
 std::string Method(const TableSpec&) { return ClosedFormMethod(); }

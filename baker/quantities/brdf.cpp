@@ -18,7 +18,9 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
 
 /// mu from 0.02: Oren-Nayar's tan(beta) is unbounded as both directions reach the horizon.
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"mu_l", 0.02, 1, 32, Warp::Sqrt}, {"mu_o", 0.02, 1, 32, Warp::Sqrt}, {"phi", 0, Pi, 32, Warp::Linear}};
+  return {{"mu_l", 0.02, 1, 32, Warp::Sqrt},
+          {"mu_o", 0.02, 1, 32, Warp::Sqrt},
+          {"phi", 0, Pi, 32, Warp::Linear}};
 }
 
 /// The diffuse models whose BRDF has no cheap closed form in a shader, at opt.brdfRoughness.
@@ -32,7 +34,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions& opt) {
   return out;
 }
 
-std::vector<double> Evaluate(const TableSpec& spec, const double* x, double, IntegrationStats& stats) {
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double,
+                             IntegrationStats& stats) {
   ++stats.evals;
   AnyModel m = ModelAt(spec.model, Param(spec, "roughness", 0.5));
   return RhoChannels(spec, EvaluateParts(m, ViewDirection(x[1]), DirectionFromMuPhi(x[0], x[2])));

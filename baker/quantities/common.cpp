@@ -63,7 +63,8 @@ const ParamInfo* FindParam(const ModelInfo& model, const std::string& name) {
 
 ModelParams WithRoughness(const std::string& model, double r) {
   ModelParams p;
-  if (const ParamInfo* q = FindParam(Info(model), "roughness")) p.roughness = Clamp(r, q->lo, q->hi);
+  if (const ParamInfo* q = FindParam(Info(model), "roughness"))
+    p.roughness = Clamp(r, q->lo, q->hi);
   return p;
 }
 
@@ -84,10 +85,11 @@ double Param(const TableSpec& spec, const char* key, double def) {
 std::string ClosedFormMethod() { return "closed form (exact evaluation at each node)"; }
 
 std::string AdaptiveMethod(bool specular, bool averaged, double tol) {
-  std::string base = specular ? "half-vector space: adaptive Gauss-Kronrod 7-15 over the NDF's CDF x "
-                                "phi_h, exact horizon cut"
-                              : "light space: adaptive Gauss-Kronrod 7-15 over theta_l x phi, panels "
-                                "split at theta_o and phi = pi/2";
+  std::string base = specular
+                         ? "half-vector space: adaptive Gauss-Kronrod 7-15 over the NDF's CDF x "
+                           "phi_h, exact horizon cut"
+                         : "light space: adaptive Gauss-Kronrod 7-15 over theta_l x phi, panels "
+                           "split at theta_o and phi = pi/2";
   if (averaged) base += "; then 2 int E mu dmu by adaptive Gauss-Kronrod";
   return base + " to " + Full17(tol) + " abs";
 }
@@ -108,8 +110,8 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats) {
 
 std::string GgxFixedRuleMethod(const TableSpec&) {
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
-         "integrand's analytic scales, exact horizon cut; declared error " + Short(kFixedRuleBound) +
-         " abs";
+         "integrand's analytic scales, exact horizon cut; declared error " +
+         Short(kFixedRuleBound) + " abs";
 }
 
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,

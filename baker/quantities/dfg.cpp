@@ -19,7 +19,8 @@ std::vector<AxisSpec> DefaultAxes(const std::string& model) {
 
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
-  for (const std::string& m : CatalogueMicrofacetModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const std::string& m : CatalogueMicrofacetModels())
+    out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }
 

@@ -33,7 +33,9 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
 std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, false, spec.tol); }
 
 std::string SceneProblem(const ModelInfo& m) {
-  return m.id == "ggx" ? "" : std::string(QuantityName(Quantity::FresnelAlbedo)) + " is baked for ggx only";
+  return m.id == "ggx"
+             ? ""
+             : std::string(QuantityName(Quantity::FresnelAlbedo)) + " is baked for ggx only";
 }
 
 }  // namespace

@@ -15,10 +15,14 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 
 /// 32^3, n in [0.1, 4], k in [0, 8]: the metals of the usual tables.
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"mu", 0, 1, 32, Warp::Root4}, {"n", 0.1, 4, 32, Warp::Linear}, {"k", 0, 8, 32, Warp::Linear}};
+  return {{"mu", 0, 1, 32, Warp::Root4},
+          {"n", 0.1, 4, 32, Warp::Linear},
+          {"k", 0, 8, 32, Warp::Linear}};
 }
 
-std::vector<TableSpec> Catalogue(const CatalogueOptions&) { return {MakeSpec("none", DefaultAxes(""))}; }
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  return {MakeSpec("none", DefaultAxes(""))};
+}
 
 std::vector<double> Evaluate(const TableSpec&, const double* x, double, IntegrationStats& stats) {
   ++stats.evals;
@@ -30,7 +34,8 @@ std::string Method(const TableSpec&) { return ClosedFormMethod(); }
 std::string SceneProblem(const ModelInfo& m) {
   return FindParam(m, "eta") && FindParam(m, "k")
              ? ""
-             : std::string(QuantityName(Quantity::FresnelConductor)) + " needs a model with eta and k";
+             : std::string(QuantityName(Quantity::FresnelConductor)) +
+                   " needs a model with eta and k";
 }
 
 }  // namespace

@@ -8,8 +8,8 @@ using namespace quantity_detail;
 
 /// Model-free: `model` is ignored ("none").
 TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
-  return Shell(Quantity::FresnelDielectric, QuantityName(Quantity::FresnelDielectric), "none", {"F"},
-               {"exact unpolarized dielectric Fresnel reflectance"}, std::move(axes));
+  return Shell(Quantity::FresnelDielectric, QuantityName(Quantity::FresnelDielectric), "none",
+               {"F"}, {"exact unpolarized dielectric Fresnel reflectance"}, std::move(axes));
 }
 
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
@@ -29,8 +29,9 @@ std::vector<double> Evaluate(const TableSpec&, const double* x, double, Integrat
 std::string Method(const TableSpec&) { return ClosedFormMethod(); }
 
 std::string SceneProblem(const ModelInfo& m) {
-  return FindParam(m, "eta") ? ""
-                             : std::string(QuantityName(Quantity::FresnelDielectric)) + " needs a model with eta";
+  return FindParam(m, "eta")
+             ? ""
+             : std::string(QuantityName(Quantity::FresnelDielectric)) + " needs a model with eta";
 }
 
 }  // namespace

@@ -20,7 +20,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return {MakeSpec("none", {{"eta", 1, 3, 128, Warp::Sqrt}})};
 }
 
-std::vector<double> Evaluate(const TableSpec&, const double* x, double tol, IntegrationStats& stats) {
+std::vector<double> Evaluate(const TableSpec&, const double* x, double tol,
+                             IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
   return {FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, x[0], 0}, opt, stats)};
@@ -42,8 +43,10 @@ std::string Integrate(const IntegrateRequest& req, const ModelParams& p, Integra
   const std::string what = "integrate " + req.name;
   if (!req.model.empty()) throw std::invalid_argument(what + ": takes no --model");
   if (!p.eta) throw std::invalid_argument(what + ": needs --eta");
-  if (!(*p.eta > 0 && *p.eta <= 100)) throw std::invalid_argument(what + ": --eta must be in (0, 100]");
-  if (p.k && !(*p.k >= 0 && *p.k <= 100)) throw std::invalid_argument(what + ": --k must be in [0, 100]");
+  if (!(*p.eta > 0 && *p.eta <= 100))
+    throw std::invalid_argument(what + ": --eta must be in (0, 100]");
+  if (p.k && !(*p.k >= 0 && *p.k <= 100))
+    throw std::invalid_argument(what + ": --k must be in [0, 100]");
   if (p.roughness || p.rho || p.f0 || p.rs || p.nu || p.nv)
     throw std::invalid_argument(what + ": takes only --eta and --k");
   return Full17(FresnelAverage(FresnelFromParams(p), RequestOptions(req), stats));

@@ -71,7 +71,7 @@ struct QuantityInfo {
   std::string (*method)(const TableSpec& spec) = nullptr;
 
   // --- Scenes ------------------------------------------------------------------------------
-  bool sceneKind = false;           ///< a scene may ask for it; the planner narrows its axes
+  bool sceneKind = false;            ///< a scene may ask for it; the planner narrows its axes
   const char* sceneModel = nullptr;  ///< model of a scene's table: null = the material's model
   /// Axes a material bounds: {table axis, material parameter}; a pair whose parameter the
   /// material's model does not take is left out (the axis spans its whole range).
