@@ -110,7 +110,7 @@ const QuantityInfo* FindQuantity(std::string_view name);
 inline const char* QuantityName(Quantity q) { return Describe(q).name; }
 
 /// The file name of a table of kind `q` for `model` with the kind's default axes (e.g.
-/// "ggx-dfg", "fresnel-dielectric").
+/// ggx-dfg, fresnel-dielectric).
 std::string TableName(Quantity q, const std::string& model);
 
 }  // namespace kiln
