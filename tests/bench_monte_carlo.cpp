@@ -178,11 +178,11 @@ TEST_CASE("EstimateTable bakes the spec's nodes, the same on any thread count", 
         size_t k = static_cast<size_t>(j * 5 + i) + (spec.axes.size() == 3 ? 2 * 25 : 0);
         double alpha = std::max(r.node(j) * r.node(j), MinAlpha);
         double c = mu.warp == Warp::Root4Layer ? layerScale(r.lo, r.hi, r.node(j)) : 1e-12;
-        if (spec.quantity == "dfg") {
+        if (spec.quantity == FindQuantity("dfg")->id) {
           auto ab = EstimateDFG(points, mu.node(i, c), alpha);
           CHECK(one.data[k * nc] == static_cast<float>(ab[0]));
           CHECK(one.data[k * nc + 1] == static_cast<float>(ab[1]));
-        } else if (spec.quantity == "fresnel-albedo") {
+        } else if (spec.quantity == FindQuantity("fresnel-albedo")->id) {
           double eta = spec.axes[2].ToAxis().node(2);
           CHECK(one.data[k] == static_cast<float>(EstimateFresnelAlbedo(points, mu.node(i, c), alpha, eta)));
         } else {

@@ -9,6 +9,7 @@
 
 #include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/quantities.h"
+#include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
 
 using namespace kiln;
@@ -97,13 +98,13 @@ TEST_CASE("The ggx dfg and albedo tables are baked by the fixed rule, the others
           "[integrate][fixed-rule][tables]") {
   TableSpec dfg;
   dfg.model = "ggx";
-  dfg.quantity = "dfg";
+  dfg.quantity = FindQuantity("dfg")->id;
   dfg.axes = {AxisSpec{"mu", 0, 1, 8, Warp::Root4}, AxisSpec{"roughness", 0, 1, 8, Warp::Sqrt}};
   dfg.channels = {"A", "B"};
   CHECK(UsesFixedRule(dfg));
   CHECK(dfg.Method().find("fixed") != std::string::npos);
   TableSpec albedo = dfg;
-  albedo.quantity = "albedo";
+  albedo.quantity = FindQuantity("albedo")->id;
   albedo.channels = {"E"};
   CHECK(UsesFixedRule(albedo));
   const double x[2] = {0.3, 0.4};
@@ -114,6 +115,26 @@ TEST_CASE("The ggx dfg and albedo tables are baked by the fixed rule, the others
   CHECK(std::abs(e[0] - ref[0]) <= kFixedRuleBound);
   CHECK(e[0] != ref[0]);
   TableSpec beckmann = dfg;
+  beckmann.model = "beckmann";
+  CHECK_FALSE(UsesFixedRule(beckmann));
+}
+
+TEST_CASE("The ggx albedo-avg table is baked by the fixed cosine-average rule, within 1e-7 of "
+          "nested adaptive quadrature at every roughness",
+          "[integrate][fixed-rule][tables]") {
+  TableSpec avg = CatalogueTable("ggx-albedo-avg");
+  REQUIRE(UsesFixedRule(avg));
+  CHECK(avg.Method().find("fixed Gauss-Legendre rule (8 nodes per panel") != std::string::npos);
+  for (double r : {0.0, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0}) {
+    IntegrationStats fixed, adaptive;
+    double e = EvaluateSpec(avg, &r, fixed)[0];
+    double ref = EvaluateSpec(avg, &r, 1e-10, adaptive)[0];  // the reference stays adaptive
+    INFO("r = " << r << ": fixed - adaptive = " << e - ref << " (" << fixed.evals << " vs "
+                << adaptive.evals << " evaluations)");
+    CHECK(std::abs(e - ref) <= 1e-7);
+    CHECK(fixed.evals * 20 < adaptive.evals);
+  }
+  TableSpec beckmann = avg;
   beckmann.model = "beckmann";
   CHECK_FALSE(UsesFixedRule(beckmann));
 }

@@ -17,7 +17,7 @@ TEST_CASE("Two materials, one table per kind over the union of their roughness",
     CHECK(r->lo == 0.3);
     CHECK(r->hi == 0.6);
     // The catalogue's sqrt-warped roughness spacing over [0.3, 0.6] (128 nodes; 64 for the average).
-    CHECK(r->size == (t.spec.quantity == "albedo-avg" ? 18 : 36));
+    CHECK(r->size == (QuantityName(t.spec.quantity) == std::string("albedo-avg") ? 18 : 36));
     CHECK(r->warp == Warp::Linear);
   }
   // 'Leftover' is on no mesh: unused, so its roughness 0.05 does not widen anything.

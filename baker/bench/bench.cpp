@@ -485,9 +485,12 @@ class Bench {
     for (const Kind& k : plan_.kinds) {
       TableSpec spec = Sized(k.table, k.base);
       std::string model = spec.model;
+      // A table with an eta axis (ggx-fresnel-albedo) is of the model with exact Fresnel.
+      const bool fresnel = std::any_of(spec.axes.begin(), spec.axes.end(),
+                                       [](const AxisSpec& a) { return a.name == "eta"; });
       // 1D: the average-albedo table of the same model (its lookup cost does not depend on tol).
-      if (spec.quantity != "fresnel-albedo") {
-        TableSpec avg = Sized(model + "-albedo-avg", plan_.runtime1DSize);
+      if (!fresnel) {
+        TableSpec avg = Sized(TableName(Quantity::AlbedoAvg, model), plan_.runtime1DSize);
         avg.tol = plan_.runtimeTableTol;
         BakeOptions bo;
         bo.threads = threads_;
@@ -495,7 +498,7 @@ class Bench {
         Lookups(BakeTable(avg, bo), SizeText(avg));
       }
       Lookups(Kiln(spec, spec.tol, threads_).table, SizeText(spec));
-      if (spec.quantity == "fresnel-albedo") {
+      if (fresnel) {
         ModelParams p;
         p.roughness = 0.5;
         p.eta = 1.5;

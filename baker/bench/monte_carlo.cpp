@@ -150,21 +150,98 @@ RhoParts EstimateDiffuseAlbedo(const PointSet& points, const AnyModel& model, do
   return std::visit([&](const auto& m) { return DiffuseAt(d, m, mu); }, model);
 }
 
-bool EstimatorSupports(const TableSpec& spec) {
-  auto named = [&](std::initializer_list<const char*> names) {
-    if (spec.axes.size() != names.size()) return false;
-    size_t i = 0;
-    for (const char* n : names)
-      if (spec.axes[i++].name != n) return false;
-    return true;
-  };
-  if (spec.quantity == "dfg") return spec.model == "ggx" && named({"mu", "roughness"});
-  if (spec.quantity == "fresnel-albedo") return named({"mu", "roughness", "eta"});
-  if (spec.quantity == "albedo") {
-    const ModelInfo* info = FindModel(spec.model);
-    return info && !info->specular() && named({"mu", "roughness"});
+namespace {
+
+/// True when the spec's axes are exactly `names`, in order.
+bool AxesNamed(const TableSpec& spec, std::initializer_list<const char*> names) {
+  if (spec.axes.size() != names.size()) return false;
+  size_t i = 0;
+  for (const char* n : names)
+    if (spec.axes[i++].name != n) return false;
+  return true;
+}
+
+/// The nodes of a (mu, roughness[, eta]) table's rows: row k is roughness node k % rSize (eta
+/// node k / rSize), its mu nodes placed by the root4-layer scale of that roughness.
+struct Rows {
+  Axis mu, r;
+  int width, rSize;
+  explicit Rows(const TableSpec& spec)
+      : mu(spec.axes[0].ToAxis()), r(spec.axes[1].ToAxis()), width(spec.axes[0].size),
+        rSize(spec.axes[1].size) {}
+  double Roughness(size_t k) const { return r.node(static_cast<int>(k % rSize)); }
+  double LayerScale(double rk) const {
+    return mu.warp == Warp::Root4Layer ? layerScale(r.lo, r.hi, rk) : 1e-12;
   }
-  return false;
+};
+
+bool GgxDfgSupports(const TableSpec& spec) {
+  return spec.model == "ggx" && AxesNamed(spec, {"mu", "roughness"});
+}
+
+MonteCarloRows GgxDfgRows(const TableSpec& spec, const PointSet& points) {
+  return [rows = Rows(spec), &points](size_t k, float* out) {
+    double r = rows.Roughness(k), c = rows.LayerScale(r), alpha = GGXAlpha(r);
+    GGXHalfVectors h(points, alpha);
+    for (int i = 0; i < rows.width; ++i) {
+      auto ab = DFGAt(h, rows.mu.node(i, c), alpha);
+      out[2 * i] = static_cast<float>(ab[0]);
+      out[2 * i + 1] = static_cast<float>(ab[1]);
+    }
+  };
+}
+
+bool GgxFresnelAlbedoSupports(const TableSpec& spec) {
+  return AxesNamed(spec, {"mu", "roughness", "eta"});
+}
+
+MonteCarloRows GgxFresnelAlbedoRows(const TableSpec& spec, const PointSet& points) {
+  return [rows = Rows(spec), etaAxis = spec.axes[2].ToAxis(), &points](size_t k, float* out) {
+    double r = rows.Roughness(k), c = rows.LayerScale(r), alpha = GGXAlpha(r);
+    GGXHalfVectors h(points, alpha);
+    double eta = etaAxis.node(static_cast<int>(k / rows.rSize));
+    for (int i = 0; i < rows.width; ++i)
+      out[i] = static_cast<float>(FresnelAlbedoAt(h, rows.mu.node(i, c), alpha, eta));
+  };
+}
+
+bool DiffuseAlbedoSupports(const TableSpec& spec) {
+  const ModelInfo* info = FindModel(spec.model);
+  return info && !info->specular() && AxesNamed(spec, {"mu", "roughness"});
+}
+
+MonteCarloRows DiffuseAlbedoRows(const TableSpec& spec, const PointSet& points) {
+  // Shared by every row of a diffuse table; built once, outside the rows.
+  auto cosine = std::make_shared<const CosineDirections>(points);
+  size_t nc = spec.channels.size();
+  return [rows = Rows(spec), cosine, nc, model = spec.model](size_t k, float* out) {
+    double r = rows.Roughness(k), c = rows.LayerScale(r);
+    std::visit(
+        [&](const auto& m) {
+          for (int i = 0; i < rows.width; ++i) {
+            RhoParts e = DiffuseAt(*cosine, m, rows.mu.node(i, c));
+            if (nc == 2) {
+              out[2 * i] = static_cast<float>(e.lin);
+              out[2 * i + 1] = static_cast<float>(e.quad);
+            } else {
+              out[i] = static_cast<float>(e.lin + e.quad);
+            }
+          }
+        },
+        ModelAt(model, r));
+  };
+}
+
+}  // namespace
+
+const MonteCarloEstimator kGgxDfgMonteCarlo = {GgxDfgSupports, GgxDfgRows};
+const MonteCarloEstimator kGgxFresnelAlbedoMonteCarlo = {GgxFresnelAlbedoSupports,
+                                                         GgxFresnelAlbedoRows};
+const MonteCarloEstimator kDiffuseAlbedoMonteCarlo = {DiffuseAlbedoSupports, DiffuseAlbedoRows};
+
+bool EstimatorSupports(const TableSpec& spec) {
+  const MonteCarloEstimator* mc = Describe(spec.quantity).monteCarlo;
+  return mc && mc->supports(spec);
 }
 
 namespace {
@@ -195,7 +272,7 @@ std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
 }  // namespace
 
 Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats) {
-  if (!(spec.quantity == "dfg" && spec.model == "ggx" && EstimatorSupports(spec)))
+  if (!(Describe(spec.quantity).monteCarlo == &kGgxDfgMonteCarlo && EstimatorSupports(spec)))
     throw std::invalid_argument("table '" + spec.name + "': no per-texel Monte Carlo estimator for it");
   Table t = TableShell(spec, kBenchGenerator, std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
   const int width = spec.axes[0].size, rSize = spec.axes[1].size;
@@ -230,49 +307,11 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
     throw std::invalid_argument("table '" + spec.name + "': no Monte Carlo estimator for it");
   Table t = TableShell(spec, kBenchGenerator, method);
   size_t nc = spec.channels.size();
-  int width = spec.axes[0].size;
-  size_t rows = spec.TexelCount() / static_cast<size_t>(width);
-  Axis muAxis = spec.axes[0].ToAxis(), rAxis = spec.axes[1].ToAxis();
-  int rSize = spec.axes[1].size;
+  size_t width = static_cast<size_t>(spec.axes[0].size);
+  size_t rows = spec.TexelCount() / width;
   auto t0 = std::chrono::steady_clock::now();
-  // Shared by every row of a diffuse table; built once, outside the rows.
-  std::unique_ptr<CosineDirections> cosine;
-  if (spec.quantity == "albedo") cosine = std::make_unique<CosineDirections>(points);
-  auto row = [&](size_t k) {
-    double r = rAxis.node(static_cast<int>(k % rSize));
-    double c = spec.axes[0].warp == Warp::Root4Layer ? layerScale(rAxis.lo, rAxis.hi, r) : 1e-12;
-    float* out = &t.data[k * width * nc];
-    if (spec.quantity == "albedo") {
-      AnyModel model = ModelAt(spec.model, r);
-      std::visit(
-          [&](const auto& m) {
-            for (int i = 0; i < width; ++i) {
-              RhoParts e = DiffuseAt(*cosine, m, muAxis.node(i, c));
-              if (nc == 2) {
-                out[2 * i] = static_cast<float>(e.lin);
-                out[2 * i + 1] = static_cast<float>(e.quad);
-              } else {
-                out[i] = static_cast<float>(e.lin + e.quad);
-              }
-            }
-          },
-          model);
-      return;
-    }
-    double alpha = GGXAlpha(r);
-    GGXHalfVectors h(points, alpha);
-    if (spec.quantity == "dfg") {
-      for (int i = 0; i < width; ++i) {
-        auto ab = DFGAt(h, muAxis.node(i, c), alpha);
-        out[2 * i] = static_cast<float>(ab[0]);
-        out[2 * i + 1] = static_cast<float>(ab[1]);
-      }
-    } else {
-      double eta = spec.axes[2].ToAxis().node(static_cast<int>(k / rSize));
-      for (int i = 0; i < width; ++i)
-        out[i] = static_cast<float>(FresnelAlbedoAt(h, muAxis.node(i, c), alpha, eta));
-    }
-  };
+  MonteCarloRows fill = Describe(spec.quantity).monteCarlo->prepare(spec, points);
+  auto row = [&](size_t k) { fill(k, &t.data[k * width * nc]); };
   tbb::task_arena arena(Threads(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 1), [&](const tbb::blocked_range<size_t>& b) {

@@ -18,6 +18,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,8 +58,26 @@ std::array<double, 2> EstimateDFG(const PointSet& points, double mu, double alph
 double EstimateFresnelAlbedo(const PointSet& points, double mu, double alpha, double eta);
 RhoParts EstimateDiffuseAlbedo(const PointSet& points, const AnyModel& model, double mu);
 
-/// True when EstimateTable can bake `spec`: quantity dfg of model ggx, fresnel-albedo, or
-/// albedo of a diffuse (light-space) model.
+/// Fills row `row` of a table (axis 0, all channels interleaved: width x channels floats at
+/// `out`); called from several threads at once.
+using MonteCarloRows = std::function<void(size_t row, float* out)>;
+
+/// A table kind's Monte Carlo estimator (QuantityInfo::monteCarlo): which specs it can bake, and
+/// the row filler over a point set (state every row shares, e.g. the cosine-weighted
+/// directions, built once by prepare; `points` must outlive the filler).
+struct MonteCarloEstimator {
+  bool (*supports)(const TableSpec& spec);
+  MonteCarloRows (*prepare)(const TableSpec& spec, const PointSet& points);
+};
+
+/// The estimators the descriptors point to: GGX dfg over (mu, roughness); ggx-fresnel-albedo
+/// over (mu, roughness, eta); the albedo of a diffuse (light-space) model over (mu, roughness).
+extern const MonteCarloEstimator kGgxDfgMonteCarlo;
+extern const MonteCarloEstimator kGgxFresnelAlbedoMonteCarlo;
+extern const MonteCarloEstimator kDiffuseAlbedoMonteCarlo;
+
+/// True when EstimateTable can bake `spec`: its quantity has an estimator that supports it
+/// (today dfg of model ggx, fresnel-albedo, and albedo of a diffuse model).
 bool EstimatorSupports(const TableSpec& spec);
 
 /// Bakes `spec`'s texels (the same nodes, layout and metadata as BakeTable, no lookup-error

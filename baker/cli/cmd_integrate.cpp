@@ -1,18 +1,42 @@
 // kiln integrate: one hemispherical integral, printed at full precision on one line.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
 #include "baker/cli/commands.h"
-#include "baker/integrate/quantities.h"
+#include "baker/integrate/hemisphere.h"
+#include "baker/quantities/quantity.h"
 
 namespace kiln::cli {
 
+namespace {
+
+/// The quantities `kiln integrate` offers, by their command name (alphabetical).
+std::vector<const QuantityInfo*> Integrable() {
+  std::vector<const QuantityInfo*> out;
+  for (const QuantityInfo* q : AllQuantities())
+    if (q->integrateName) out.push_back(q);
+  std::sort(out.begin(), out.end(), [](const QuantityInfo* a, const QuantityInfo* b) {
+    return std::string(a->integrateName) < b->integrateName;
+  });
+  return out;
+}
+
+}  // namespace
+
 void RegisterIntegrate(CLI::App& app) {
-  auto* sub = app.add_subcommand(
-      "integrate",
-      "print a hemispherical integral: albedo (E at rho = 1, F = 1), albedo-avg, dfg (A B), "
-      "fresnel-avg");
+  std::vector<std::string> names, help;
+  for (const QuantityInfo* q : Integrable()) {
+    names.push_back(q->integrateName);
+    help.push_back(q->integrateHelp);
+  }
+  auto join = [](const std::vector<std::string>& items, const std::string& sep) {
+    std::string s;
+    for (const std::string& i : items) s += (s.empty() ? "" : sep) + i;
+    return s;
+  };
+  auto* sub = app.add_subcommand("integrate", "print a hemispherical integral: " + join(help, ", "));
   struct Args {
     std::string quantity, model;
     double mu = 1, tol = 1e-9;
@@ -21,9 +45,9 @@ void RegisterIntegrate(CLI::App& app) {
     ModelParamOptions params;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("quantity", args->quantity, "albedo | albedo-avg | dfg | fresnel-avg")
+  sub->add_option("quantity", args->quantity, join(names, " | "))
       ->required()
-      ->check(CLI::IsMember({"albedo", "albedo-avg", "dfg", "fresnel-avg"}));
+      ->check(CLI::IsMember(names));
   sub->add_option("--model,-m", args->model, "model id (see kiln list)");
   args->oMu = sub->add_option("--mu", args->mu, "cos(theta_o), [0, 1]");
   sub->add_option("--tol", args->tol, "absolute tolerance")->capture_default_str();
@@ -31,45 +55,27 @@ void RegisterIntegrate(CLI::App& app) {
   args->params.Add(sub);
   sub->callback([args] {
     const std::string& q = args->quantity;
+    const QuantityInfo* info = nullptr;
+    for (const QuantityInfo* i : Integrable())
+      if (q == i->integrateName) info = i;
+    if (!info) throw std::invalid_argument("integrate: unknown quantity '" + q + "'");
     if (!(args->tol > 0 && args->tol < 1))
       throw std::invalid_argument("integrate: --tol must be in (0, 1)");
-    bool needsMu = q == "albedo" || q == "dfg";
+    bool needsMu = info->integrateNeedsMu;
     if (needsMu && !args->oMu->count()) throw std::invalid_argument("integrate " + q + ": needs --mu");
     if (!needsMu && args->oMu->count())
       throw std::invalid_argument("integrate " + q + ": takes no --mu");
     if (needsMu && !(args->mu >= 0 && args->mu <= 1))
       throw std::invalid_argument("integrate: --mu = " + FullPrecision(args->mu) +
                                   " is outside [0, 1]");
-    IntegrationOptions opt;
-    opt.tol = args->tol;
+    IntegrateRequest request;
+    request.name = q;
+    request.model = args->model;
+    request.mu = args->mu;
+    request.tol = args->tol;
     IntegrationStats stats;
     auto t0 = std::chrono::steady_clock::now();
-    std::string out;
-    ModelParams p = args->params.Params();
-    if (q == "fresnel-avg") {
-      if (!args->model.empty()) throw std::invalid_argument("integrate fresnel-avg: takes no --model");
-      if (!p.eta) throw std::invalid_argument("integrate fresnel-avg: needs --eta");
-      if (!(*p.eta > 0 && *p.eta <= 100))
-        throw std::invalid_argument("integrate fresnel-avg: --eta must be in (0, 100]");
-      if (p.k && !(*p.k >= 0 && *p.k <= 100))
-        throw std::invalid_argument("integrate fresnel-avg: --k must be in [0, 100]");
-      if (p.roughness || p.rho || p.f0 || p.rs || p.nu || p.nv)
-        throw std::invalid_argument("integrate fresnel-avg: takes only --eta and --k");
-      out = FullPrecision(FresnelAverage(FresnelFromParams(p), opt, stats));
-    } else {
-      if (args->model.empty()) throw std::invalid_argument("integrate " + q + ": needs --model");
-      // Albedo tables use F = 1 and rho = 1 unless a Fresnel parameter is given explicitly.
-      AnyModel model = MakeModel(args->model, p);
-      if (q == "albedo" || q == "albedo-avg") {
-        RhoParts e = q == "albedo" ? DirectionalAlbedo(model, args->mu, opt, stats)
-                                   : AverageAlbedo(model, opt, stats);
-        double rho = p.rho.value_or(1);
-        out = FullPrecision(e.At(rho));
-      } else {
-        auto ab = SplitSumDFG(model, args->mu, opt, stats);
-        out = FullPrecision(ab[0]) + " " + FullPrecision(ab[1]);
-      }
-    }
+    std::string out = info->integrate(request, args->params.Params(), stats);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("%s\n", out.c_str());
     if (args->stats)

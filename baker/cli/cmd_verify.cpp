@@ -84,7 +84,7 @@ void RegisterVerify(CLI::App& app) {
       try {
         spec = SpecFromTable(t);
       } catch (const std::exception& e) {
-        fail("cannot read kiln.params '" + t.params + "' (" + e.what() + ")");
+        fail(e.what());  // an unknown quantity, or unreadable params (SpecFromTable says which)
         continue;
       }
       std::string filter = args->filter.empty() ? t.lookupError.filter : args->filter;

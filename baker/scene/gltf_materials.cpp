@@ -49,7 +49,7 @@ class MaterialReader {
   void Note(Kind kind, const std::string& topic, const std::string& why) {
     scene_.notes.push_back({kind, topic, why, label_});
   }
-  void Need(const std::string& kind, std::map<std::string, ValueRange> ranges, const std::string& why) {
+  void Need(Quantity kind, std::map<std::string, ValueRange> ranges, const std::string& why) {
     scene_.needs.push_back({kind, "ggx", std::move(ranges), label_ + ": " + why});
   }
   /// A factor in [lo, hi] multiplied by an optional texture: one value without a texture,
@@ -119,9 +119,9 @@ void MaterialReader::Read() {
     ValueRange metal = Factor(p, at, "metallicFactor", 1, "metallicRoughnessTexture", metalWhat);
     fullyMetallic = metal.Single() && metal.lo == 1;
   }
-  Need("dfg", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
-  Need("albedo", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
-  Need("albedo-avg", {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  Need(Quantity::Dfg, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  Need(Quantity::Albedo, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
+  Need(Quantity::AlbedoAvg, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
   if (!fullyMetallic) Note(Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly");
 
   if (const Json* cc = Ext("KHR_materials_clearcoat")) {
@@ -132,7 +132,7 @@ void MaterialReader::Read() {
     } else {
       std::string rWhat;
       ValueRange cr = Factor(*cc, at, "clearcoatRoughnessFactor", 0, "clearcoatRoughnessTexture", rWhat);
-      Need("dfg", {{"roughness", cr}}, "clearcoat GGX lobe, " + rWhat);
+      Need(Quantity::Dfg, {{"roughness", cr}}, "clearcoat GGX lobe, " + rWhat);
     }
   }
 
@@ -191,7 +191,7 @@ void MaterialReader::Read() {
         what += ", KHR_materials_dispersion " + ExactNumber(dispersion) + ": ior " + eta.Text();
       }
       if (transmits && vol) what += ", KHR_materials_volume";
-      Need("fresnel-albedo", {{"roughness", rough}, {"eta", eta}},
+      Need(Quantity::FresnelAlbedo, {{"roughness", rough}, {"eta", eta}},
            "dielectric layer (" + what + "), " + roughWhat);
       if (transmits && vol)
         Note(Kind::NoTable, "KHR_materials_volume",

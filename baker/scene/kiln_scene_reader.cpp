@@ -16,15 +16,9 @@ const ParamInfo* FindParam(const ModelInfo& m, const std::string& name) {
 }
 
 /// Why model `m` has no table of `kind` ("" when it has one).
-std::string KindProblem(const ModelInfo& m, const std::string& kind) {
-  if (kind == "dfg" && !m.specular()) return "dfg needs a microfacet model";
-  if ((kind == "fresnel-albedo" || kind == "fresnel-albedo-avg") && m.id != "ggx")
-    return kind + " is baked for ggx only";
-  if ((kind == "fresnel-dielectric" || kind == "fresnel-dielectric-avg") && !FindParam(m, "eta"))
-    return kind + " needs a model with eta";
-  if (kind == "fresnel-conductor" && !(FindParam(m, "eta") && FindParam(m, "k")))
-    return kind + " needs a model with eta and k";
-  return "";
+std::string KindProblem(const ModelInfo& m, Quantity kind) {
+  const QuantityInfo& q = Describe(kind);
+  return q.sceneProblem ? q.sceneProblem(m) : "";
 }
 
 std::string Join(const std::vector<std::string>& items) {
@@ -65,7 +59,7 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
   if (!info) r.Fail(PointerChild(at, "model"), "unknown model '" + id + "' (see `kiln list`)");
 
   std::map<std::string, ValueRange> values;
-  std::vector<std::string> kinds;
+  std::vector<Quantity> kinds;
   bool kindsGiven = false;
   for (auto it = m.begin(); it != m.end(); ++it) {
     const std::string& key = it.key();
@@ -76,13 +70,13 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
       r.Array(*it, kat);
       for (size_t j = 0; j < it->size(); ++j) {
         std::string jat = PointerChild(kat, j);
-        std::string kind = r.String((*it)[j], jat);
-        const auto& all = SceneTableKinds();
-        if (std::find(all.begin(), all.end(), kind) == all.end())
-          r.Fail(jat, "unknown table kind '" + kind + "' (one of: " + Join(all) + ")");
-        std::string problem = KindProblem(*info, kind);
-        if (!problem.empty()) r.Fail(jat, "model '" + id + "' has no " + kind + " table: " + problem);
-        if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) kinds.push_back(kind);
+        std::string name = r.String((*it)[j], jat);
+        const QuantityInfo* q = FindQuantity(name);
+        if (!q || !q->sceneKind)
+          r.Fail(jat, "unknown table kind '" + name + "' (one of: " + Join(SceneTableKinds()) + ")");
+        std::string problem = KindProblem(*info, q->id);
+        if (!problem.empty()) r.Fail(jat, "model '" + id + "' has no " + name + " table: " + problem);
+        if (std::find(kinds.begin(), kinds.end(), q->id) == kinds.end()) kinds.push_back(q->id);
       }
       continue;
     }
@@ -104,13 +98,14 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
     if (id == "lambert") {
       scene.notes.push_back({Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly", label});
     } else if (info->specular()) {
-      kinds = {"dfg", "albedo", "albedo-avg"};
-      if (conductor) kinds.push_back("fresnel-conductor");
-      else if (values.count("eta") && id == "ggx") kinds.push_back("fresnel-albedo");
+      kinds = {Quantity::Dfg, Quantity::Albedo, Quantity::AlbedoAvg};
+      if (conductor) kinds.push_back(Quantity::FresnelConductor);
+      else if (values.count("eta") && KindProblem(*info, Quantity::FresnelAlbedo).empty())
+        kinds.push_back(Quantity::FresnelAlbedo);
       else if (values.count("eta"))
         scene.notes.push_back({Kind::NotYet, "eta", "exact-Fresnel albedo tables are baked for ggx only", label});
     } else {
-      kinds = {"albedo", "albedo-avg"};
+      kinds = {Quantity::Albedo, Quantity::AlbedoAvg};
     }
   } else if (kinds.empty()) {
     scene.notes.push_back({Kind::NoTable, "tables: []", "the material asks for no table", label});
@@ -136,24 +131,14 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
   };
   std::string what = "model " + id;
   for (const auto& [name, v] : values) what += ", " + name + " " + v.Text();
-  bool rough = FindParam(*info, "roughness") != nullptr;
-  for (const std::string& kind : kinds) {
+  for (Quantity kind : kinds) {
+    const QuantityInfo& q = Describe(kind);
     TableNeed need;
     need.kind = kind;
     need.reason = label + ": " + what;
-    if (kind == "dfg" || kind == "albedo" || kind == "albedo-avg") {
-      need.model = id;
-      if (rough) need.ranges["roughness"] = value("roughness");
-    } else if (kind == "fresnel-albedo" || kind == "fresnel-albedo-avg") {
-      need.model = "ggx";
-      need.ranges = {{"roughness", value("roughness")}, {"eta", value("eta")}};
-    } else if (kind == "fresnel-dielectric" || kind == "fresnel-dielectric-avg") {
-      need.model = "none";
-      need.ranges = {{"eta", value("eta")}};
-    } else {  // fresnel-conductor
-      need.model = "none";
-      need.ranges = {{"n", value("eta")}, {"k", value("k")}};
-    }
+    need.model = q.sceneModel ? q.sceneModel : id;
+    for (const auto& [axis, param] : q.sceneAxes)
+      if (FindParam(*info, param)) need.ranges[axis] = value(param);
     scene.needs.push_back(need);
   }
 }
@@ -161,9 +146,12 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
 }  // namespace
 
 const std::vector<std::string>& SceneTableKinds() {
-  static const std::vector<std::string> kinds = {
-      "dfg", "albedo", "albedo-avg", "fresnel-albedo", "fresnel-albedo-avg",
-      "fresnel-dielectric", "fresnel-dielectric-avg", "fresnel-conductor"};
+  static const std::vector<std::string> kinds = [] {
+    std::vector<std::string> v;
+    for (const QuantityInfo* q : AllQuantities())
+      if (q->sceneKind) v.push_back(q->name);
+    return v;
+  }();
   return kinds;
 }
 

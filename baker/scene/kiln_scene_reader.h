@@ -27,7 +27,8 @@ namespace kiln {
 /// an unknown version, model, key or table kind, or a value outside the model's range.
 Scene ReadKilnScene(const Json& doc, const std::string& path);
 
-/// The table kinds a kiln scene may ask for, in the order the planner lists them.
+/// The names of the table kinds a kiln scene may ask for (QuantityInfo::sceneKind), in registry
+/// order.
 const std::vector<std::string>& SceneTableKinds();
 
 }  // namespace kiln

@@ -11,37 +11,10 @@
 namespace kiln {
 namespace {
 
-/// The catalogue's name for a table kind of a model.
-std::string CatalogueName(const std::string& kind, const std::string& model) {
-  if (kind == "dfg" || kind == "albedo" || kind == "albedo-avg") return model + "-" + kind;
-  if (kind == "fresnel-albedo" || kind == "fresnel-albedo-avg") return "ggx-" + kind;
-  return kind;
-}
-
-/// Quantities whose EvaluateSpec reads a missing axis from the spec's params.
-bool ReadsParams(const std::string& quantity) {
-  return quantity == "fresnel-albedo" || quantity == "fresnel-albedo-avg";
-}
-
 std::string NameTag(const std::string& axis) {
   if (axis == "roughness") return "r";
   if (axis == "eta") return "ior";
   return axis;
-}
-
-/// Builds a spec with the catalogue's default axes for a kind the catalogue does not list.
-TableSpec BuiltSpec(const std::string& kind, const std::string& model) {
-  AxisSpec mu = DefaultMuAxis(kind);
-  if (kind == "dfg") return DfgSpec(model, mu, DefaultRoughnessAxis(model));
-  if (kind == "albedo") return AlbedoSpec(model, mu, DefaultRoughnessAxis(model));
-  if (kind == "albedo-avg") return AlbedoAvgSpec(model, DefaultRoughnessAxis(model));
-  if (kind == "fresnel-albedo") return FresnelAlbedoSpec(mu, DefaultRoughnessAxis("ggx"), DefaultEtaAxis());
-  if (kind == "fresnel-albedo-avg") return FresnelAlbedoAvgSpec(DefaultRoughnessAxis("ggx"), DefaultEtaAxis());
-  if (kind == "fresnel-dielectric") return FresnelDielectricSpec(mu, DefaultEtaAxis());
-  if (kind == "fresnel-dielectric-avg") return FresnelDielectricAvgSpec(DefaultEtaAxis());
-  if (kind == "fresnel-conductor")
-    return FresnelConductorSpec(mu, {"n", 0.1, 4, 32, Warp::Linear}, {"k", 0, 8, 32, Warp::Linear});
-  throw std::invalid_argument("plan: unknown table kind '" + kind + "'");
 }
 
 bool HasRoughness(const std::string& model) {
@@ -71,7 +44,7 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
     if (v.lo == a.lo && v.hi == a.hi) continue;
     std::string tag = NameTag(a.name) + ShortNumber(v.lo) + (v.Single() ? "" : "-" + ShortNumber(v.hi));
     if (v.Single())
-      cuts.push_back({i, ReadsParams(spec.quantity), v.lo, SliceAxis(a, v.lo), tag});
+      cuts.push_back({i, Describe(spec.quantity).readsParams, v.lo, SliceAxis(a, v.lo), tag});
     else
       cuts.push_back({i, false, 0, NarrowAxis(a, v.lo, v.hi), tag});
   }
@@ -94,15 +67,16 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
 
 }  // namespace
 
-TableSpec WholeTableSpec(const std::string& kind, const std::string& model, const PlanOptions& opt) {
-  CatalogueOptions copt;
-  copt.size = opt.size;
-  std::string name = CatalogueName(kind, model);
-  for (const TableSpec& s : DefaultCatalogue(copt))
-    if (s.name == name && s.quantity == kind) return s;
+TableSpec WholeTableSpec(Quantity kind, const std::string& model, const PlanOptions& opt) {
   if (!FindModel(model) && model != "none")
     throw std::invalid_argument("plan: unknown model '" + model + "'");
-  TableSpec s = BuiltSpec(kind, model);
+  CatalogueOptions copt;
+  copt.size = opt.size;
+  const QuantityInfo& q = Describe(kind);
+  TableSpec s = q.makeSpec(model, q.defaultAxes(model));
+  for (const TableSpec& c : DefaultCatalogue(copt))
+    if (c.name == s.name && c.quantity == kind) return c;
+  // A kind of a model the catalogue does not list: the kind's default axes.
   if (opt.size > 0)
     for (AxisSpec& a : s.axes)
       if (a.size > 2 || a.name != "roughness") a.size = opt.size;  // as the catalogue resizes
@@ -118,7 +92,8 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
 
   // Merge the needs by table (kind, model), resolving "whole" against the catalogue axis.
   struct Group {
-    std::string kind, model;
+    Quantity kind;
+    std::string model;
     TableSpec whole;
     std::map<std::string, ValueRange> ranges;
     std::vector<std::string> reasons;

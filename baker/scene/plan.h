@@ -6,8 +6,8 @@
 //     catalogue's own when no axis is cut);
 //   - an interval: NarrowAxis (the catalogue's node density, fewer nodes, at least 2);
 //   - one value: the axis is dropped and the value recorded in the spec's params when the
-//     quantity reads it from there (fresnel-albedo, fresnel-albedo-avg: a 3D table at one IOR is
-//     2D), otherwise a 2-node SliceAxis with a node exactly at the value (dfg, albedo, ...);
+//     quantity reads it from there (QuantityInfo::readsParams; fresnel-albedo: a 3D table at one
+//     IOR is 2D), otherwise a 2-node SliceAxis with a node exactly at the value (dfg, albedo, ...);
 //     a table never loses its last axis (that one becomes a slice).
 // Names say what was cut, axis by axis: "-r" roughness, "-ior" eta, "-n", "-k", each followed by
 // the value or "lo-hi" (6 significant digits): ggx-dfg-r0.3-0.6, ggx-fresnel-albedo-r0.1-ior1.5.
@@ -47,13 +47,13 @@ struct Plan {
 };
 
 /// Plans `scene`. Throws std::invalid_argument for a need the planner cannot build (an unknown
-/// kind or model: a reader bug, readers check both).
+/// model: a reader bug, readers check it).
 Plan PlanScene(const Scene& scene, const PlanOptions& opt = {});
 
 /// ReadScene(path), then PlanScene.
 Plan PlanSceneFile(const std::string& path, const PlanOptions& opt = {});
 
 /// The catalogue spec of table kind `kind` of `model` (all axes whole), resized by opt.size.
-TableSpec WholeTableSpec(const std::string& kind, const std::string& model, const PlanOptions& opt = {});
+TableSpec WholeTableSpec(Quantity kind, const std::string& model, const PlanOptions& opt = {});
 
 }  // namespace kiln

@@ -8,19 +8,6 @@
 namespace kiln {
 namespace {
 
-/// What a table kind is for, in a scene.
-std::string Purpose(const std::string& quantity) {
-  if (quantity == "dfg") return "split-sum specular: F0 A + F90 B";
-  if (quantity == "albedo") return "directional albedo E(mu): multiple-scattering compensation";
-  if (quantity == "albedo-avg") return "average albedo E_avg: multiple-scattering compensation";
-  if (quantity == "fresnel-albedo") return "albedo with exact dielectric Fresnel: dielectric layering, transmission";
-  if (quantity == "fresnel-albedo-avg") return "average albedo with exact dielectric Fresnel";
-  if (quantity == "fresnel-dielectric") return "exact dielectric Fresnel F(mu)";
-  if (quantity == "fresnel-dielectric-avg") return "average dielectric Fresnel";
-  if (quantity == "fresnel-conductor") return "exact conductor Fresnel F(mu)";
-  return quantity;
-}
-
 const char* NoteHeading(SceneNote::Kind kind) {
   switch (kind) {
     case SceneNote::Kind::NoTable: return "needs no table";
@@ -81,7 +68,8 @@ std::string FormatPlan(const Plan& plan, const std::string& dir) {
     const PlannedTable& t = plan.tables[i];
     const TableSpec& s = t.spec;
     out += "\n" + s.name + "  [" + StateName(states[i]) + "]\n";
-    out += "  " + s.quantity + " (" + Join(s.channels, ", ") + "): " + Purpose(s.quantity) + "\n";
+    const QuantityInfo& q = Describe(s.quantity);
+    out += "  " + std::string(q.name) + " (" + Join(s.channels, ", ") + "): " + q.description + "\n";
     out += "  axes: " + AxesText(s) + " = " + std::to_string(s.TexelCount()) + " texels, " +
            std::to_string(s.TexelCount() * s.channels.size() * 4) + " bytes as float32\n";
     std::vector<std::string> used;

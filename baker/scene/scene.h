@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "baker/quantities/quantity.h"
+
 namespace kiln {
 
 /// The values one material parameter takes: the closed interval [lo, hi] (lo == hi: one exact
@@ -28,11 +30,10 @@ struct ValueRange {
 };
 
 /// One table a material needs: table kind `kind` of model `model` over the values in `ranges`.
-/// kind is a TableSpec quantity the planner can narrow: "dfg", "albedo", "albedo-avg",
-/// "fresnel-albedo", "fresnel-albedo-avg", "fresnel-dielectric", "fresnel-dielectric-avg",
-/// "fresnel-conductor". An axis missing from `ranges` (mu always) spans its catalogue range.
+/// kind is a quantity the planner can narrow (QuantityInfo::sceneKind). An axis missing from
+/// `ranges` (mu always) spans its catalogue range.
 struct TableNeed {
-  std::string kind;
+  Quantity kind = Quantity::Dfg;
   std::string model;                         ///< "ggx", ...; "none" for the Fresnel tables
   std::map<std::string, ValueRange> ranges;  ///< by axis name: "roughness", "eta", "n", "k"
   std::string reason;                        ///< who needs it and why, one line

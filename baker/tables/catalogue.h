@@ -13,30 +13,25 @@ struct CatalogueOptions {
   double brdfRoughness = 0.5;  ///< roughness of the full-BRDF tables (*-brdf)
 };
 
-/// Every table of the default catalogue, in a fixed order.
+/// Every table of the default catalogue, in a fixed order (quantity by quantity, in registry
+/// order; each quantity's descriptor lists its entries).
 std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt = {});
 
 /// The catalogue entry with this name; throws std::invalid_argument naming the unknown table.
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt = {});
 
-/// Builders the scene planner shares with the catalogue (one table kind each). The axis ranges
-/// default to the catalogue's; a planner narrows them.
-TableSpec DfgSpec(const std::string& model, AxisSpec mu, AxisSpec roughness);
-TableSpec AlbedoSpec(const std::string& model, AxisSpec mu, AxisSpec roughness);
-TableSpec AlbedoAvgSpec(const std::string& model, AxisSpec roughness);
-TableSpec FresnelAlbedoSpec(AxisSpec mu, AxisSpec roughness, AxisSpec eta);
-TableSpec FresnelAlbedoAvgSpec(AxisSpec roughness, AxisSpec eta);
-TableSpec FresnelDielectricSpec(AxisSpec mu, AxisSpec eta);
-TableSpec FresnelDielectricAvgSpec(AxisSpec eta);
-TableSpec FresnelConductorSpec(AxisSpec mu, AxisSpec n, AxisSpec k);
-TableSpec BlinnPhongNormalizationSpec(AxisSpec s);
-TableSpec BrdfSpec(const std::string& model, double roughness, AxisSpec mu_l, AxisSpec mu_o,
-                   AxisSpec phi);
+/// The models the catalogue bakes its per-model tables for (quantity descriptors iterate them).
+const std::vector<std::string>& CatalogueMicrofacetModels();
+const std::vector<std::string>& CatalogueDiffuseModels();
 
-/// The catalogue's default axes (size and warp chosen per table kind).
-AxisSpec DefaultMuAxis(const std::string& quantity);
+/// The catalogue's default axes (size and warp chosen per model; quantity descriptors choose
+/// the rest, baker/quantities/).
+/// The roughness axis of a model's tables: sqrt for microfacet models, linear for the others, a
+/// 2-node constant axis for a model without roughness. Throws for an unknown model.
 AxisSpec DefaultRoughnessAxis(const std::string& model);
+/// The mu axis of a diffuse albedo table (sqrt, or angle for the models smooth in theta_o).
 AxisSpec DiffuseMuAxis(const std::string& model);
+/// The eta axis of the dielectric tables: [1, 3], 24 nodes, sqrt (dense near 1).
 AxisSpec DefaultEtaAxis();
 
 }  // namespace kiln

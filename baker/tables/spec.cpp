@@ -1,12 +1,7 @@
 #include "baker/tables/spec.h"
 
-#include <array>
 #include <cstdio>
 #include <stdexcept>
-
-#include "baker/integrate/fixed_rule_dfg.h"
-#include "baker/integrate/quantities.h"
-#include "baker/models/specular.h"
 
 namespace kiln {
 namespace {
@@ -20,15 +15,6 @@ std::string G17(double x) {
   return buf;
 }
 
-ModelParams WithRoughness(const std::string& model, double r) {
-  ModelParams p;
-  const ModelInfo* info = FindModel(model);
-  if (!info) throw std::invalid_argument("unknown model '" + model + "'");
-  for (const ParamInfo& q : info->params)
-    if (q.name == "roughness") p.roughness = Clamp(r, q.lo, q.hi);
-  return p;
-}
-
 }  // namespace
 
 std::string TableSpec::ParamsText() const {
@@ -37,38 +23,15 @@ std::string TableSpec::ParamsText() const {
   return s;
 }
 
-/// %g of a value ("6e-07").
-std::string Short(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 std::string TableSpec::Method() const {
-  auto tolText = " to " + G17(tol) + " abs";
-  if (quantity == "fresnel-dielectric" || quantity == "fresnel-conductor" || quantity == "brdf" ||
-      quantity == "blinn-phong-normalization")
-    return "closed form (exact evaluation at each node)";
-  if (quantity == "fresnel-dielectric-avg")
-    return "adaptive Gauss-Kronrod 7-15 in mu, split at the critical angle" + tolText;
-  if (UsesFixedRule(*this))
-    return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
-           "integrand's analytic scales, exact horizon cut; declared error " + Short(kFixedRuleBound) +
-           " abs";
-  const ModelInfo* info = FindModel(quantity.rfind("fresnel-albedo", 0) == 0 ? "ggx" : model);
-  std::string base = info && info->specular()
-                         ? "half-vector space: adaptive Gauss-Kronrod 7-15 over the NDF's CDF x "
-                           "phi_h, exact horizon cut"
-                         : "light space: adaptive Gauss-Kronrod 7-15 over theta_l x phi, panels "
-                           "split at theta_o and phi = pi/2";
-  if (quantity.find("-avg") != std::string::npos)
-    base += "; then 2 int E mu dmu by adaptive Gauss-Kronrod";
-  return base + tolText;
+  const QuantityInfo& q = Describe(quantity);
+  return UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
 }
 
 std::string TableSpec::Hash() const {
   std::string text = std::string(kIntegratorVersion) + "|" + std::to_string(kFormatVersion) + "|" +
-                     name + "|" + model + "|" + quantity + "|" + G17(tol) + "|" + ParamsText();
+                     name + "|" + model + "|" + QuantityName(quantity) + "|" + G17(tol) + "|" +
+                     ParamsText();
   // The fixed rule's own version (its tuned node counts): its tables re-bake when it changes.
   if (UsesFixedRule(*this)) text += "|fixed-rule:2";
   for (const std::string& c : channels) text += "|c:" + c;
@@ -102,7 +65,7 @@ Table TableShell(const TableSpec& spec, const std::string& generator, const std:
   t.generator = generator;
   t.name = spec.name;
   t.model = spec.model;
-  t.quantity = spec.quantity;
+  t.quantity = QuantityName(spec.quantity);
   t.channels = spec.channels;
   t.channelMeanings = spec.meanings;
   t.axes = spec.TableAxes();
@@ -116,15 +79,21 @@ TableSpec SpecFromTable(const Table& table) {
   TableSpec s;
   s.name = table.name;
   s.model = table.model;
-  s.quantity = table.quantity;
+  const QuantityInfo* q = FindQuantity(table.quantity);
+  if (!q) throw std::invalid_argument("table '" + table.name + "': unknown quantity '" + table.quantity + "'");
+  s.quantity = q->id;
   s.channels = table.channels;
   s.meanings = table.channelMeanings;
   for (const TableAxis& a : table.axes) s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp});
-  for (const std::string& kv : splitList(table.params, ';')) {
-    size_t eq = kv.find('=');
-    if (eq == std::string::npos)
-      throw std::invalid_argument("table '" + table.name + "': bad params entry '" + kv + "'");
-    s.params[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
+  try {
+    for (const std::string& kv : splitList(table.params, ';')) {
+      size_t eq = kv.find('=');
+      if (eq == std::string::npos)
+        throw std::invalid_argument("table '" + table.name + "': bad params entry '" + kv + "'");
+      s.params[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
+    }
+  } catch (const std::exception& e) {
+    throw std::invalid_argument("cannot read kiln.params '" + table.params + "' (" + e.what() + ")");
   }
   s.tol = table.tolerance;
   return s;
@@ -150,79 +119,18 @@ void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
 }
 
 bool UsesFixedRule(const TableSpec& spec) {
-  return spec.model == "ggx" && (spec.quantity == "dfg" || spec.quantity == "albedo") &&
-         spec.axes.size() == 2 && spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
+  const QuantityInfo& q = Describe(spec.quantity);
+  return q.usesFixedRule && q.usesFixedRule(spec);
 }
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats) {
-  if (!UsesFixedRule(spec)) return EvaluateSpec(spec, x, spec.tol, stats);
-  // alpha as MakeModel("ggx") derives it from the roughness clamped to ggx's range [0, 1]
-  // (tests/integrate_fixed_rule.cpp compares against the adaptive path, which calls MakeModel).
-  double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
-  std::array<double, 2> ab = FixedRuleGGXDFG(Clamp(x[0], 0.0, 1.0), alpha, &stats.evals);
-  stats.errorEstimate = kFixedRuleBound;
-  if (spec.quantity == "albedo") return {ab[0] + ab[1]};  // F = 1: A + B is the albedo
-  return {ab[0], ab[1]};
+  if (UsesFixedRule(spec)) return Describe(spec.quantity).fixedRule(spec, x, stats);
+  return EvaluateSpec(spec, x, spec.tol, stats);
 }
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
                                  IntegrationStats& stats) {
-  IntegrationOptions opt;
-  opt.tol = tol;
-  const std::string& q = spec.quantity;
-  auto param = [&](const char* key, double def) {
-    auto it = spec.params.find(key);
-    return it == spec.params.end() ? def : it->second;
-  };
-  auto split = [&](RhoParts e) {
-    return spec.channels.size() == 2 ? std::vector<double>{e.lin, e.quad}
-                                     : std::vector<double>{e.lin + e.quad};
-  };
-  if (q == "dfg") {
-    auto ab = SplitSumDFG(MakeModel(spec.model, WithRoughness(spec.model, x[1])), x[0], opt, stats);
-    return {ab[0], ab[1]};
-  }
-  if (q == "albedo")
-    return split(DirectionalAlbedo(MakeModel(spec.model, WithRoughness(spec.model, x[1])), x[0], opt, stats));
-  if (q == "albedo-avg")
-    return split(AverageAlbedo(MakeModel(spec.model, WithRoughness(spec.model, x[0])), opt, stats));
-  if (q == "fresnel-albedo" || q == "fresnel-albedo-avg") {
-    // Axes (mu, roughness, eta) or (roughness, eta); an axis fixed by the planner is a param.
-    bool avg = q == "fresnel-albedo-avg";
-    double mu = 0, r = param("roughness", 0), eta = param("eta", 1.5);
-    int i = 0;
-    for (const AxisSpec& a : spec.axes) {
-      if (a.name == "mu") mu = x[i];
-      if (a.name == "roughness") r = x[i];
-      if (a.name == "eta") eta = x[i];
-      ++i;
-    }
-    AnyModel m = MakeModel("ggx", WithRoughness("ggx", r));
-    SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
-    RhoParts e = avg ? AverageAlbedo(m, opt, stats) : DirectionalAlbedo(m, mu, opt, stats);
-    return {e.lin};
-  }
-  if (q == "fresnel-dielectric") {
-    ++stats.evals;
-    return {FrDielectric(x[0], x[1])};
-  }
-  if (q == "fresnel-dielectric-avg")
-    return {FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, x[0], 0}, opt, stats)};
-  if (q == "fresnel-conductor") {
-    ++stats.evals;
-    return {FrComplex(x[0], x[1], x[2])};
-  }
-  if (q == "blinn-phong-normalization") {
-    ++stats.evals;
-    return {NormalizedBlinnPhong::Normalization(x[0]), NormalizedBlinnPhong::NormalizationApprox(x[0])};
-  }
-  if (q == "brdf") {
-    ++stats.evals;
-    AnyModel m = MakeModel(spec.model, WithRoughness(spec.model, param("roughness", 0.5)));
-    RhoParts f = EvaluateParts(m, ViewDirection(x[1]), DirectionFromMuPhi(x[0], x[2]));
-    return split(f);
-  }
-  throw std::invalid_argument("table '" + spec.name + "': unknown quantity '" + q + "'");
+  return Describe(spec.quantity).evaluate(spec, x, tol, stats);
 }
 
 }  // namespace kiln

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "baker/integrate/hemisphere.h"
+#include "baker/quantities/quantity.h"
 #include "kiln/table.h"
 
 namespace kiln {
@@ -19,17 +20,12 @@ struct AxisSpec {
   Axis ToAxis() const { return Axis{lo, hi, size, warp}; }
 };
 
-/// What a table holds. quantity is one of:
-///   dfg (mu, roughness) -> A, B              albedo (mu, roughness) -> E [, E_rho2]
-///   albedo-avg (roughness) -> E_avg [, ...]  fresnel-albedo (mu, roughness, eta) -> E
-///   fresnel-albedo-avg (roughness, eta)      fresnel-dielectric (mu, eta) -> F
-///   fresnel-dielectric-avg (eta) -> F_avg    fresnel-conductor (mu, n, k) -> F
-///   blinn-phong-normalization (s) -> exact, approx
-///   brdf (mu_l, mu_o, phi) at params["roughness"] -> f [, f_rho2]
+/// What a table holds: one table kind (quantity; baker/quantities/ describes each, with its
+/// axes and channels) of one model over its axes.
 struct TableSpec {
   std::string name;      ///< file stem, e.g. "ggx-dfg"
   std::string model;     ///< model id, or "none"
-  std::string quantity;
+  Quantity quantity = Quantity::Dfg;  ///< written to files as QuantityName(quantity)
   std::vector<std::string> channels, meanings;
   std::vector<AxisSpec> axes;
   std::map<std::string, double> params;  ///< fixed model parameters (brdf: roughness)
@@ -49,7 +45,9 @@ struct TableSpec {
 
 /// The spec a baked table was made from, rebuilt from its attributes (name, model, quantity,
 /// channels, axes, params, tolerance). Its Hash() equals the table's specHash when the file was
-/// made by this version of kiln. Throws std::invalid_argument for unparseable params.
+/// made by this version of kiln. Throws std::invalid_argument naming the table for an unknown
+/// quantity ("table 'x': unknown quantity 'y'") or unparseable params ("cannot read kiln.params
+/// '...' (...)").
 TableSpec SpecFromTable(const Table& table);
 
 /// A table of `spec` before its texels: name, model, quantity, channels and their meanings,
@@ -65,8 +63,8 @@ double LayerScaleOf(const TableSpec& spec, const double* x);
 /// axis 0 places its nodes by the value of axis 1 (lut.h, Warp::Root4Layer).
 void NodeCoordinates(const TableSpec& spec, size_t index, double* x);
 
-/// True when the bake computes the table's texels with the fixed rule of
-/// integrate/fixed_rule_dfg.h (GGX dfg and albedo) instead of adaptive quadrature.
+/// True when the bake computes the table's texels with its quantity's fixed rule (today GGX dfg
+/// and albedo, integrate/fixed_rule_dfg.h) instead of adaptive quadrature.
 bool UsesFixedRule(const TableSpec& spec);
 
 /// The absolute error a fixed-rule texel is declared to (before float rounding): the rule's worst
@@ -77,7 +75,7 @@ constexpr double kFixedRuleBound = 6e-7;
 
 /// The channel values of `spec` at a point x (one coordinate per axis, axis order) by the
 /// table's own bake method: the fixed rule where UsesFixedRule, else adaptive quadrature to
-/// spec.tol. Throws std::invalid_argument for an unknown quantity or model.
+/// spec.tol. Throws std::invalid_argument for an unknown model.
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats);
 
 /// The same values by adaptive quadrature to `tol`, whatever the bake method (the independent

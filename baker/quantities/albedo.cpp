@@ -1,0 +1,86 @@
+// albedo: the directional albedo E(mu) of any model at rho = 1, F = 1, over (mu, roughness);
+// E_rho, E_rho2 for a model with a rho^2 term (E = rho E_rho + rho^2 E_rho2).
+#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
+  std::string name = model + "-" + QuantityName(Quantity::Albedo);
+  if (HasRho2(model))
+    return Shell(Quantity::Albedo, name, model, {"E_rho", "E_rho2"},
+                 {"directional albedo, rho^1 part", "rho^2 part: E = rho E_rho + rho^2 E_rho2"},
+                 std::move(axes));
+  return Shell(Quantity::Albedo, name, model, {"E"}, {"directional albedo E(mu) at rho = 1, F = 1"},
+               std::move(axes));
+}
+
+/// Microfacet models: the root4-layer mu axis (catalogue.cpp); diffuse ones: DiffuseMuAxis.
+std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  AxisSpec mu =
+      IsSpecular(model) ? AxisSpec{"mu", 0, 1, 128, Warp::Root4Layer} : DiffuseMuAxis(model);
+  return {mu, DefaultRoughnessAxis(model)};
+}
+
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueMicrofacetModels())
+    out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
+/// F = 1: A + B of the GGX fixed rule is the albedo.
+std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+  std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+  return {ab[0] + ab[1]};
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  IntegrationOptions opt;
+  opt.tol = tol;
+  return RhoChannels(spec, DirectionalAlbedo(ModelAt(spec.model, x[1]), x[0], opt, stats));
+}
+
+std::string Method(const TableSpec& spec) {
+  return AdaptiveMethod(IsSpecular(spec.model), false, spec.tol);
+}
+
+/// Albedo tables use F = 1 and rho = 1 unless a Fresnel parameter is given explicitly.
+std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  RhoParts e = DirectionalAlbedo(RequestModel(req, p), req.mu, RequestOptions(req), stats);
+  return Full17(e.At(p.rho.value_or(1)));
+}
+
+}  // namespace
+
+const QuantityInfo& AlbedoQuantity() {
+  static const QuantityInfo info = [] {
+    QuantityInfo q;
+    q.id = Quantity::Albedo;
+    q.name = "albedo";
+    q.description = "directional albedo E(mu): multiple-scattering compensation";
+    q.makeSpec = MakeSpec;
+    q.defaultAxes = DefaultAxes;
+    q.catalogue = Catalogue;
+    q.usesFixedRule = GgxFixedRuleApplies;
+    q.fixedRule = FixedRule;
+    q.fixedRuleMethod = GgxFixedRuleMethod;
+    q.evaluate = Evaluate;
+    q.method = Method;
+    q.sceneKind = true;
+    q.sceneAxes = {{"roughness", "roughness"}};
+    q.integrateName = q.name;
+    q.integrateHelp = "albedo (E at rho = 1, F = 1)";
+    q.integrateNeedsMu = true;
+    q.integrate = Integrate;
+    q.monteCarlo = &kDiffuseAlbedoMonteCarlo;
+    return q;
+  }();
+  return info;
+}
+
+}  // namespace kiln

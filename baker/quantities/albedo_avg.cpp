@@ -1,0 +1,99 @@
+// albedo-avg: the average albedo E_avg = 2 int E(mu) mu dmu of any model, over roughness;
+// E_avg_rho, E_avg_rho2 for a model with a rho^2 term.
+#include "baker/integrate/fixed_rule_average.h"
+#include "baker/integrate/fixed_rule_dfg.h"
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
+  std::string name = model + "-" + QuantityName(Quantity::AlbedoAvg);
+  if (HasRho2(model))
+    return Shell(Quantity::AlbedoAvg, name, model, {"E_avg_rho", "E_avg_rho2"},
+                 {"average albedo, rho^1 part", "rho^2 part"}, std::move(axes));
+  return Shell(Quantity::AlbedoAvg, name, model, {"E_avg"},
+               {"average albedo 2 int E(mu) mu dmu at rho = 1, F = 1"}, std::move(axes));
+}
+
+std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  return {DefaultRoughnessAxis(model)};
+}
+
+/// The microfacet models' average albedo is smooth in roughness: 64 nodes (their 2D tables 128).
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueMicrofacetModels()) {
+    AxisSpec rAvg = DefaultRoughnessAxis(m);
+    rAvg.size = 64;
+    out.push_back(MakeSpec(m, {rAvg}));
+  }
+  for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  IntegrationOptions opt;
+  opt.tol = tol;
+  return RhoChannels(spec, AverageAlbedo(ModelAt(spec.model, x[0]), opt, stats));
+}
+
+/// GGX over roughness alone: the fixed cosine-average rule over the GGX visible-normal rule.
+bool GgxOverRoughness(const TableSpec& spec) {
+  return spec.model == "ggx" && spec.axes.size() == 1 && spec.axes[0].name == "roughness";
+}
+
+std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+  // alpha as MakeModel("ggx") derives it (GgxFixedRuleAt, common.cpp).
+  double alpha = std::max(AlphaFromPerceptual(Clamp(x[0], 0.0, 1.0)), MinAlpha);
+  auto e = [&](double mu) {
+    std::array<double, 2> ab = FixedRuleGGXDFG(mu, alpha, &stats.evals);
+    return ab[0] + ab[1];
+  };
+  stats.errorEstimate = kFixedRuleBound;  // an average of values each within the bound
+  return {FixedCosineAverage(e, alpha)};
+}
+
+std::string FixedRuleMethod(const TableSpec& spec) {
+  return GgxFixedRuleMethod(spec) + "; then 2 int E mu dmu by a fixed Gauss-Legendre rule (" +
+         std::to_string(kCosineAverageNodes) + " nodes per panel, panels graded from the layer)";
+}
+
+std::string Method(const TableSpec& spec) {
+  return AdaptiveMethod(IsSpecular(spec.model), true, spec.tol);
+}
+
+std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  RhoParts e = AverageAlbedo(RequestModel(req, p), RequestOptions(req), stats);
+  return Full17(e.At(p.rho.value_or(1)));
+}
+
+}  // namespace
+
+const QuantityInfo& AlbedoAvgQuantity() {
+  static const QuantityInfo info = [] {
+    QuantityInfo q;
+    q.id = Quantity::AlbedoAvg;
+    q.name = "albedo-avg";
+    q.description = "average albedo E_avg: multiple-scattering compensation";
+    q.makeSpec = MakeSpec;
+    q.defaultAxes = DefaultAxes;
+    q.catalogue = Catalogue;
+    q.usesFixedRule = GgxOverRoughness;
+    q.fixedRule = FixedRule;
+    q.fixedRuleMethod = FixedRuleMethod;
+    q.evaluate = Evaluate;
+    q.method = Method;
+    q.sceneKind = true;
+    q.sceneAxes = {{"roughness", "roughness"}};
+    q.integrateName = q.name;
+    q.integrateHelp = "albedo-avg";
+    q.integrate = Integrate;
+    return q;
+  }();
+  return info;
+}
+
+}  // namespace kiln

@@ -1,0 +1,82 @@
+// dfg: the split-sum DFG terms (Karis 2013) of a microfacet model, over (mu, roughness) -> A, B.
+#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
+  return Shell(Quantity::Dfg, model + "-" + QuantityName(Quantity::Dfg), model, {"A", "B"},
+               {"A = integral f/F (1 - (1 - o.h)^5) mu_l dl (scales F0)",
+                "B = integral f/F (1 - o.h)^5 mu_l dl (bias), albedo = F0 A + B"},
+               std::move(axes));
+}
+
+std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
+}
+
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueMicrofacetModels())
+    out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
+std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+  std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+  return {ab[0], ab[1]};
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  IntegrationOptions opt;
+  opt.tol = tol;
+  auto ab = SplitSumDFG(ModelAt(spec.model, x[1]), x[0], opt, stats);
+  return {ab[0], ab[1]};
+}
+
+std::string Method(const TableSpec& spec) {
+  return AdaptiveMethod(IsSpecular(spec.model), false, spec.tol);
+}
+
+std::string SceneProblem(const ModelInfo& m) {
+  return m.specular() ? "" : std::string(QuantityName(Quantity::Dfg)) + " needs a microfacet model";
+}
+
+std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  auto ab = SplitSumDFG(RequestModel(req, p), req.mu, RequestOptions(req), stats);
+  return Full17(ab[0]) + " " + Full17(ab[1]);
+}
+
+}  // namespace
+
+const QuantityInfo& DfgQuantity() {
+  static const QuantityInfo info = [] {
+    QuantityInfo q;
+    q.id = Quantity::Dfg;
+    q.name = "dfg";
+    q.description = "split-sum specular: F0 A + F90 B";
+    q.makeSpec = MakeSpec;
+    q.defaultAxes = DefaultAxes;
+    q.catalogue = Catalogue;
+    q.usesFixedRule = GgxFixedRuleApplies;
+    q.fixedRule = FixedRule;
+    q.fixedRuleMethod = GgxFixedRuleMethod;
+    q.evaluate = Evaluate;
+    q.method = Method;
+    q.sceneKind = true;
+    q.sceneAxes = {{"roughness", "roughness"}};
+    q.sceneProblem = SceneProblem;
+    q.integrateName = q.name;
+    q.integrateHelp = "dfg (A B)";
+    q.integrateNeedsMu = true;
+    q.integrate = Integrate;
+    q.monteCarlo = &kGgxDfgMonteCarlo;
+    return q;
+  }();
+  return info;
+}
+
+}  // namespace kiln

@@ -1,0 +1,63 @@
+// fresnel-albedo-avg: the average over mu of fresnel-albedo, over (roughness, eta) -> E_avg.
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+/// Baked for ggx only: `model` is ignored.
+TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
+  return Shell(Quantity::FresnelAlbedoAvg,
+               std::string("ggx-") + QuantityName(Quantity::FresnelAlbedoAvg), "ggx", {"E_avg"},
+               {"average of ggx-fresnel-albedo over mu (2 int E mu dmu)"}, std::move(axes));
+}
+
+std::vector<AxisSpec> DefaultAxes(const std::string&) {
+  return {DefaultRoughnessAxis("ggx"), DefaultEtaAxis()};
+}
+
+/// 24 x 16: smooth in both.
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  std::vector<AxisSpec> axes = DefaultAxes("ggx");
+  axes[0].size = 24;
+  axes[1].size = 16;
+  return {MakeSpec("ggx", axes)};
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  return GgxFresnelAlbedoAt(spec, x, tol, true, stats);
+}
+
+std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, true, spec.tol); }
+
+std::string SceneProblem(const ModelInfo& m) {
+  return m.id == "ggx"
+             ? ""
+             : std::string(QuantityName(Quantity::FresnelAlbedoAvg)) + " is baked for ggx only";
+}
+
+}  // namespace
+
+const QuantityInfo& FresnelAlbedoAvgQuantity() {
+  static const QuantityInfo info = [] {
+    QuantityInfo q;
+    q.id = Quantity::FresnelAlbedoAvg;
+    q.name = "fresnel-albedo-avg";
+    q.description = "average albedo with exact dielectric Fresnel";
+    q.makeSpec = MakeSpec;
+    q.defaultAxes = DefaultAxes;
+    q.catalogue = Catalogue;
+    q.evaluate = Evaluate;
+    q.method = Method;
+    q.sceneKind = true;
+    q.sceneModel = "ggx";
+    q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
+    q.sceneProblem = SceneProblem;
+    q.readsParams = true;
+    return q;
+  }();
+  return info;
+}
+
+}  // namespace kiln

@@ -1,0 +1,116 @@
+// Table kinds ("quantities": dfg, albedo, fresnel-dielectric, ...) as a closed, compile-time set.
+// Everything kiln knows about a kind is in its descriptor, one file per kind under
+// baker/quantities/: its name, channels, the models it accepts, its default axes and catalogue
+// entries, how one texel is evaluated (the fixed rule where there is one, the adaptive reference
+// always), its method text, how scenes ask for it and what `kiln integrate` prints for it. The
+// spec, catalogue, planner, scene readers, CLI and bench ask Describe() instead of comparing
+// names; a name read from a file or a command line is looked up once, with FindQuantity.
+// Adding a kind: docs/adding-a-table-kind.md.
+#pragma once
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace kiln {
+
+struct AxisSpec;
+struct TableSpec;
+struct CatalogueOptions;
+struct ModelInfo;
+struct ModelParams;
+struct IntegrationStats;
+struct MonteCarloEstimator;
+
+/// Every table kind, in registry order (baker/quantities/list.inc).
+enum class Quantity {
+#define KILN_QUANTITY(id) id,
+#include "baker/quantities/list.inc"
+#undef KILN_QUANTITY
+};
+
+/// What `kiln integrate NAME ...` asks of a quantity. The CLI has already checked --tol and
+/// whether --mu is given as the quantity needs.
+struct IntegrateRequest {
+  std::string name;   ///< the command's name of the quantity (QuantityInfo::integrateName)
+  std::string model;  ///< --model; "" when not given
+  double mu = 1;      ///< --mu, cos(theta_o) in [0, 1] (only when integrateNeedsMu)
+  double tol = 1e-9;  ///< absolute tolerance
+};
+
+/// One table kind. Function pointers left null mean "not offered" (see each field).
+struct QuantityInfo {
+  Quantity id{};
+  const char* name = "";         ///< kiln.quantity, the manifest's "quantity", a scene's "tables"
+  const char* description = "";  ///< one line, what a table of this kind is for (`kiln plan`)
+
+  // --- The table -------------------------------------------------------------------------
+  /// The spec of this kind for `model` over `axes` (the kind's axis order): file name, model,
+  /// quantity, channels and their meanings (which may depend on the model), axes.
+  TableSpec (*makeSpec)(const std::string& model, std::vector<AxisSpec> axes) = nullptr;
+  /// The default axes (sizes and warps) for `model`: a table the catalogue does not list.
+  std::vector<AxisSpec> (*defaultAxes)(const std::string& model) = nullptr;
+  /// This kind's entries of the default catalogue, before CatalogueOptions::size is applied.
+  std::vector<TableSpec> (*catalogue)(const CatalogueOptions& opt) = nullptr;
+
+  // --- One texel ---------------------------------------------------------------------------
+  /// True when the bake takes `spec`'s texels with a fixed rule (null: never).
+  bool (*usesFixedRule)(const TableSpec& spec) = nullptr;
+  /// The channel values at x (one coordinate per axis) by the fixed rule; sets
+  /// stats.errorEstimate to the rule's declared bound. Called only when usesFixedRule.
+  std::vector<double> (*fixedRule)(const TableSpec& spec, const double* x,
+                                   IntegrationStats& stats) = nullptr;
+  /// The channel values at x by adaptive quadrature to the absolute tolerance `tol` (exact
+  /// evaluation for a closed form): the reference every bake and lookup error is measured with.
+  /// Throws std::invalid_argument for a model the kind cannot take.
+  std::vector<double> (*evaluate)(const TableSpec& spec, const double* x, double tol,
+                                  IntegrationStats& stats) = nullptr;
+  /// The method text (kiln.method) of the fixed rule, when it applies.
+  std::string (*fixedRuleMethod)(const TableSpec& spec) = nullptr;
+  /// The method text (kiln.method) when the fixed rule does not apply.
+  std::string (*method)(const TableSpec& spec) = nullptr;
+
+  // --- Scenes ------------------------------------------------------------------------------
+  bool sceneKind = false;            ///< a scene may ask for it; the planner narrows its axes
+  const char* sceneModel = nullptr;  ///< model of a scene's table: null = the material's model
+  /// Axes a material bounds: {table axis, material parameter}; a pair whose parameter the
+  /// material's model does not take is left out (the axis spans its whole range).
+  std::vector<std::pair<std::string, std::string>> sceneAxes;
+  /// Why a material of model `material` cannot ask for this kind, one line ("" when it can;
+  /// null: every model can).
+  std::string (*sceneProblem)(const ModelInfo& material) = nullptr;
+  /// The planner drops an axis cut to one value into the spec's params (evaluate reads it
+  /// there), instead of keeping a 2-node slice.
+  bool readsParams = false;
+
+  // --- kiln integrate ----------------------------------------------------------------------
+  const char* integrateName = nullptr;  ///< the command's name for it; null: not offered
+  const char* integrateHelp = "";       ///< e.g. "albedo (E at rho = 1, F = 1)"
+  bool integrateNeedsMu = false;        ///< takes --mu (required), or refuses it
+  /// The integral the command prints, on one line at full precision (%.17g, space-separated).
+  /// Throws std::invalid_argument for missing or refused options, naming the command.
+  std::string (*integrate)(const IntegrateRequest& request, const ModelParams& params,
+                           IntegrationStats& stats) = nullptr;
+
+  // --- kiln bench --------------------------------------------------------------------------
+  /// The Monte Carlo estimator the bench compares kiln with (bench/monte_carlo.h); null: none.
+  const MonteCarloEstimator* monteCarlo = nullptr;
+};
+
+/// The descriptor of `q`.
+const QuantityInfo& Describe(Quantity q);
+
+/// Every descriptor, in registry order.
+const std::vector<const QuantityInfo*>& AllQuantities();
+
+/// The descriptor named `name` (as files, scenes and manifests write it), or nullptr.
+const QuantityInfo* FindQuantity(std::string_view name);
+
+/// The name of `q`, as files write it.
+inline const char* QuantityName(Quantity q) { return Describe(q).name; }
+
+/// The file name of a table of kind `q` for `model` with the kind's default axes (e.g.
+/// ggx-dfg, fresnel-dielectric).
+std::string TableName(Quantity q, const std::string& model);
+
+}  // namespace kiln
