@@ -21,7 +21,10 @@ std::vector<TableSpec> OneOfEachKind(int size) {
   std::set<std::string> kinds;
   for (const TableSpec& s : DefaultCatalogue(opt)) {
     const ModelInfo* m = FindModel(s.model);
-    std::string kind = QuantityName(s.quantity) + std::string(m ? (m->specular() ? "/specular" : m->hasRho2 ? "/rho2" : "/diffuse") : "");
+    std::string kind = QuantityName(s.quantity) + std::string(m ? (m->specular() ? "/specular"
+                                                                   : m->hasRho2  ? "/rho2"
+                                                                                 : "/diffuse")
+                                                                : "");
     if (kinds.insert(kind).second) out.push_back(s);
   }
   return out;
@@ -37,8 +40,8 @@ TEST_CASE("The catalogue names are the file-name contract", "[bake]") {
       CHECK(names.count(std::string(m) + suffix) == 1);
   for (const char* n : {"ggx-fresnel-albedo", "ggx-fresnel-albedo-avg", "fresnel-dielectric",
                         "fresnel-dielectric-avg", "fresnel-conductor", "blinn-phong-normalization",
-                        "oren-nayar-brdf", "gotanda-ggx-brdf", "lambert-albedo", "hammon-albedo-avg",
-                        "triace-lambert-albedo", "fujii-normalized-albedo"})
+                        "oren-nayar-brdf", "gotanda-ggx-brdf", "lambert-albedo",
+                        "hammon-albedo-avg", "triace-lambert-albedo", "fujii-normalized-albedo"})
     CHECK(names.count(n) == 1);
   CHECK_THROWS_WITH(CatalogueTable("ggx-dgf"), Catch::Contains("unknown table 'ggx-dgf'"));
 }
@@ -57,9 +60,13 @@ TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral 
       double x[3];
       NodeCoordinates(spec, i, x);
       IntegrationStats st;
-      std::vector<double> exact = EvaluateSpec(spec, x, std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos ? 1e-10 : 1e-11, st);
+      std::vector<double> exact = EvaluateSpec(
+          spec, x,
+          std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos ? 1e-10 : 1e-11,
+          st);
       for (size_t c = 0; c < nc; ++c)
-        worst = std::max(worst, std::abs(t.data[i * nc + c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+        worst = std::max(
+            worst, std::abs(t.data[i * nc + c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
     }
     INFO(spec.name << " worst texel error " << worst << " declared " << t.bakeError);
     CHECK(worst < 1e-6);
@@ -77,7 +84,8 @@ TEST_CASE("A bake is bit-identical for 1, 2 and 3 threads and across runs", "[ba
     a.threads = 1;
     b.threads = 2;
     c.threads = 3;
-    Table ta = BakeTable(spec, a), tb = BakeTable(spec, b), tc = BakeTable(spec, c), td = BakeTable(spec, b);
+    Table ta = BakeTable(spec, a), tb = BakeTable(spec, b), tc = BakeTable(spec, c),
+          td = BakeTable(spec, b);
     INFO(name);
     CHECK(ta.data == tb.data);
     CHECK(ta.data == tc.data);

@@ -47,7 +47,8 @@ double FresnelError(const PointSet& points, double eta) {
     p.eta = eta;
     IntegrationStats st;
     double exact = DirectionalAlbedo(MakeModel("ggx", p), t[0], Tight(), st).lin;
-    worst = std::max(worst, std::abs(EstimateFresnelAlbedo(points, t[0], t[1] * t[1], eta) - exact));
+    worst =
+        std::max(worst, std::abs(EstimateFresnelAlbedo(points, t[0], t[1] * t[1], eta) - exact));
   }
   return worst;
 }
@@ -78,7 +79,8 @@ TEST_CASE("Hammersley points are (i/N, radical inverse of i) with equal weights"
   double sum = 0;
   for (size_t i = 0; i < p.size(); ++i) {
     sum += p.weight[i];
-    CHECK(std::atan2(p.sinPhi[i], p.cosPhi[i]) == Approx(std::remainder(2 * Pi * i / 16, 2 * Pi)).margin(1e-12));
+    CHECK(std::atan2(p.sinPhi[i], p.cosPhi[i]) ==
+          Approx(std::remainder(2 * Pi * i / 16, 2 * Pi)).margin(1e-12));
   }
   CHECK(sum == Approx(1).margin(1e-15));
   // Every 1/16-wide stratum of u2 holds exactly one point (a (0, 1)-sequence in base 2).
@@ -120,7 +122,8 @@ TEST_CASE("Monte Carlo DFG converges to kiln's exact split-sum DFG", "[bench]") 
 
 TEST_CASE("Monte Carlo GGX albedo with dielectric Fresnel converges to kiln's", "[bench]") {
   for (double eta : {1.2, 1.5, 2.5}) {
-    double e64 = FresnelError(HammersleyPoints(64), eta), e1024 = FresnelError(HammersleyPoints(1024), eta),
+    double e64 = FresnelError(HammersleyPoints(64), eta),
+           e1024 = FresnelError(HammersleyPoints(1024), eta),
            e16k = FresnelError(HammersleyPoints(16384), eta);
     INFO("eta " << eta << ": errors " << e64 << " " << e1024 << " " << e16k);
     CHECK(e1024 < e64);
@@ -131,7 +134,8 @@ TEST_CASE("Monte Carlo GGX albedo with dielectric Fresnel converges to kiln's", 
 
 TEST_CASE("cosine-weighted Monte Carlo diffuse albedo converges to kiln's", "[bench]") {
   for (const char* id : {"burley", "oren-nayar"}) {
-    double e64 = DiffuseError(id, HammersleyPoints(64)), e1024 = DiffuseError(id, HammersleyPoints(1024)),
+    double e64 = DiffuseError(id, HammersleyPoints(64)),
+           e1024 = DiffuseError(id, HammersleyPoints(1024)),
            e16k = DiffuseError(id, HammersleyPoints(16384));
     INFO(id << ": errors " << e64 << " " << e1024 << " " << e16k);
     CHECK(e1024 < e64);
@@ -140,7 +144,8 @@ TEST_CASE("cosine-weighted Monte Carlo diffuse albedo converges to kiln's", "[be
   }
 }
 
-TEST_CASE("no diffuse sample lies on the horizon: estimates stay finite at grazing views", "[bench]") {
+TEST_CASE("no diffuse sample lies on the horizon: estimates stay finite at grazing views",
+          "[bench]") {
   PointSet points = HammersleyPoints(256);
   for (const ModelInfo& info : AllModels()) {
     if (info.specular()) continue;
@@ -184,9 +189,11 @@ TEST_CASE("EstimateTable bakes the spec's nodes, the same on any thread count", 
           CHECK(one.data[k * nc + 1] == static_cast<float>(ab[1]));
         } else if (spec.quantity == FindQuantity("fresnel-albedo")->id) {
           double eta = spec.axes[2].ToAxis().node(2);
-          CHECK(one.data[k] == static_cast<float>(EstimateFresnelAlbedo(points, mu.node(i, c), alpha, eta)));
+          CHECK(one.data[k] ==
+                static_cast<float>(EstimateFresnelAlbedo(points, mu.node(i, c), alpha, eta)));
         } else {
-          RhoParts e = EstimateDiffuseAlbedo(points, MakeModel(spec.model, Rough(r.node(j))), mu.node(i, c));
+          RhoParts e =
+              EstimateDiffuseAlbedo(points, MakeModel(spec.model, Rough(r.node(j))), mu.node(i, c));
           if (nc == 2) {
             CHECK(one.data[k * 2] == static_cast<float>(e.lin));
             CHECK(one.data[k * 2 + 1] == static_cast<float>(e.quad));

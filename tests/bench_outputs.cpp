@@ -86,8 +86,10 @@ std::string XmlProblem(const std::string& s) {
     char quote = 0;
     for (; end < s.size(); ++end) {
       if (quote) {
-        if (s[end] == quote) quote = 0;
-        else if (s[end] == '<') return "'<' inside an attribute at " + std::to_string(end);
+        if (s[end] == quote)
+          quote = 0;
+        else if (s[end] == '<')
+          return "'<' inside an attribute at " + std::to_string(end);
       } else if (s[end] == '"' || s[end] == '\'') {
         quote = s[end];
       } else if (s[end] == '<') {
@@ -138,8 +140,9 @@ size_t Count(const std::string& s, const std::string& what) {
 
 /// A folder removed when the test binary exits.
 struct TempDir {
-  std::string path = (std::filesystem::temp_directory_path() /
-                      ("kiln-bench-test-" + std::to_string(getpid()))).string();
+  std::string path =
+      (std::filesystem::temp_directory_path() / ("kiln-bench-test-" + std::to_string(getpid())))
+          .string();
   ~TempDir() {
     std::error_code ec;
     std::filesystem::remove_all(path, ec);
@@ -163,7 +166,9 @@ const BenchResult& TinyRun(std::string& dir) {
 
 TEST_CASE("the well-formedness check itself rejects broken XML", "[bench]") {
   CHECK(XmlProblem("<svg><g></g></svg>").empty());
-  CHECK(XmlProblem("<?xml version=\"1.0\"?>\n<svg a=\"1\"><rect x=\"0\"/><text>a &amp; b</text></svg>").empty());
+  CHECK(XmlProblem(
+            "<?xml version=\"1.0\"?>\n<svg a=\"1\"><rect x=\"0\"/><text>a &amp; b</text></svg>")
+            .empty());
   CHECK_FALSE(XmlProblem("<svg><g></svg>").empty());
   CHECK_FALSE(XmlProblem("<svg><g></g>").empty());
   CHECK_FALSE(XmlProblem("<svg a=1></svg>").empty());
@@ -205,13 +210,14 @@ TEST_CASE("kiln bench writes the promised CSV rows and a well-formed SVG", "[ben
   auto records = ParseCsv(csv);
   REQUIRE(records.size() == result.rows.size() + 1);
   CHECK(records[0] == CsvColumns());
-  for (const char* column : {"section", "method", "table", "size", "samples_or_tol", "seconds", "evals",
-                             "bake_err_max", "bake_err_rms", "lookup_linear_max", "lookup_linear_rms",
-                             "lookup_cubic_max", "lookup_cubic_rms", "lookup_linear_max_off_corner", "bytes",
-                             "ns_per_call"})
+  for (const char* column :
+       {"section", "method", "table", "size", "samples_or_tol", "seconds", "evals", "bake_err_max",
+        "bake_err_rms", "lookup_linear_max", "lookup_linear_rms", "lookup_cubic_max",
+        "lookup_cubic_rms", "lookup_linear_max_off_corner", "bytes", "ns_per_call"})
     CHECK(std::find(records[0].begin(), records[0].end(), column) != records[0].end());
   auto col = [&](const char* name) {
-    return static_cast<size_t>(std::find(records[0].begin(), records[0].end(), name) - records[0].begin());
+    return static_cast<size_t>(std::find(records[0].begin(), records[0].end(), name) -
+                               records[0].begin());
   };
   std::set<std::string> sections, sweepCombos;
   for (size_t i = 1; i < records.size(); ++i) {
@@ -222,24 +228,28 @@ TEST_CASE("kiln bench writes the promised CSV rows and a well-formed SVG", "[ben
       CHECK(std::stod(rec[col("ns_per_call")]) > 0);
       continue;
     }
-    if (rec[col("section")] == "sweep") sweepCombos.insert(rec[col("table")] + "/" + rec[col("method")]);
-    for (const char* c : {"seconds", "bake_err_max", "bake_err_rms", "lookup_linear_max", "lookup_cubic_max",
-                          "lookup_linear_max_off_corner"}) {
+    if (rec[col("section")] == "sweep")
+      sweepCombos.insert(rec[col("table")] + "/" + rec[col("method")]);
+    for (const char* c : {"seconds", "bake_err_max", "bake_err_rms", "lookup_linear_max",
+                          "lookup_cubic_max", "lookup_linear_max_off_corner"}) {
       INFO("row " << i << " column " << c);
       double v = std::stod(rec[col(c)]);
       CHECK(std::isfinite(v));
       CHECK(v >= 0);
     }
-    CHECK(std::stod(rec[col("lookup_linear_max_off_corner")]) <= std::stod(rec[col("lookup_linear_max")]));
+    CHECK(std::stod(rec[col("lookup_linear_max_off_corner")]) <=
+          std::stod(rec[col("lookup_linear_max")]));
     CHECK(std::stoll(rec[col("evals")]) > 0);
-    CHECK(std::stoll(rec[col("bytes")]) == 4 * std::stoll(rec[col("texels")]) *
-                                               (rec[col("table")] == "ggx-dfg" ? 2 : 1));
+    CHECK(std::stoll(rec[col("bytes")]) ==
+          4 * std::stoll(rec[col("texels")]) * (rec[col("table")] == "ggx-dfg" ? 2 : 1));
   }
   CHECK(sections == std::set<std::string>{"sweep", "size", "threads", "baker-issue", "runtime"});
   // ggx-dfg is baked by the fixed rule (one row, no tolerance sweep), the others adaptively.
   for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"})
     for (const char* method : {"kiln", "mc-hammersley", "gauss-legendre"}) {
-      std::string m = std::string(method) == "kiln" && std::string(table) == "ggx-dfg" ? "kiln-fixed-rule" : method;
+      std::string m = std::string(method) == "kiln" && std::string(table) == "ggx-dfg"
+                          ? "kiln-fixed-rule"
+                          : method;
       CHECK(sweepCombos.count(std::string(table) + "/" + m) == 1);
     }
   // Runtime: linear and cubic lookups in 1D, 2D and 3D tables, evaluation and integration.
@@ -268,7 +278,8 @@ TEST_CASE("kiln bench: kiln's bake beats 1024-sample Monte Carlo on bake error",
     return best;
   };
   for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"}) {
-    const BenchRow* kiln = find("sweep", table, std::string(table) == "ggx-dfg" ? "kiln-fixed-rule" : "kiln");
+    const BenchRow* kiln =
+        find("sweep", table, std::string(table) == "ggx-dfg" ? "kiln-fixed-rule" : "kiln");
     const BenchRow* mc = find("sweep", table, "mc-hammersley");
     REQUIRE(kiln);
     REQUIRE(mc);
@@ -295,6 +306,7 @@ TEST_CASE("kiln bench: kiln's bake beats 1024-sample Monte Carlo on bake error",
   CHECK(std::abs(issuePerTexel->bakeMax - issueMc->bakeMax) < 1e-6);
   // Thread scaling: the kiln bake on all threads is bit-identical to 1 thread.
   for (const BenchRow& r : result.rows)
-    if (r.section == "threads" && r.method == "kiln") CHECK(r.note.find("bit-identical") != std::string::npos);
+    if (r.section == "threads" && r.method == "kiln")
+      CHECK(r.note.find("bit-identical") != std::string::npos);
   CHECK_FALSE(result.summary.empty());
 }

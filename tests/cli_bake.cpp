@@ -18,7 +18,8 @@ std::string TempDir(const char* tag) {
 TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not on a terminal",
           "[cli][bake]") {
   std::string dir = TempDir("bake");
-  auto r = RunKiln("bake --out " + dir + " --only fresnel-dielectric,lambert-albedo --size 5 -j 2 --header");
+  auto r = RunKiln("bake --out " + dir +
+                   " --only fresnel-dielectric,lambert-albedo --size 5 -j 2 --header");
   REQUIRE(r.exitCode == 0);
   CHECK(r.out.empty());
   CHECK(!ReadFile(dir + "/fresnel-dielectric.exr").empty());
@@ -28,7 +29,8 @@ TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not 
   CHECK(manifest["tables"][0]["name"] == "fresnel-dielectric");
   CHECK(manifest["tables"][1]["bake_error"].get<double>() < 1e-6);
   // A second --only bake adds to the manifest instead of replacing it.
-  REQUIRE(RunKiln("bake --out " + dir + " --only blinn-phong-normalization --size 5").exitCode == 0);
+  REQUIRE(RunKiln("bake --out " + dir + " --only blinn-phong-normalization --size 5").exitCode ==
+          0);
   CHECK(nlohmann::json::parse(ReadFile(dir + "/manifest.json"))["tables"].size() == 3);
   auto inspect = RunKiln("inspect " + dir + "/fresnel-dielectric.exr");
   CHECK(inspect.exitCode == 0);
@@ -37,8 +39,9 @@ TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not 
 }
 
 TEST_CASE("kiln bake refuses bad arguments with one line", "[cli][bake]") {
-  for (const char* args : {"bake --only nope --out /tmp", "bake --size 0 --out /tmp", "bake --size 100000",
-                           "bake -j -1", "bake --roughness 3", "inspect /nonexistent.exr"}) {
+  for (const char* args :
+       {"bake --only nope --out /tmp", "bake --size 0 --out /tmp", "bake --size 100000",
+        "bake -j -1", "bake --roughness 3", "inspect /nonexistent.exr"}) {
     auto r = RunKiln(args);
     INFO(args << " -> " << r.err);
     CHECK(r.exitCode != 0);

@@ -23,7 +23,8 @@ TEST_CASE("kiln eval prints one value", "[cli]") {
   CHECK(CountLines(r.out) == 1);
 }
 
-TEST_CASE("kiln integrate prints the channels on one line at full precision, nothing else", "[cli]") {
+TEST_CASE("kiln integrate prints the channels on one line at full precision, nothing else",
+          "[cli]") {
   auto a = RunKiln("integrate albedo --model ggx --mu 0.5 --roughness 1");
   REQUIRE(a.exitCode == 0);
   CHECK(CountLines(a.out) == 1);

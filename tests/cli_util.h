@@ -25,8 +25,10 @@ inline std::string ReadFile(const std::string& path) {
 /// Runs `kiln ARGS` (ARGS is shell-quoted by the caller) with stdin closed.
 inline CommandResult RunKiln(const std::string& args) {
   static int counter = 0;
-  std::string base = "/tmp/kiln_cli_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
-  std::string cmd = std::string(KILN_BINARY) + " " + args + " </dev/null >" + base + ".out 2>" + base + ".err";
+  std::string base =
+      "/tmp/kiln_cli_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  std::string cmd =
+      std::string(KILN_BINARY) + " " + args + " </dev/null >" + base + ".out 2>" + base + ".err";
   int status = std::system(cmd.c_str());
   CommandResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -33,7 +33,8 @@ TEST_CASE("Half-vector integration of the specular models equals a light-space i
   }
 }
 
-TEST_CASE("Every model's albedo at tolerance 1e-9 agrees with tolerance 1e-12 to 1e-9", "[integrate]") {
+TEST_CASE("Every model's albedo at tolerance 1e-9 agrees with tolerance 1e-12 to 1e-9",
+          "[integrate]") {
   for (const ModelInfo& m : AllModels())
     for (double r : {0.1, 0.5, 1.0})
       for (double mu : {0.05, 0.3, 0.77, 1.0}) {

@@ -47,9 +47,10 @@ TEST_CASE("At alpha = 1 the fixed rule's A + B is the closed form 1 - mu ln(1 + 
   CHECK(worst <= 1e-7);
 }
 
-TEST_CASE("The fixed rule meets its declared bound at the hard corners, against adaptive "
-          "quadrature at 1e-11",
-          "[integrate][fixed-rule]") {
+TEST_CASE(
+    "The fixed rule meets its declared bound at the hard corners, against adaptive "
+    "quadrature at 1e-11",
+    "[integrate][fixed-rule]") {
   double worst = 0;
   std::string where;
   for (double r : {0.0, 1e-3, 0.02, 0.1, 0.3, 0.6, 1.0})
@@ -64,7 +65,8 @@ TEST_CASE("The fixed rule meets its declared bound at the hard corners, against 
           where = "mu=" + std::to_string(mu) + " r=" + std::to_string(r) + " channel " + "AB"[c];
         }
     }
-  std::printf("fixed rule vs adaptive 1e-11 at 63 corner points: worst %.3g at %s\n", worst, where.c_str());
+  std::printf("fixed rule vs adaptive 1e-11 at 63 corner points: worst %.3g at %s\n", worst,
+              where.c_str());
   INFO("worst " << worst << " at " << where);
   CHECK(worst <= kFixedRuleBound);
 }
@@ -119,9 +121,10 @@ TEST_CASE("The ggx dfg and albedo tables are baked by the fixed rule, the others
   CHECK_FALSE(UsesFixedRule(beckmann));
 }
 
-TEST_CASE("The ggx albedo-avg table is baked by the fixed cosine-average rule, within 1e-7 of "
-          "nested adaptive quadrature at every roughness",
-          "[integrate][fixed-rule][tables]") {
+TEST_CASE(
+    "The ggx albedo-avg table is baked by the fixed cosine-average rule, within 1e-7 of "
+    "nested adaptive quadrature at every roughness",
+    "[integrate][fixed-rule][tables]") {
   TableSpec avg = CatalogueTable("ggx-albedo-avg");
   REQUIRE(UsesFixedRule(avg));
   CHECK(avg.Method().find("fixed Gauss-Legendre rule (8 nodes per panel") != std::string::npos);

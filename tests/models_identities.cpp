@@ -68,8 +68,9 @@ TEST_CASE("Smith masking is exact: integral G1(o) max(0, o.h) D(h) dh = mu_o", "
     }
 }
 
-TEST_CASE("Blinn-Phong normalisation: integral (h.n)^s do = 4 pi (2 - 2^(-s/2)) / (s + 2) for l = n",
-          "[identities]") {
+TEST_CASE(
+    "Blinn-Phong normalisation: integral (h.n)^s do = 4 pi (2 - 2^(-s/2)) / (s + 2) for l = n",
+    "[identities]") {
   for (double s : {0.0, 1.0, 10.0, 100.0, 1000.0}) {
     // h = (o + n)/|o + n| has n.h = cos(theta_o / 2).
     auto g = [&](double theta) {
@@ -96,7 +97,8 @@ TEST_CASE("F0 from the measured indices matches seed 004 to its 3 digits", "[ide
 }
 
 TEST_CASE("Lambert: E(mu) = rho for all mu, E_avg = rho", "[identities]") {
-  for (double mu : {0.0, 0.05, 0.5, 1.0}) CHECK(Albedo("lambert", mu, 0) == Approx(1).margin(1e-12));
+  for (double mu : {0.0, 0.05, 0.5, 1.0})
+    CHECK(Albedo("lambert", mu, 0) == Approx(1).margin(1e-12));
   IntegrationStats stats;
   ModelParams p;
   p.rho = 0.3;
@@ -108,7 +110,8 @@ TEST_CASE("Schlick Fresnel average = F0 + (1 - F0)/21", "[identities]") {
   for (double f0 : {0.0, 0.04, 0.5, 1.0}) {
     Fresnel F{Fresnel::Kind::Schlick, f0};
     IntegrationStats stats;
-    CHECK(FresnelAverage(F, IntegrationOptions{}, stats) == Approx(f0 + (1 - f0) / 21).margin(1e-12));
+    CHECK(FresnelAverage(F, IntegrationOptions{}, stats) ==
+          Approx(f0 + (1 - f0) / 21).margin(1e-12));
   }
 }
 
@@ -141,7 +144,8 @@ TEST_CASE("GGX at alpha = 1: the closed forms of E and E_avg", "[identities]") {
   IntegrationStats stats;
   ModelParams p;
   p.roughness = 1;
-  CHECK(AverageAlbedo(MakeModel("ggx", p), {}, stats).lin == Approx(4.0 / 3 * (1 - ln2)).margin(1e-9));
+  CHECK(AverageAlbedo(MakeModel("ggx", p), {}, stats).lin ==
+        Approx(4.0 / 3 * (1 - ln2)).margin(1e-9));
   CHECK(AverageAlbedo(MakeModel("ggx-separable", p), {}, stats).lin ==
         Approx(4 * Sqr(1 - ln2)).margin(1e-9));
 }
@@ -162,8 +166,10 @@ TEST_CASE("Burley and Frostbite closed forms", "[identities]") {
   IntegrationStats stats;
   ModelParams p;
   p.roughness = 0;
-  CHECK(AverageAlbedo(MakeModel("burley", p), {}, stats).lin == Approx(Sqr(41.0 / 42)).margin(1e-10));
-  CHECK(AverageAlbedo(MakeModel("frostbite", p), {}, stats).lin == Approx(Sqr(20.0 / 21)).margin(1e-10));
+  CHECK(AverageAlbedo(MakeModel("burley", p), {}, stats).lin ==
+        Approx(Sqr(41.0 / 42)).margin(1e-10));
+  CHECK(AverageAlbedo(MakeModel("frostbite", p), {}, stats).lin ==
+        Approx(Sqr(20.0 / 21)).margin(1e-10));
 }
 
 TEST_CASE("Ashikhmin-Shirley diffuse: E(mu) = rho (1 - R_s)(1 - (1 - mu/2)^5)", "[identities]") {
@@ -198,12 +204,15 @@ TEST_CASE("Fujii normalised ION: E(1) and E_avg closed forms", "[identities]") {
   }
 }
 
-TEST_CASE("Oren-Nayar at normal view: qualitative E(1) = rho A, full E(1) = rho C1 + 0.17 rho^2 ...",
-          "[identities]") {
+TEST_CASE(
+    "Oren-Nayar at normal view: qualitative E(1) = rho A, full E(1) = rho C1 + 0.17 rho^2 ...",
+    "[identities]") {
   for (double s : {0.0, 0.3, 1.0, 1.5}) {
     double s2 = s * s;
-    CHECK(Albedo("oren-nayar-qualitative", 1, s) == Approx(1 - 0.5 * s2 / (s2 + 0.33)).margin(1e-12));
-    CHECK(Albedo("oren-nayar-qualitative-ir", 1, s) == Approx(1 - 0.5 * s2 / (s2 + 0.57)).margin(1e-12));
+    CHECK(Albedo("oren-nayar-qualitative", 1, s) ==
+          Approx(1 - 0.5 * s2 / (s2 + 0.33)).margin(1e-12));
+    CHECK(Albedo("oren-nayar-qualitative-ir", 1, s) ==
+          Approx(1 - 0.5 * s2 / (s2 + 0.57)).margin(1e-12));
     ModelParams p;
     p.roughness = s;
     IntegrationStats stats;
@@ -221,10 +230,11 @@ TEST_CASE("Limits: Oren-Nayar and Fujii at sigma = 0, Hammon at alpha = 0 at nor
     ModelParams p;
     p.roughness = 0;
     INFO(id);
-    CHECK(Evaluate(MakeModel(id, p), wo, wi) * Pi == Approx(std::string(id) == "gotanda-fresnel"
-                                                                ? 21.0 / 20 * (1 - Pow5(0.7)) * (1 - Pow5(0.4))
-                                                                : 1.0)
-                                                         .margin(1e-12));
+    CHECK(Evaluate(MakeModel(id, p), wo, wi) * Pi ==
+          Approx(std::string(id) == "gotanda-fresnel"
+                     ? 21.0 / 20 * (1 - Pow5(0.7)) * (1 - Pow5(0.4))
+                     : 1.0)
+              .margin(1e-12));
   }
   ModelParams p0;
   p0.roughness = 0;
@@ -232,7 +242,8 @@ TEST_CASE("Limits: Oren-Nayar and Fujii at sigma = 0, Hammon at alpha = 0 at nor
   CHECK(Evaluate(MakeModel("hammon", p0), n, n) * Pi == Approx(1.05).margin(1e-12));
 }
 
-TEST_CASE("DFG consistency: A + B = E (F = 1) and F0 A + B = albedo with Schlick F0", "[identities]") {
+TEST_CASE("DFG consistency: A + B = E (F = 1) and F0 A + B = albedo with Schlick F0",
+          "[identities]") {
   for (const char* id : {"ggx", "ggx-separable", "beckmann", "blinn-phong"})
     for (double r : {0.1, 0.5, 1.0})
       for (double mu : {0.05, 0.5, 1.0}) {

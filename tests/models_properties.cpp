@@ -30,11 +30,27 @@ const double kEdgeRoughness[] = {0.0, 1e-6, 0.1, 0.5, 1.0};
 }  // namespace
 
 TEST_CASE("The catalogue lists the 22 model ids of the contract", "[models]") {
-  const char* ids[] = {"lambert", "burley", "frostbite", "oren-nayar", "oren-nayar-qualitative",
-                       "oren-nayar-qualitative-ir", "fujii", "fujii-normalized", "gotanda-fresnel",
-                       "gotanda-ggx", "hammon", "shirley", "ashikhmin-shirley-diffuse",
-                       "triace-lambert", "ggx", "ggx-separable", "ggx-vcavity", "beckmann",
-                       "beckmann-separable", "blinn-phong", "blinn-phong-normalized",
+  const char* ids[] = {"lambert",
+                       "burley",
+                       "frostbite",
+                       "oren-nayar",
+                       "oren-nayar-qualitative",
+                       "oren-nayar-qualitative-ir",
+                       "fujii",
+                       "fujii-normalized",
+                       "gotanda-fresnel",
+                       "gotanda-ggx",
+                       "hammon",
+                       "shirley",
+                       "ashikhmin-shirley-diffuse",
+                       "triace-lambert",
+                       "ggx",
+                       "ggx-separable",
+                       "ggx-vcavity",
+                       "beckmann",
+                       "beckmann-separable",
+                       "blinn-phong",
+                       "blinn-phong-normalized",
                        "ashikhmin-shirley"};
   CHECK(AllModels().size() == sizeof(ids) / sizeof(ids[0]));
   for (const char* id : ids) CHECK(FindModel(id) != nullptr);
@@ -55,8 +71,10 @@ TEST_CASE("Reciprocity holds exactly for the models that claim it, and fails for
       }
     }
     INFO(m.id << " worst relative asymmetry " << worst);
-    if (m.reciprocal) CHECK(worst < 1e-12);
-    else CHECK(worst > 1e-6);
+    if (m.reciprocal)
+      CHECK(worst < 1e-12);
+    else
+      CHECK(worst > 1e-6);
   }
 }
 
@@ -78,8 +96,9 @@ TEST_CASE("Every BRDF value is finite at every edge (mu = 0, 1e-12, 1; roughness
 // f(rho) = rho lin + rho^2 quad is non-negative for every rho in [0, 1] iff lin >= 0 and
 // lin + quad >= 0: the flag is checked on the lower of the two. (The full Oren-Nayar is >= 0 at
 // rho = 1 but its rho^1 part goes negative at grazing back-scatter for sigma >~ 0.67.)
-TEST_CASE("Non-negativity for every rho holds for the models that claim it, and fails for the others",
-          "[models]") {
+TEST_CASE(
+    "Non-negativity for every rho holds for the models that claim it, and fails for the others",
+    "[models]") {
   auto lowestOverRho = [](const AnyModel& model, double mu_o, double mu_l, double phi) {
     RhoParts p = EvaluateParts(model, ViewDirection(mu_o), DirectionFromMuPhi(mu_l, phi));
     return std::min(p.lin, p.lin + p.quad);
@@ -98,13 +117,16 @@ TEST_CASE("Non-negativity for every rho holds for the models that claim it, and 
       for (double mu : kEdgeMus) lowest = std::min(lowest, lowestOverRho(model, mu, mu, Pi));
     }
     INFO(m.id << " lowest value " << lowest);
-    if (m.nonNegative) CHECK(lowest >= 0);
-    else CHECK(lowest < 0);
+    if (m.nonNegative)
+      CHECK(lowest >= 0);
+    else
+      CHECK(lowest < 0);
   }
 }
 
-TEST_CASE("Energy conservation E(mu) <= 1 holds for the models that claim it, and fails for the others",
-          "[models]") {
+TEST_CASE(
+    "Energy conservation E(mu) <= 1 holds for the models that claim it, and fails for the others",
+    "[models]") {
   for (const ModelInfo& m : AllModels()) {
     double highest = 0;
     for (double r : {0.0, 0.25, 0.5, 0.75, 1.0})
@@ -117,8 +139,10 @@ TEST_CASE("Energy conservation E(mu) <= 1 holds for the models that claim it, an
         if (!TakesRoughness(m)) break;
       }
     INFO(m.id << " highest albedo " << highest);
-    if (m.energyConserving) CHECK(highest <= 1 + 1e-7);
-    else CHECK(highest > 1 + 1e-6);
+    if (m.energyConserving)
+      CHECK(highest <= 1 + 1e-7);
+    else
+      CHECK(highest > 1 + 1e-6);
   }
 }
 
@@ -138,10 +162,12 @@ TEST_CASE("Directional albedo is finite and non-negative at the edges for the no
       }
 }
 
-TEST_CASE("Parameters out of range and unknown models are refused with a clear message", "[models]") {
+TEST_CASE("Parameters out of range and unknown models are refused with a clear message",
+          "[models]") {
   ModelParams p;
   p.roughness = 1.5;
-  CHECK_THROWS_WITH(MakeModel("ggx", p), Catch::Contains("roughness") && Catch::Contains("outside"));
+  CHECK_THROWS_WITH(MakeModel("ggx", p),
+                    Catch::Contains("roughness") && Catch::Contains("outside"));
   CHECK_THROWS_WITH(MakeModel("phong-ish", {}), Catch::Contains("unknown model 'phong-ish'"));
   ModelParams q;
   q.eta = 1.5;

@@ -82,14 +82,16 @@ TEST_CASE("Every committed table passes kiln verify (a strided sample of its cel
   CHECK(r.out.find("0 over their bound") != std::string::npos);
 }
 
-TEST_CASE("Default 2D microfacet tables: lookup error below 1e-3 over the whole domain, "
-          "grazing angles and roughness 0 included",
-          "[luts]") {
+TEST_CASE(
+    "Default 2D microfacet tables: lookup error below 1e-3 over the whole domain, "
+    "grazing angles and roughness 0 included",
+    "[luts]") {
   // The root4-layer mu axis follows the layer mu ~ alpha at every roughness (lut.h), so the
   // corner (mu, r) -> (0, 0) is sampled like the rest: a third of the points lie in it. The
   // references are adaptive quadrature at 1e-8, independent of the fixed rule the ggx tables are
   // baked with.
-  for (const char* name : {"ggx-dfg", "ggx-albedo", "ggx-separable-dfg", "beckmann-dfg", "blinn-phong-albedo"}) {
+  for (const char* name :
+       {"ggx-dfg", "ggx-albedo", "ggx-separable-dfg", "beckmann-dfg", "blinn-phong-albedo"}) {
     Table t = loadTable(LutsDir() + "/" + name + ".exr");
     TableSpec spec = SpecFromTable(t);
     test::Rng rng(99);
@@ -98,7 +100,7 @@ TEST_CASE("Default 2D microfacet tables: lookup error below 1e-3 over the whole 
       double u = rng.Uniform(), v = rng.Uniform();
       double x[2] = {u, v};
       if (i % 3 == 1) x[0] = std::pow(10.0, -12 * u);  // grazing, down to 1e-12
-      if (i % 3 == 2) {                                 // the corner
+      if (i % 3 == 2) {                                // the corner
         x[0] = std::pow(10.0, -12 * u);
         x[1] = i % 2 ? 0.0 : std::pow(10.0, -6 * v);
       }

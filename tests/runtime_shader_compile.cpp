@@ -31,7 +31,8 @@ Compiled Compile(const std::string& text, const std::string& ext, const std::str
   std::string base = "/tmp/kiln_shader_test_" + std::to_string(getpid());
   std::ofstream(base + ext) << text;
   std::string out = flags.find("-V") != std::string::npos ? " -o " + base + ".spv" : "";
-  std::string cmd = "glslangValidator " + flags + " " + base + ext + out + " >" + base + ".log 2>&1";
+  std::string cmd =
+      "glslangValidator " + flags + " " + base + ext + out + " >" + base + ".log 2>&1";
   int status = std::system(cmd.c_str());
   Compiled c;
   c.log = kiln::test::ReadFile(base + ".log");
@@ -69,7 +70,8 @@ float4 main(float3 x : TEXCOORD0) : SV_Target {
 TEST_CASE("The GLSL snippet compiles as GLSL ES 3.00 under a mediump default and as GLSL 3.30",
           "[runtime][shaders]") {
   REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
-  std::string es = "#version 300 es\nprecision mediump float;\n" + Source("kiln_lut.glsl") + kGlslMain;
+  std::string es =
+      "#version 300 es\nprecision mediump float;\n" + Source("kiln_lut.glsl") + kGlslMain;
   Compiled c = Compile(es, ".frag", "-S frag");
   INFO(c.log);
   CHECK(c.exitCode == 0);
@@ -78,10 +80,12 @@ TEST_CASE("The GLSL snippet compiles as GLSL ES 3.00 under a mediump default and
   INFO(d.log);
   CHECK(d.exitCode == 0);
   // The check can fail: a call to a function the snippet does not define is refused.
-  CHECK(Compile(desktop + "\nvoid other() { kilnSample4D(); }\n", ".frag", "-S frag").exitCode != 0);
+  CHECK(Compile(desktop + "\nvoid other() { kilnSample4D(); }\n", ".frag", "-S frag").exitCode !=
+        0);
 }
 
-TEST_CASE("Every float, vector and sampler the GLSL snippet declares is highp", "[runtime][shaders]") {
+TEST_CASE("Every float, vector and sampler the GLSL snippet declares is highp",
+          "[runtime][shaders]") {
   std::istringstream lines(Source("kiln_lut.glsl"));
   std::regex declaration(R"((^|[^A-Za-z_])(float|vec[234]|ivec2|sampler2D) [A-Za-z_])");
   std::string line;

@@ -13,7 +13,8 @@ double MaxCell(const AxisSpec& a) {
 }
 }  // namespace
 
-TEST_CASE("NarrowAxis: no cell wider than the catalogue's, fewer nodes, at least 2", "[scene][axis]") {
+TEST_CASE("NarrowAxis: no cell wider than the catalogue's, fewer nodes, at least 2",
+          "[scene][axis]") {
   AxisSpec full{"roughness", 0, 1, 64, Warp::Linear};
   CHECK(NarrowAxis(full, 0, 1).size == 64);
   int previous = 65;

@@ -64,7 +64,8 @@ TEST_CASE("A scene bake skips the up-to-date files and leaves them untouched", "
   Plan bigger = PlanSceneFile(ScenePath("metal_rough_texture.gltf"), popt);
   popt.size = 4;
   Plan smaller = PlanSceneFile(ScenePath("metal_rough_texture.gltf"), popt);
-  BakePlan(Plan{smaller.scenePath, smaller.format, 1, {smaller.tables[2]}, {}, {}}, dir, Fast(), false, false, nullptr);
+  BakePlan(Plan{smaller.scenePath, smaller.format, 1, {smaller.tables[2]}, {}, {}}, dir, Fast(),
+           false, false, nullptr);
   CHECK(StateOf(bigger.tables[2].spec, dir) == TableState::Stale);
   std::system(("rm -rf " + dir).c_str());
 }
@@ -74,7 +75,8 @@ TEST_CASE("With --header, a skipped table whose header is missing gets one", "[s
   PlanOptions popt;
   popt.size = 3;
   Plan plan = PlanSceneFile(ScenePath("metal_rough_factors.gltf"), popt);
-  Plan one{plan.scenePath, plan.format, 1, {plan.tables[2]}, {}, {}};  // ggx-albedo-avg-r0.3: 2 texels
+  Plan one{plan.scenePath,   plan.format, 1,
+           {plan.tables[2]}, {},          {}};  // ggx-albedo-avg-r0.3: 2 texels
   BakePlan(one, dir, Fast(), false, false, nullptr);
   std::string h = dir + "/ggx-albedo-avg-r0.3.h";
   CHECK(ReadFile(h).empty());
@@ -101,7 +103,8 @@ TEST_CASE("The scene bake reports baked, skipped and the time", "[scene][bake]")
   };
   std::string first = report();
   CHECK(first.find("baked   ggx-dfg-r0.3 ") == 0);
-  CHECK(first.find("scene " + scene + ": 3 baked, 0 skipped (up to date) in ") != std::string::npos);
+  CHECK(first.find("scene " + scene + ": 3 baked, 0 skipped (up to date) in ") !=
+        std::string::npos);
   std::string second = report();
   CHECK(second.find("skipped ggx-dfg-r0.3 ") == 0);
   CHECK(second.find(": 0 baked, 3 skipped (up to date) in ") != std::string::npos);

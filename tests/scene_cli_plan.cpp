@@ -24,9 +24,12 @@ TEST_CASE("kiln plan prints each table with reasons, axes, size and state", "[sc
   CHECK(r.err.empty());
   CHECK(r.out.find("(glTF, 2 materials): 3 tables") != std::string::npos);
   CHECK(r.out.find("ggx-dfg-r0.3-0.6  [missing]") != std::string::npos);
-  CHECK(r.out.find("axes: mu 0..1 (4, root4-layer) x roughness 0.3..0.6 (2, sqrt) = 8 texels") != std::string::npos);
-  CHECK(r.out.find("    'Brass' (/materials/1): base GGX lobe, roughnessFactor 0.6") != std::string::npos);
-  CHECK(r.out.find("unused material: no mesh primitive uses it ['Leftover' (/materials/2)]") != std::string::npos);
+  CHECK(r.out.find("axes: mu 0..1 (4, root4-layer) x roughness 0.3..0.6 (2, sqrt) = 8 texels") !=
+        std::string::npos);
+  CHECK(r.out.find("    'Brass' (/materials/1): base GGX lobe, roughnessFactor 0.6") !=
+        std::string::npos);
+  CHECK(r.out.find("unused material: no mesh primitive uses it ['Leftover' (/materials/2)]") !=
+        std::string::npos);
 
   // After a bake of the same plan, every table is up to date.
   PlanOptions popt;
@@ -41,7 +44,8 @@ TEST_CASE("kiln plan prints each table with reasons, axes, size and state", "[sc
   std::system(("rm -rf " + dir).c_str());
 }
 
-TEST_CASE("kiln plan lists what needs no table, and warns about unknown required extensions", "[scene][cli]") {
+TEST_CASE("kiln plan lists what needs no table, and warns about unknown required extensions",
+          "[scene][cli]") {
   if (!PlanCommandExists()) {
     WARN("`kiln plan` is not registered in baker/cli/main.cpp yet: skipped");
     return;
@@ -49,12 +53,15 @@ TEST_CASE("kiln plan lists what needs no table, and warns about unknown required
   auto lambert = RunKiln("plan '" + ScenePath("lambert_only.kiln.json") + "'");
   REQUIRE(lambert.exitCode == 0);
   CHECK(lambert.out.find("0 tables") != std::string::npos);
-  CHECK(lambert.out.find("needs no table:\n  Lambert diffuse: its albedo is rho exactly") != std::string::npos);
+  CHECK(lambert.out.find("needs no table:\n  Lambert diffuse: its albedo is rho exactly") !=
+        std::string::npos);
   auto sheen = RunKiln("plan '" + ScenePath("sheen_specular.gltf") + "'");
-  CHECK(sheen.out.find("would need a table kiln cannot bake yet:\n  KHR_materials_sheen:") != std::string::npos);
+  CHECK(sheen.out.find("would need a table kiln cannot bake yet:\n  KHR_materials_sheen:") !=
+        std::string::npos);
   auto required = RunKiln("plan '" + ScenePath("required_unknown.gltf") + "'");
   CHECK(required.exitCode == 0);
   CHECK(required.err.find("kiln: warning: ") == 0);
-  CHECK(required.err.find("'EXT_future_brdf' is required but unknown to kiln") != std::string::npos);
+  CHECK(required.err.find("'EXT_future_brdf' is required but unknown to kiln") !=
+        std::string::npos);
   CHECK(required.out.find("ggx-dfg-r0.25") != std::string::npos);
 }

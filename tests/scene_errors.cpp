@@ -21,16 +21,23 @@ struct BadFile {
 const BadFile kBadFiles[] = {
     {"bad/not_json.gltf", "line 4, column 42", "not valid JSON"},
     {"bad/gltf_version1.gltf", "/asset/version", "glTF 1.0 is not supported: kiln reads glTF 2.x"},
-    {"bad/dangling_material.gltf", "/meshes/0/primitives/1/material", "material 2 does not exist (the file has 2 materials)"},
-    {"bad/dangling_texture.gltf", "/materials/1/extensions/KHR_materials_clearcoat/clearcoatRoughnessTexture/index",
+    {"bad/dangling_material.gltf", "/meshes/0/primitives/1/material",
+     "material 2 does not exist (the file has 2 materials)"},
+    {"bad/dangling_texture.gltf",
+     "/materials/1/extensions/KHR_materials_clearcoat/clearcoatRoughnessTexture/index",
      "texture 1 does not exist (the file has 1 texture)"},
-    {"bad/roughness_out_of_range.gltf", "/materials/3/pbrMetallicRoughness/roughnessFactor", "1.5 is outside [0, 1]"},
-    {"bad/ior_invalid.gltf", "/materials/0/extensions/KHR_materials_ior/ior", "0.5 is not a valid IOR (>= 1, or exactly 0)"},
+    {"bad/roughness_out_of_range.gltf", "/materials/3/pbrMetallicRoughness/roughnessFactor",
+     "1.5 is outside [0, 1]"},
+    {"bad/ior_invalid.gltf", "/materials/0/extensions/KHR_materials_ior/ior",
+     "0.5 is not a valid IOR (>= 1, or exactly 0)"},
     {"bad/unknown_model.kiln.json", "/materials/1/model", "unknown model 'ggxx'"},
-    {"bad/manifest_out_of_range.kiln.json", "/materials/0/roughness/1", "roughness 1.4 is outside [0, 1]"},
-    {"bad/manifest_unknown_key.kiln.json", "/materials/0/rougness", "model 'ggx' takes no parameter 'rougness'"},
+    {"bad/manifest_out_of_range.kiln.json", "/materials/0/roughness/1",
+     "roughness 1.4 is outside [0, 1]"},
+    {"bad/manifest_unknown_key.kiln.json", "/materials/0/rougness",
+     "model 'ggx' takes no parameter 'rougness'"},
     {"bad/manifest_version2.kiln.json", "/kiln_scene", "version 2, kiln reads version 1"},
-    {"bad/manifest_bad_table.kiln.json", "/materials/0/tables/0", "model 'lambert' has no dfg table"},
+    {"bad/manifest_bad_table.kiln.json", "/materials/0/tables/0",
+     "model 'lambert' has no dfg table"},
     {"bad/glb_version1.glb", "byte 4 (glb version)", "glb version 1"},
 };
 
@@ -50,7 +57,8 @@ TEST_CASE("Every bad file: SceneError names the file and the place", "[scene][er
       CHECK(e.File() == path);
       CHECK(e.Place() == b.place);
       std::string what = e.what();
-      CHECK(what == path + ": " + b.place + ": " + what.substr(path.size() + 2 + std::string(b.place).size() + 2));
+      CHECK(what == path + ": " + b.place + ": " +
+                        what.substr(path.size() + 2 + std::string(b.place).size() + 2));
       CHECK(what.find(b.problem) != std::string::npos);
       CHECK(what.find('\n') == std::string::npos);
     }
@@ -71,15 +79,19 @@ TEST_CASE("More bad values, each at its pointer", "[scene][errors]") {
        "a.gltf", "/materials/0/extensions/KHR_materials_clearcoat/clearcoatRoughnessFactor"},
       {R"({"asset": {"version": "2.0"}, "materials": [{"pbrMetallicRoughness": {"baseColorTexture": {}}}]})",
        "a.gltf", "/materials/0/pbrMetallicRoughness/baseColorTexture"},
-      {R"({"asset": {"version": "2.0"}, "textures": [{"source": 3}]})", "a.gltf", "/textures/0/source"},
+      {R"({"asset": {"version": "2.0"}, "textures": [{"source": 3}]})", "a.gltf",
+       "/textures/0/source"},
       {R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"material": -1}]}]})", "a.gltf",
        "/meshes/0/primitives/0/material"},
       {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "roughness": [0.6, 0.2]}]})", "s.json",
        "/materials/0/roughness"},
-      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "f0": 0.04, "eta": 1.5}]})", "s.json", "/materials/0"},
+      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "f0": 0.04, "eta": 1.5}]})", "s.json",
+       "/materials/0"},
       {R"({"kiln_scene": 1, "materials": [{"roughness": 0.3}]})", "s.json", "/materials/0"},
-      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "tables": ["dgf"]}]})", "s.json", "/materials/0/tables/0"},
-      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "roughness": "rough"}]})", "s.json", "/materials/0/roughness"},
+      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "tables": ["dgf"]}]})", "s.json",
+       "/materials/0/tables/0"},
+      {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "roughness": "rough"}]})", "s.json",
+       "/materials/0/roughness"},
   };
   for (const Case& c : cases) {
     INFO(c.text);
@@ -93,10 +105,12 @@ TEST_CASE("More bad values, each at its pointer", "[scene][errors]") {
 }
 
 TEST_CASE("A missing file is an error naming it", "[scene][errors]") {
-  CHECK_THROWS_WITH(PlanSceneFile("/nonexistent/scene.gltf"), "/nonexistent/scene.gltf: cannot open the file");
+  CHECK_THROWS_WITH(PlanSceneFile("/nonexistent/scene.gltf"),
+                    "/nonexistent/scene.gltf: cannot open the file");
 }
 
-TEST_CASE("kiln plan: a bad file is one line on stderr naming file and place, exit 1", "[scene][errors][cli]") {
+TEST_CASE("kiln plan: a bad file is one line on stderr naming file and place, exit 1",
+          "[scene][errors][cli]") {
   if (!PlanCommandExists()) {
     WARN("`kiln plan` is not registered in baker/cli/main.cpp yet: skipped");
     return;
@@ -113,7 +127,8 @@ TEST_CASE("kiln plan: a bad file is one line on stderr naming file and place, ex
 
 TEST_CASE("BakeScene: a bad file returns 1 and writes nothing", "[scene][errors]") {
   std::string dir = SceneTempDir("bad_bake");
-  CHECK(BakeScene(ScenePath("bad/roughness_out_of_range.gltf"), dir, BakeOptions{}, false, false) == 1);
+  CHECK(BakeScene(ScenePath("bad/roughness_out_of_range.gltf"), dir, BakeOptions{}, false, false) ==
+        1);
   CHECK(system(("test -z \"$(ls -A " + dir + ")\"").c_str()) == 0);
   std::system(("rm -rf " + dir).c_str());
 }

@@ -13,14 +13,16 @@ using Names = std::vector<std::string>;
 TEST_CASE("A .glb (JSON chunk + BIN chunk) plans like the same JSON", "[scene][glb]") {
   Plan plan = PlanSceneFile(ScenePath("box.glb"));
   CHECK(plan.format == "glb");
-  CHECK(TableNames(plan) == Names{"ggx-dfg-r0.2-0.9", "ggx-albedo-r0.2-0.9", "ggx-albedo-avg-r0.2-0.9"});
+  CHECK(TableNames(plan) ==
+        Names{"ggx-dfg-r0.2-0.9", "ggx-albedo-r0.2-0.9", "ggx-albedo-avg-r0.2-0.9"});
   // A glb made from merge.gltf's JSON (with a BIN chunk) plans exactly like the .gltf.
   std::string dir = SceneTempDir("glb");
   WriteText(dir + "/merge.glb", MakeGlb(ReadFile(ScenePath("merge.gltf")), std::string(36, '\0')));
   Plan glb = PlanSceneFile(dir + "/merge.glb");
   Plan gltf = PlanSceneFile(ScenePath("merge.gltf"));
   REQUIRE(TableNames(glb) == TableNames(gltf));
-  for (size_t i = 0; i < glb.tables.size(); ++i) CHECK(glb.tables[i].spec.Hash() == gltf.tables[i].spec.Hash());
+  for (size_t i = 0; i < glb.tables.size(); ++i)
+    CHECK(glb.tables[i].spec.Hash() == gltf.tables[i].spec.Hash());
   std::system(("rm -rf " + dir).c_str());
 }
 

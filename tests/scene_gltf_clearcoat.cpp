@@ -18,7 +18,8 @@ TEST_CASE("Clearcoat: its roughness widens the dfg table; a zero factor has no e
   CHECK(r->hi == 0.5);
   CHECK(r->size == 73);  // the catalogue's sqrt-warped roughness spacing over [0.1, 0.5]
   CHECK(std::find(dfg.reasons.begin(), dfg.reasons.end(),
-                  "'Car paint' (/materials/0): clearcoat GGX lobe, clearcoatRoughnessFactor 0.1") != dfg.reasons.end());
+                  "'Car paint' (/materials/0): clearcoat GGX lobe, clearcoatRoughnessFactor 0.1") !=
+        dfg.reasons.end());
   // 'Satin lacquer' has clearcoatFactor 0: its clearcoat roughness 0.9 must not widen the table.
   const PlanNote* none = FindNote(plan, SceneNote::Kind::NoEffect, "KHR_materials_clearcoat");
   REQUIRE(none);

@@ -12,7 +12,8 @@ using Names = std::vector<std::string>;
 
 TEST_CASE("IOR and transmission: the dielectric table at one IOR is 2D", "[scene]") {
   Plan plan = PlanSceneFile(ScenePath("transmission_ior.gltf"));
-  REQUIRE(TableNames(plan) == Names{"ggx-dfg", "ggx-albedo", "ggx-albedo-avg", "ggx-fresnel-albedo-ior1.5"});
+  REQUIRE(TableNames(plan) ==
+          Names{"ggx-dfg", "ggx-albedo", "ggx-albedo-avg", "ggx-fresnel-albedo-ior1.5"});
   const TableSpec& d = FindTable(plan, "ggx-fresnel-albedo-ior1.5")->spec;
   TableSpec full = CatalogueTable("ggx-fresnel-albedo");
   REQUIRE(full.axes.size() == 3);
@@ -51,7 +52,8 @@ TEST_CASE("The 2D slice holds the 3D table's values at that IOR", "[scene]") {
 }
 
 TEST_CASE("One roughness and one IOR: a 1D table over mu", "[scene]") {
-  Plan plan = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.1},
+  Plan plan = PlanText(
+      OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.1},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_ior": {"ior": 1.33}}})"));
   const PlannedTable* t = FindTable(plan, "ggx-fresnel-albedo-r0.1-ior1.33");
   REQUIRE(t);
@@ -62,7 +64,8 @@ TEST_CASE("One roughness and one IOR: a 1D table over mu", "[scene]") {
 }
 
 TEST_CASE("Dispersion spreads the IOR: ior -+ (ior - 1) 0.025 dispersion", "[scene]") {
-  Plan plan = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0},
+  Plan plan = PlanText(
+      OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_volume": {},
                      "KHR_materials_ior": {"ior": 1.5}, "KHR_materials_dispersion": {"dispersion": 2}}})"));
   const PlannedTable* t = FindTable(plan, "ggx-fresnel-albedo-r0-ior1.475-1.525");
@@ -72,7 +75,8 @@ TEST_CASE("Dispersion spreads the IOR: ior -+ (ior - 1) 0.025 dispersion", "[sce
 }
 
 TEST_CASE("Transmission 0, and ior 0 (F = 1), need no dielectric table", "[scene]") {
-  Plan plan = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.5},
+  Plan plan = PlanText(
+      OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0, "roughnessFactor": 0.5},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 0}, "KHR_materials_volume": {}}})"));
   CHECK(TableNames(plan) == Names{"ggx-dfg-r0.5", "ggx-albedo-r0.5", "ggx-albedo-avg-r0.5"});
   CHECK(FindNote(plan, SceneNote::Kind::NoEffect, "KHR_materials_transmission"));

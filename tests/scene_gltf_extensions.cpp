@@ -8,7 +8,8 @@ using namespace kiln::test;
 using Names = std::vector<std::string>;
 using Kind = SceneNote::Kind;
 
-TEST_CASE("Sheen, specular, iridescence, emissive strength, unknown: each reported with its reason", "[scene]") {
+TEST_CASE("Sheen, specular, iridescence, emissive strength, unknown: each reported with its reason",
+          "[scene]") {
   Plan plan = PlanSceneFile(ScenePath("sheen_specular.gltf"));
   CHECK(TableNames(plan) == Names{"ggx-dfg-r0.8", "ggx-albedo-r0.8", "ggx-albedo-avg-r0.8"});
   const PlanNote* sheen = FindNote(plan, Kind::NotYet, "KHR_materials_sheen");
@@ -35,7 +36,8 @@ TEST_CASE("An unknown required extension is a warning; the plan covers the rest"
         std::string::npos);
 }
 
-TEST_CASE("Unlit materials need nothing; anisotropy and iridescence are not yet tables", "[scene]") {
+TEST_CASE("Unlit materials need nothing; anisotropy and iridescence are not yet tables",
+          "[scene]") {
   Plan unlit = PlanText(OneMaterialGltf(R"({"extensions": {"KHR_materials_unlit": {}}})"));
   CHECK(unlit.tables.empty());
   CHECK(FindNote(unlit, Kind::NoTable, "KHR_materials_unlit"));

@@ -38,8 +38,10 @@ TEST_CASE("A roughness texture needs the whole axis: the catalogue's own tables"
 
 TEST_CASE("A texture multiplies the factor: roughness spans [0, factor]", "[scene]") {
   Plan plan = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"roughnessFactor": 0.5,
-      "metallicRoughnessTexture": {"index": 0}}})").insert(1, R"("textures": [{}], )"));
-  REQUIRE(TableNames(plan) == Names{"ggx-dfg-r0-0.5", "ggx-albedo-r0-0.5", "ggx-albedo-avg-r0-0.5"});
+      "metallicRoughnessTexture": {"index": 0}}})")
+                           .insert(1, R"("textures": [{}], )"));
+  REQUIRE(TableNames(plan) ==
+          Names{"ggx-dfg-r0-0.5", "ggx-albedo-r0-0.5", "ggx-albedo-avg-r0-0.5"});
   const AxisSpec* r = FindAxis(plan.tables[0].spec, "roughness");
   CHECK(r->lo == 0);
   CHECK(r->hi == 0.5);

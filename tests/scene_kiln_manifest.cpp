@@ -20,8 +20,9 @@ TEST_CASE("A Lambert-only scene needs no table, and says why", "[scene][manifest
 
 TEST_CASE("Manifest: ranges, the whole axis, a dielectric, a conductor", "[scene][manifest]") {
   Plan plan = PlanSceneFile(ScenePath("manifest.kiln.json"));
-  REQUIRE(TableNames(plan) == Names{"ggx-dfg-r0.05-0.6", "ggx-albedo-r0.05-0.6", "ggx-albedo-avg-r0.05-0.6",
-                                    "burley-albedo", "burley-albedo-avg", "ggx-fresnel-albedo-r0.05-ior1.5",
+  REQUIRE(TableNames(plan) == Names{"ggx-dfg-r0.05-0.6", "ggx-albedo-r0.05-0.6",
+                                    "ggx-albedo-avg-r0.05-0.6", "burley-albedo",
+                                    "burley-albedo-avg", "ggx-fresnel-albedo-r0.05-ior1.5",
                                     "fresnel-conductor-n0.47-k2.8"});
   // dfg: steel [0.2, 0.6] + glass 0.05 + gold 0.3; the albedo tables only steel and glass (gold
   // lists its tables).
@@ -38,15 +39,20 @@ TEST_CASE("Manifest: ranges, the whole axis, a dielectric, a conductor", "[scene
   REQUIRE(gold.axes.size() == 3);
   CHECK(gold.axes[1].lo == 0.47);
   CHECK(gold.axes[2].lo == 2.8);
-  CHECK(FindNote(plan, SceneNote::Kind::NoTable, "Lambert diffuse")->materials == Names{"'plaster' (/materials/4)"});
+  CHECK(FindNote(plan, SceneNote::Kind::NoTable, "Lambert diffuse")->materials ==
+        Names{"'plaster' (/materials/4)"});
 }
 
-TEST_CASE("Manifest: an omitted axis parameter is the whole axis; tables: [] is nothing", "[scene][manifest]") {
+TEST_CASE("Manifest: an omitted axis parameter is the whole axis; tables: [] is nothing",
+          "[scene][manifest]") {
   Plan plan = PlanText(R"({"kiln_scene": 1, "materials": [
       {"model": "oren-nayar"}, {"model": "ggx", "tables": []},
-      {"model": "beckmann", "roughness": 0.5, "tables": ["dfg"]}]})", "s.json");
-  CHECK(TableNames(plan) == Names{"oren-nayar-albedo", "oren-nayar-albedo-avg", "beckmann-dfg-r0.5"});
+      {"model": "beckmann", "roughness": 0.5, "tables": ["dfg"]}]})",
+                       "s.json");
+  CHECK(TableNames(plan) ==
+        Names{"oren-nayar-albedo", "oren-nayar-albedo-avg", "beckmann-dfg-r0.5"});
   CHECK(FindNote(plan, SceneNote::Kind::NoTable, "tables: []"));
   // Oren-Nayar's roughness runs to pi/2: the whole axis is the catalogue's.
-  CHECK(FindAxis(plan.tables[0].spec, "roughness")->hi == CatalogueTable("oren-nayar-albedo").axes[1].hi);
+  CHECK(FindAxis(plan.tables[0].spec, "roughness")->hi ==
+        CatalogueTable("oren-nayar-albedo").axes[1].hi);
 }

@@ -57,7 +57,8 @@ inline void WriteText(const std::string& path, const std::string& text) {
 }
 
 /// Plans a glTF or kiln scene given as text (written to a temporary file named `file`).
-inline Plan PlanText(const std::string& text, const std::string& file = "scene.gltf", PlanOptions opt = {}) {
+inline Plan PlanText(const std::string& text, const std::string& file = "scene.gltf",
+                     PlanOptions opt = {}) {
   std::string dir = SceneTempDir("text");
   WriteText(dir + "/" + file, text);
   Plan plan = PlanSceneFile(dir + "/" + file, opt);

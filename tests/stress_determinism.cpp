@@ -46,8 +46,8 @@ TEST_CASE("kiln bake writes the same bytes for -j 1, -j 2, -j 7 and across runs"
     std::vector<std::string> seven = Bake(root, std::string("j7") + flags, 7, flags);
     std::vector<std::string> again = Bake(root, std::string("j2-again") + flags, 2, flags);
     for (size_t i = 0; i < one.size(); ++i) {
-      INFO("file " << i << " (table " << kTables[std::min(i / 2, size_t(2))] << ", " << (i % 2 ? ".h" : ".exr")
-                   << "; the last is manifest.json)");
+      INFO("file " << i << " (table " << kTables[std::min(i / 2, size_t(2))] << ", "
+                   << (i % 2 ? ".h" : ".exr") << "; the last is manifest.json)");
       CHECK(one[i] == two[i]);
       CHECK(one[i] == seven[i]);
       CHECK(two[i] == again[i]);

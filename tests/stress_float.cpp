@@ -23,8 +23,8 @@
 //   absolute there (conditioning, not the formula).
 // - GGX and Beckmann BRDF (D G F / (4 mu_o mu_l)) with the cancellation-free Smith form
 //   mu Lambda = alpha^2 s^2 / (2 (sqrt(mu^2 + alpha^2 s^2) + mu)): 2e-5, down to mu = 1e-6;
-//   for Beckmann where tan^2(theta_h) / alpha^2 <= 20 (its exp(-tan^2/alpha^2) multiplies the rounding
-//   of its argument by tan^2/alpha^2: beyond e^-20 of the peak the error grows with it,
+//   for Beckmann where tan^2(theta_h) / alpha^2 <= 20 (its exp(-tan^2/alpha^2) multiplies the
+//   rounding of its argument by tan^2/alpha^2: beyond e^-20 of the peak the error grows with it,
 //   conditioning again). The textbook form (-1 + sqrt(1 + alpha^2 tan^2)) / 2 loses every digit
 //   in float: checked. The stable form's own residual (up to ~7e-6 near normal incidence) is
 //   s^2 = 1 - mu^2; (1 - mu)(1 + mu) would remove it.
@@ -75,11 +75,11 @@ float DielectricF(float c, float eta) {
   return (SqrF(parl) + SqrF(perp)) / 2;
 }
 
-/// The dielectric Fresnel without cancellation: cos^2(theta_t) = (mu^2 + (eta - 1)(eta + 1)) / eta^2
-/// (no 1 - sin^2 at grazing incidence), and the numerators rewritten so that eta -> 1 does not
-/// cancel either: mu - eta cos_t = (1 - eta^2) / (mu + eta cos_t) and
-/// eta mu - cos_t = (eta^2 - 1)((eta^2 + 1) mu^2 - 1) / (eta^2 (eta mu + cos_t)).
-/// T = float (the shader form) or double (the reference).
+/// The dielectric Fresnel without cancellation: cos^2(theta_t) = (mu^2 + (eta - 1)(eta + 1)) /
+/// eta^2 (no 1 - sin^2 at grazing incidence), and the numerators rewritten so that eta -> 1 does
+/// not cancel either: mu - eta cos_t = (1 - eta^2) / (mu + eta cos_t) and eta mu - cos_t = (eta^2 -
+/// 1)((eta^2 + 1) mu^2 - 1) / (eta^2 (eta mu + cos_t)). T = float (the shader form) or double (the
+/// reference).
 template <class T>
 T DielectricStable(T c, T eta) {
   c = std::min(T(1), std::max(T(-1), c));
@@ -142,7 +142,9 @@ float MicrofacetF(bool beckmann, float alpha, float f0, V3 o, V3 l) {
   float D = !std::isfinite(tan2) ? 0
             : beckmann           ? std::exp(-tan2 / a2) / (kPiF * a2 * cos4)
                                  : 1 / (kPiF * a2 * cos4 * SqrF(1 + tan2 / a2));
-  auto ml = [&](float mu) { return beckmann ? BeckmannMuLambdaF(alpha, mu) : GgxMuLambdaF(alpha, mu); };
+  auto ml = [&](float mu) {
+    return beckmann ? BeckmannMuLambdaF(alpha, mu) : GgxMuLambdaF(alpha, mu);
+  };
   float gOverMuO = 1 / (mu_o + ml(mu_o) + mu_o * ml(mu_l) / mu_l);
   float value = D * (mu_o * gOverMuO) * SchlickF(f0, oh) / (4 * mu_o * mu_l);
   return std::isfinite(value) ? value : 0;
@@ -151,7 +153,9 @@ float MicrofacetF(bool beckmann, float alpha, float f0, V3 o, V3 l) {
 // ---- comparisons -------------------------------------------------------------------------------
 
 /// Near the critical angle of eta < 1, where F is ill-conditioned (see the top).
-bool NearCritical(double c, double eta) { return eta < 1 && std::abs(c * c + eta * eta - 1) < 1e-2; }
+bool NearCritical(double c, double eta) {
+  return eta < 1 && std::abs(c * c + eta * eta - 1) < 1e-2;
+}
 
 /// |a - b| / max(|b|, 1e-4): relative above 1e-4, absolute (x 1e4) below.
 double FresnelErr(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-4); }
@@ -186,8 +190,8 @@ struct Worst {
 };
 
 /// Compares MicrofacetF with the double model `id` ("ggx" or "beckmann") at one point.
-void CompareMicrofacet(const std::string& id, float r, float f0, double mu_o, double mu_l, double phi,
-                       Worst& worst) {
+void CompareMicrofacet(const std::string& id, float r, float f0, double mu_o, double mu_l,
+                       double phi, Worst& worst) {
   ModelParams p;
   p.roughness = r;
   p.f0 = f0;
@@ -201,8 +205,8 @@ void CompareMicrofacet(const std::string& id, float r, float f0, double mu_o, do
   if (id == "beckmann" && Tan2Theta(h) / (double(alpha) * alpha) > 20) return;
   if (std::abs(ref) < 1e-30) return;  // float's underflow range
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%s r=%g f0=%g mu_o=%g mu_l=%g phi=%g: float %.9g double %.17g", id.c_str(),
-                r, f0, mu_o, mu_l, phi, f, ref);
+  std::snprintf(buf, sizeof buf, "%s r=%g f0=%g mu_o=%g mu_l=%g phi=%g: float %.9g double %.17g",
+                id.c_str(), r, f0, mu_o, mu_l, phi, f, ref);
   worst.Add(RelErr(f, ref), buf);
 }
 
@@ -290,9 +294,10 @@ double FloatTableError(const TableSpec& spec, int points, uint64_t seed, std::st
 
 }  // namespace
 
-TEST_CASE("Fresnel terms in float agree with double, also at grazing incidence; the literal "
-          "dielectric port cancels there",
-          "[stress][float][fresnel]") {
+TEST_CASE(
+    "Fresnel terms in float agree with double, also at grazing incidence; the literal "
+    "dielectric port cancels there",
+    "[stress][float][fresnel]") {
   std::vector<double> cs = EdgeMus();
   for (int i = 1; i <= 400; ++i) cs.push_back(i / 400.0);
   for (int e = 1; e <= 7; ++e) cs.push_back(std::pow(10.0, -e));
@@ -305,12 +310,18 @@ TEST_CASE("Fresnel terms in float agree with double, also at grazing incidence; 
       double ref = DielectricStable<double>(c, eta);
       if (c >= 1e-6f) kilnDouble = std::max(kilnDouble, std::abs(FrDielectric(c, eta) - ref));
       double e = FresnelErr(DielectricStable<float>(c, eta), ref);
-      if (NearCritical(c, eta)) critical = std::max(critical, std::abs(DielectricStable<float>(c, eta) - ref));
-      else stable = std::max(stable, e);
-      if (eta == 1.0f && c > 0 && c < 1e-4f) literal = std::max(literal, FresnelErr(DielectricF(c, eta), ref));
+      if (NearCritical(c, eta))
+        critical = std::max(critical, std::abs(DielectricStable<float>(c, eta) - ref));
+      else
+        stable = std::max(stable, e);
+      if (eta == 1.0f && c > 0 && c < 1e-4f)
+        literal = std::max(literal, FresnelErr(DielectricF(c, eta), ref));
     }
-    const float nk[][2] = {{0.2f, 3.0f}, {0.34f, 3.2f}, {2.0f, 1.0f}, {1.5f, 1e-6f}, {0.2f, 100.0f}, {100.0f, 100.0f}};
-    for (const auto& q : nk) conductor = std::max(conductor, FresnelErr(ConductorF(c, q[0], q[1]), FrComplex(c, q[0], q[1])));
+    const float nk[][2] = {{0.2f, 3.0f},  {0.34f, 3.2f},  {2.0f, 1.0f},
+                           {1.5f, 1e-6f}, {0.2f, 100.0f}, {100.0f, 100.0f}};
+    for (const auto& q : nk)
+      conductor =
+          std::max(conductor, FresnelErr(ConductorF(c, q[0], q[1]), FrComplex(c, q[0], q[1])));
   }
   INFO("Schlick " << schlick << "; dielectric: kiln's double vs the stable form " << kilnDouble
                   << " (absolute), stable float " << stable << " (" << critical
@@ -329,15 +340,16 @@ TEST_CASE("The double dielectric Fresnel does not cancel at grazing incidence ei
           "[stress][float][fresnel]") {
   for (double eta : {1.0, 1 + 1e-12, 1 - 1e-12})
     for (double c : {1e-12, 1e-10, 1e-8, 1e-7}) {
-      INFO("eta = " << Num(eta) << ", mu = " << c << ": kiln " << FrDielectric(c, eta) << ", stable "
-                    << DielectricStable<double>(c, eta));
+      INFO("eta = " << Num(eta) << ", mu = " << c << ": kiln " << FrDielectric(c, eta)
+                    << ", stable " << DielectricStable<double>(c, eta));
       CHECK(std::abs(FrDielectric(c, eta) - DielectricStable<double>(c, eta)) <= 1e-9);
     }
 }
 
-TEST_CASE("Microfacet BRDFs in float agree with double down to mu = 1e-6; the textbook Smith "
-          "Lambda would not",
-          "[stress][float][microfacet]") {
+TEST_CASE(
+    "Microfacet BRDFs in float agree with double down to mu = 1e-6; the textbook Smith "
+    "Lambda would not",
+    "[stress][float][microfacet]") {
   Worst worst[2];
   const double mus[] = {1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 0.1, 0.5, 0.9, 1.0};
   const double phis[] = {0.0, 0.5, Pi / 2, 2.5, Pi};
@@ -346,7 +358,8 @@ TEST_CASE("Microfacet BRDFs in float agree with double down to mu = 1e-6; the te
       for (float f0 : {0.04f, 1.0f})
         for (double mu_o : mus)
           for (double mu_l : mus)
-            for (double phi : phis) CompareMicrofacet(b ? "beckmann" : "ggx", r, f0, mu_o, mu_l, phi, worst[b]);
+            for (double phi : phis)
+              CompareMicrofacet(b ? "beckmann" : "ggx", r, f0, mu_o, mu_l, phi, worst[b]);
   INFO("GGX worst " << worst[0].rel << " at " << worst[0].where);
   INFO("Beckmann worst " << worst[1].rel << " at " << worst[1].where);
   CHECK(worst[0].rel <= 2e-5);
@@ -389,27 +402,32 @@ TEST_CASE("A million points of the float twins, and every catalogue table in flo
     for (int i = 0; i < kPoints; ++i) {
       float r = static_cast<float>(0.05 + 0.95 * rng.Uniform());
       float f0 = rng.Uniform() < 0.5 ? 1.0f : static_cast<float>(0.02 + 0.98 * rng.Uniform());
-      auto mu = [&] { return rng.Uniform() < 0.3 ? std::pow(10.0, -6 * rng.Uniform()) : rng.Uniform(); };
+      auto mu = [&] {
+        return rng.Uniform() < 0.3 ? std::pow(10.0, -6 * rng.Uniform()) : rng.Uniform();
+      };
       double mu_o = mu(), mu_l = mu(), phi = Pi * rng.Uniform();
       CompareMicrofacet(id, r, f0, mu_o, mu_l, phi, worst);
     }
-    std::printf("stress long: float twin %-9s %lld points (of %d), worst relative error %.3g at %s\n", id,
-                worst.points, kPoints, worst.rel, worst.where.c_str());
+    std::printf(
+        "stress long: float twin %-9s %lld points (of %d), worst relative error %.3g at %s\n", id,
+        worst.points, kPoints, worst.rel, worst.where.c_str());
     CHECK(worst.rel <= 2e-5);
   }
   Worst fresnel;
   test::Rng rng(77);
   for (int i = 0; i < kPoints; ++i) {
-    float c = static_cast<float>(rng.Uniform() < 0.3 ? std::pow(10.0, -7 * rng.Uniform()) : rng.Uniform());
+    float c = static_cast<float>(rng.Uniform() < 0.3 ? std::pow(10.0, -7 * rng.Uniform())
+                                                     : rng.Uniform());
     float n = static_cast<float>(std::exp(std::log(0.05) + rng.Uniform() * std::log(2000.0)));
     float k = static_cast<float>(rng.Uniform() < 0.5 ? 0.0 : 10 * rng.Uniform());
     double ref = k > 0 ? FrComplex(c, n, k) : DielectricStable<double>(c, n);
     if (k == 0 && NearCritical(c, n)) continue;  // the critical angle: see the top
     double e = FresnelErr(k > 0 ? ConductorF(c, n, k) : DielectricStable<float>(c, n), ref);
-    fresnel.Add(e, "c=" + std::to_string(c) + " n=" + std::to_string(n) + " k=" + std::to_string(k));
+    fresnel.Add(e,
+                "c=" + std::to_string(c) + " n=" + std::to_string(n) + " k=" + std::to_string(k));
   }
-  std::printf("stress long: float twin fresnel   %lld points, worst relative error %.3g at %s\n", fresnel.points,
-              fresnel.rel, fresnel.where.c_str());
+  std::printf("stress long: float twin fresnel   %lld points, worst relative error %.3g at %s\n",
+              fresnel.points, fresnel.rel, fresnel.where.c_str());
   // A million random points come closer to the critical angle (in cos^2(theta_t) = (mu^2 + eta^2
   // - 1) / eta^2, a difference of nearly equal terms) than the sweep's NearCritical zone: 2.1e-5
   // at mu = 0.99931, eta = 0.108 (cos^2(theta_t) = 0.01, float rounding amplified ~100x).
@@ -425,6 +443,8 @@ TEST_CASE("A million points of the float twins, and every catalogue table in flo
     INFO(spec.name << ": " << e << " at " << where);
     CHECK(e <= 0x1p-22);
   }
-  std::printf("stress long: float tables: every catalogue table at 9 nodes per axis, 20000 lookups each, "
-              "worst relative error %.3g\n", worstTable);
+  std::printf(
+      "stress long: float tables: every catalogue table at 9 nodes per axis, 20000 lookups each, "
+      "worst relative error %.3g\n",
+      worstTable);
 }

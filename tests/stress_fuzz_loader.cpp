@@ -67,7 +67,8 @@ std::string CheckLoad(const std::string& path, bool* loaded = nullptr) {
   bool ok = loadTable(path, t, error);
   if (loaded) *loaded = ok;
   if (!ok) {
-    if (error.rfind("kiln: cannot load table '" + path + "': ", 0) != 0) return "bad message: " + error;
+    if (error.rfind("kiln: cannot load table '" + path + "': ", 0) != 0)
+      return "bad message: " + error;
     if (error.find('\n') != std::string::npos) return "message on several lines: " + error;
     return "";
   }
@@ -105,36 +106,51 @@ bool DeclaresOversizedAttribute(const std::string& b) {
 
 /// One random mutation of `b` (the header, where the structure is, gets most of them).
 void Mutate(std::string& b, test::Rng& rng) {
-  auto below = [&](size_t n) { return n == 0 ? size_t(0) : static_cast<size_t>(rng.Uniform() * n) % n; };
-  auto pos = [&] { return rng.Uniform() < 0.8 ? below(std::min<size_t>(b.size(), 1200)) : below(b.size()); };
+  auto below = [&](size_t n) {
+    return n == 0 ? size_t(0) : static_cast<size_t>(rng.Uniform() * n) % n;
+  };
+  auto pos = [&] {
+    return rng.Uniform() < 0.8 ? below(std::min<size_t>(b.size(), 1200)) : below(b.size());
+  };
   if (b.empty()) {
     b.push_back(static_cast<char>(below(256)));
     return;
   }
-  static const uint32_t kInts[] = {0, 1, 2, 3, 0x7F, 0x80, 0xFF, 0xFFFF, 0x7FFFFFFF, 0x80000000u, 0xFFFFFFFFu, 1u << 30};
+  static const uint32_t kInts[] = {0,    1,      2,          3,           0x7F,        0x80,
+                                   0xFF, 0xFFFF, 0x7FFFFFFF, 0x80000000u, 0xFFFFFFFFu, 1u << 30};
   switch (below(9)) {
-    case 0: b[pos()] ^= static_cast<char>(1 << below(8)); break;                 // flip a bit
-    case 1: b[pos()] = static_cast<char>(below(256)); break;                     // random byte
-    case 2: b[pos()] = "\x00\x01\x7f\x80\xff"[below(5)]; break;                  // interesting byte
-    case 3: {                                                                    // interesting int32
+    case 0:
+      b[pos()] ^= static_cast<char>(1 << below(8));
+      break;  // flip a bit
+    case 1:
+      b[pos()] = static_cast<char>(below(256));
+      break;  // random byte
+    case 2:
+      b[pos()] = "\x00\x01\x7f\x80\xff"[below(5)];
+      break;   // interesting byte
+    case 3: {  // interesting int32
       size_t p = pos();
       uint32_t v = kInts[below(sizeof kInts / sizeof kInts[0])];
       for (int k = 0; k < 4 && p + k < b.size(); ++k) b[p + k] = static_cast<char>(v >> (8 * k));
       break;
     }
-    case 4: b.insert(pos(), std::string(1 + below(16), static_cast<char>(below(256)))); break;  // insert
-    case 5: {                                                                                     // erase
+    case 4:
+      b.insert(pos(), std::string(1 + below(16), static_cast<char>(below(256))));
+      break;   // insert
+    case 5: {  // erase
       size_t p = pos();
       b.erase(p, std::min(b.size() - p, 1 + below(32)));
       break;
     }
-    case 6: {                                                                    // duplicate a chunk
+    case 6: {  // duplicate a chunk
       size_t p = pos(), n = std::min(b.size() - p, 1 + below(64));
       b.insert(pos(), b.substr(p, n));
       break;
     }
-    case 7: b.resize(below(b.size())); break;                                    // truncate
-    default: {                                                                   // swap two bytes
+    case 7:
+      b.resize(below(b.size()));
+      break;    // truncate
+    default: {  // swap two bytes
       size_t p = pos(), q = pos();
       std::swap(b[p], b[q]);
     }
@@ -165,22 +181,26 @@ void MutationLoop(int count, uint64_t seed) {
     if (!problem.empty()) {
       // Keep the offender next to the corpus for a look (not committed automatically).
       WriteFile(dir / ("failure-" + std::to_string(i) + ".exr"), bytes);
-      std::filesystem::copy_file(dir / ("failure-" + std::to_string(i) + ".exr"),
-                                 "/tmp/kiln-fuzz-failure-" + std::to_string(seed) + "-" + std::to_string(i) + ".exr",
-                                 std::filesystem::copy_options::overwrite_existing);
+      std::filesystem::copy_file(
+          dir / ("failure-" + std::to_string(i) + ".exr"),
+          "/tmp/kiln-fuzz-failure-" + std::to_string(seed) + "-" + std::to_string(i) + ".exr",
+          std::filesystem::copy_options::overwrite_existing);
       if (failures++ < 5) FAIL_CHECK("mutation " << i << ": " << problem);
     }
   }
-  std::printf("stress fuzz: %d mutants loaded (seed %llu): %d valid tables, %d refused cleanly (%d of them "
-              "declaring an oversized attribute), %d failures\n",
-              count, static_cast<unsigned long long>(seed), loaded, count - loaded - failures, oversized, failures);
+  std::printf(
+      "stress fuzz: %d mutants loaded (seed %llu): %d valid tables, %d refused cleanly (%d of them "
+      "declaring an oversized attribute), %d failures\n",
+      count, static_cast<unsigned long long>(seed), loaded, count - loaded - failures, oversized,
+      failures);
   CHECK(failures == 0);
 }
 
 }  // namespace
 
-TEST_CASE("Every file of the fuzz corpus loads cleanly: the seeds as tables, the rest refused or valid",
-          "[stress][fuzz][io]") {
+TEST_CASE(
+    "Every file of the fuzz corpus loads cleanly: the seeds as tables, the rest refused or valid",
+    "[stress][fuzz][io]") {
   std::vector<std::string> files = CorpusFiles(false);
   REQUIRE(files.size() >= 5);
   for (const std::string& f : files) {
@@ -220,8 +240,10 @@ test::CommandResult InspectWithLittleMemory(const std::string& file) {
 
 }  // namespace
 
-TEST_CASE("A file declaring a 2 GB attribute is refused cleanly by kiln inspect, even with 1 GB of memory",
-          "[stress][fuzz][io][cli]") {
+TEST_CASE(
+    "A file declaring a 2 GB attribute is refused cleanly by kiln inspect, even with 1 GB of "
+    "memory",
+    "[stress][fuzz][io][cli]") {
   std::vector<std::string> files = OomFiles();
   REQUIRE(files.size() >= 2);
   if (kUnderAsan) {

@@ -26,10 +26,10 @@ using namespace kiln::stress;
 
 namespace {
 
-constexpr double kTol = 1e-9;          ///< integration tolerance of the sweeps
-constexpr double kEnergyTol = 1e-8;    ///< E <= 1 + this (ten times the tolerance)
-constexpr double kContinuity = 1e-8;   ///< |I(1e-12) - I(0)| <= this (relative above 1)
-constexpr double kGrazingBugMu = 1e-8; ///< the specular albedo is unreliable in (0, this]
+constexpr double kTol = 1e-9;           ///< integration tolerance of the sweeps
+constexpr double kEnergyTol = 1e-8;     ///< E <= 1 + this (ten times the tolerance)
+constexpr double kContinuity = 1e-8;    ///< |I(1e-12) - I(0)| <= this (relative above 1)
+constexpr double kGrazingBugMu = 1e-8;  ///< the specular albedo is unreliable in (0, this]
 
 IntegrationOptions Options(double tol = kTol) {
   IntegrationOptions opt;
@@ -60,7 +60,8 @@ std::vector<Variant> FastVariants(const ModelInfo& m) {
 
 /// The directional albedo of every variant x roughness edge x mu of `m`; checks it is finite,
 /// non-negative for a nonNegative model, at most 1 + kEnergyTol for an energy-conserving one.
-void SweepAlbedo(const ModelInfo& m, const std::vector<Variant>& variants, const std::vector<double>& mus) {
+void SweepAlbedo(const ModelInfo& m, const std::vector<Variant>& variants,
+                 const std::vector<double>& mus) {
   std::vector<double> rs = EdgeRoughness(m);
   if (rs.empty()) rs = {-1};
   double lowest = INFINITY, highest = -INFINITY;
@@ -91,10 +92,12 @@ void SweepAlbedo(const ModelInfo& m, const std::vector<Variant>& variants, const
 
 }  // namespace
 
-TEST_CASE("Directional albedo at every edge: finite, non-negative where flagged, at most 1 for the "
-          "energy-conserving models",
-          "[stress][integrals]") {
-  for (const ModelInfo& m : AllModels()) SweepAlbedo(m, FastVariants(m), {0.0, 1e-12, 1e-6, 0.5, 1.0});
+TEST_CASE(
+    "Directional albedo at every edge: finite, non-negative where flagged, at most 1 for the "
+    "energy-conserving models",
+    "[stress][integrals]") {
+  for (const ModelInfo& m : AllModels())
+    SweepAlbedo(m, FastVariants(m), {0.0, 1e-12, 1e-6, 0.5, 1.0});
 }
 
 TEST_CASE("Directional albedo at every edge of every variant (eta = 1 + 1e-9, exponents 1e7)",
@@ -103,9 +106,10 @@ TEST_CASE("Directional albedo at every edge of every variant (eta = 1 + 1e-9, ex
     SweepAlbedo(m, EdgeVariants(m), {0.0, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 0.5, 0.9, 1.0});
 }
 
-TEST_CASE("Directional albedo is continuous at the edges: E(1e-12) = E(0), and roughness 1e-12 "
-          "gives the albedo of roughness 0",
-          "[stress][integrals]") {
+TEST_CASE(
+    "Directional albedo is continuous at the edges: E(1e-12) = E(0), and roughness 1e-12 "
+    "gives the albedo of roughness 0",
+    "[stress][integrals]") {
   for (const ModelInfo& m : AllModels()) {
     std::vector<double> rs = EdgeRoughness(m);
     if (rs.empty()) rs = {-1};
@@ -122,10 +126,13 @@ TEST_CASE("Directional albedo is continuous at the edges: E(1e-12) = E(0), and r
       }
     }
     if (RoughnessParam(m)) {
-      AnyModel a = MakeModel(m.id, WithRoughness(m, {}, 1e-12)), b = MakeModel(m.id, WithRoughness(m, {}, 0));
-      for (double mu : {0.0, 1e-6, 0.5, 1.0}) worstR = std::max(worstR, Diff(Albedo(a, mu), Albedo(b, mu)));
+      AnyModel a = MakeModel(m.id, WithRoughness(m, {}, 1e-12)),
+               b = MakeModel(m.id, WithRoughness(m, {}, 0));
+      for (double mu : {0.0, 1e-6, 0.5, 1.0})
+        worstR = std::max(worstR, Diff(Albedo(a, mu), Albedo(b, mu)));
     }
-    INFO(m.id << ": E(1e-12) vs E(0) " << worstMu << " at " << where << "; r 1e-12 vs 0: " << worstR);
+    INFO(m.id << ": E(1e-12) vs E(0) " << worstMu << " at " << where
+              << "; r 1e-12 vs 0: " << worstR);
     CHECK(worstMu <= kContinuity);
     CHECK(worstR <= kContinuity);
   }
@@ -136,7 +143,8 @@ TEST_CASE("Split-sum DFG at the edges: finite, A and B non-negative, A + B = E, 
   for (const ModelInfo& m : AllModels()) {
     if (!m.specular()) {
       IntegrationStats st;
-      CHECK_THROWS_WITH(SplitSumDFG(MakeModel(m.id, {}), 0.5, Options(), st), Catch::Contains("specular"));
+      CHECK_THROWS_WITH(SplitSumDFG(MakeModel(m.id, {}), 0.5, Options(), st),
+                        Catch::Contains("specular"));
       continue;
     }
     for (double r : EdgeRoughness(m))
@@ -150,7 +158,8 @@ TEST_CASE("Split-sum DFG at the edges: finite, A and B non-negative, A + B = E, 
         CHECK(ab[0] >= -kTol);
         CHECK(ab[1] >= -kTol);
         CHECK(std::abs(ab[0] + ab[1] - Albedo(model, mu)) <= 4 * kTol);
-        if (m.energyConserving && !(mu > 0 && mu <= kGrazingBugMu)) CHECK(ab[0] + ab[1] <= 1 + kEnergyTol);
+        if (m.energyConserving && !(mu > 0 && mu <= kGrazingBugMu))
+          CHECK(ab[0] + ab[1] <= 1 + kEnergyTol);
       }
   }
 }
@@ -173,9 +182,10 @@ TEST_CASE("Average albedo at the roughness edges: finite, non-negative, at most 
   }
 }
 
-TEST_CASE("Fresnel average at the eta and k edges: in [0, 1], continuous at eta = 1 and k = 0, "
-          "and the interface identity holds at eta = 100",
-          "[stress][integrals][fresnel]") {
+TEST_CASE(
+    "Fresnel average at the eta and k edges: in [0, 1], continuous at eta = 1 and k = 0, "
+    "and the interface identity holds at eta = 100",
+    "[stress][integrals][fresnel]") {
   auto favg = [](double eta, double k, double tol = 1e-12) {
     IntegrationStats st;
     Fresnel F{k > 0 ? Fresnel::Kind::Conductor : Fresnel::Kind::Dielectric, 0, eta, k};
@@ -210,11 +220,13 @@ namespace {
 /// corner of its axes.
 void CheckFiniteAtCorners(bool averaged) {
   for (const TableSpec& spec : DefaultCatalogue()) {
-    if ((std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos) != averaged) continue;
+    if ((std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos) != averaged)
+      continue;
     size_t dims = spec.axes.size();
     for (size_t corner = 0; corner < (size_t(1) << dims); ++corner) {
       double x[3];
-      for (size_t d = 0; d < dims; ++d) x[d] = (corner >> d) & 1 ? spec.axes[d].hi : spec.axes[d].lo;
+      for (size_t d = 0; d < dims; ++d)
+        x[d] = (corner >> d) & 1 ? spec.axes[d].hi : spec.axes[d].lo;
       IntegrationStats st;
       std::vector<double> v = EvaluateSpec(spec, x, st);
       for (size_t c = 0; c < v.size(); ++c) {
@@ -227,7 +239,8 @@ void CheckFiniteAtCorners(bool averaged) {
 
 }  // namespace
 
-TEST_CASE("Every catalogue table is finite at the corners of its axes", "[stress][integrals][tables]") {
+TEST_CASE("Every catalogue table is finite at the corners of its axes",
+          "[stress][integrals][tables]") {
   CheckFiniteAtCorners(/*averaged=*/false);  // the averaged ones: the long test below
 }
 
@@ -254,7 +267,8 @@ TEST_CASE("Random points of the albedo per model: finite, bounded where flagged"
       lowest = std::min(lowest, e);
       if (!(m.specular() && mu <= kGrazingBugMu)) highest = std::max(highest, e);
     }
-    std::printf("stress long: %-26s %d albedo points, E in [%.9g, %.9g]\n", m.id.c_str(), kPoints, lowest, highest);
+    std::printf("stress long: %-26s %d albedo points, E in [%.9g, %.9g]\n", m.id.c_str(), kPoints,
+                lowest, highest);
     INFO(m.id);
     CHECK(bad == 0);
     if (m.nonNegative) CHECK(lowest >= -kTol);
@@ -270,8 +284,10 @@ TEST_CASE("Microfacet albedos near grazing meet their tolerance and stay at most
     ModelParams p;
     p.roughness = 1;
     double ggx = Albedo(MakeModel("ggx", p), mu), exact = 1 - mu * std::log1p(1 / mu);
-    double sep = Albedo(MakeModel("ggx-separable", p), mu), exactSep = 2 * (1 - std::log(2.0)) / (1 + mu);
-    INFO("mu = " << mu << ": GGX " << ggx - exact << " off, separable " << sep - exactSep << " off");
+    double sep = Albedo(MakeModel("ggx-separable", p), mu),
+           exactSep = 2 * (1 - std::log(2.0)) / (1 + mu);
+    INFO("mu = " << mu << ": GGX " << ggx - exact << " off, separable " << sep - exactSep
+                 << " off");
     CHECK(std::abs(ggx - exact) <= 10 * kTol);
     CHECK(std::abs(sep - exactSep) <= 10 * kTol);
   }

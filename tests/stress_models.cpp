@@ -47,10 +47,18 @@ constexpr double kCornerMu = 1e-3;
 
 /// Models unbounded in the grazing corner (the file comment gives each reason).
 bool UnboundedInCorner(const ModelInfo& m) {
-  static const std::set<std::string> ids = {
-      "oren-nayar", "oren-nayar-qualitative", "oren-nayar-qualitative-ir", "fujii",
-      "fujii-normalized", "gotanda-fresnel", "hammon", "ashikhmin-shirley", "ggx", "ggx-vcavity",
-      "beckmann", "blinn-phong"};
+  static const std::set<std::string> ids = {"oren-nayar",
+                                            "oren-nayar-qualitative",
+                                            "oren-nayar-qualitative-ir",
+                                            "fujii",
+                                            "fujii-normalized",
+                                            "gotanda-fresnel",
+                                            "hammon",
+                                            "ashikhmin-shirley",
+                                            "ggx",
+                                            "ggx-vcavity",
+                                            "beckmann",
+                                            "blinn-phong"};
   return ids.count(m.id) > 0;
 }
 
@@ -75,9 +83,10 @@ void ForEachEdgeModel(const ModelInfo& m, V&& visit) {
 
 }  // namespace
 
-TEST_CASE("Every BRDF value at every edge of every model is finite; nonNegative models never go "
-          "below 0 (for any rho), and the others do somewhere",
-          "[stress][models]") {
+TEST_CASE(
+    "Every BRDF value at every edge of every model is finite; nonNegative models never go "
+    "below 0 (for any rho), and the others do somewhere",
+    "[stress][models]") {
   for (const ModelInfo& m : AllModels()) {
     double lowest = INFINITY;
     long long points = 0, bad = 0;
@@ -91,16 +100,17 @@ TEST_CASE("Every BRDF value at every edge of every model is finite; nonNegative 
             lowest = std::min(lowest, std::min(p.lin, p.lin + p.quad));  // f at the worst rho
             if (!std::isfinite(p.lin) || !std::isfinite(p.quad)) {
               if (bad++ == 0)
-                firstBad = label + " mu_o=" + Num(mu_o) + " mu_l=" + Num(mu_l) +
-                           " phi=" + Num(phi);
+                firstBad = label + " mu_o=" + Num(mu_o) + " mu_l=" + Num(mu_l) + " phi=" + Num(phi);
             }
           }
     });
-    INFO(m.id << ": " << points << " edge points, lowest value " << lowest << ", first non-finite at "
-              << firstBad);
+    INFO(m.id << ": " << points << " edge points, lowest value " << lowest
+              << ", first non-finite at " << firstBad);
     CHECK(bad == 0);
-    if (m.nonNegative) CHECK(lowest >= 0);
-    else CHECK(lowest < 0);  // the flag is exact: gotanda-fresnel goes negative on purpose
+    if (m.nonNegative)
+      CHECK(lowest >= 0);
+    else
+      CHECK(lowest < 0);  // the flag is exact: gotanda-fresnel goes negative on purpose
   }
 }
 
@@ -163,9 +173,10 @@ TEST_CASE("Specular lobes are exactly 0 on the horizon, and their one-sided limi
   }
 }
 
-TEST_CASE("The grazing-corner exceptions are real: those models grow without bound there, the "
-          "others stay bounded",
-          "[stress][models]") {
+TEST_CASE(
+    "The grazing-corner exceptions are real: those models grow without bound there, the "
+    "others stay bounded",
+    "[stress][models]") {
   // max over phi of |f| with both directions at mu, at a mid roughness (hi for Oren-Nayar).
   for (const ModelInfo& m : AllModels()) {
     ModelParams p;
@@ -173,14 +184,17 @@ TEST_CASE("The grazing-corner exceptions are real: those models grow without bou
     AnyModel model = MakeModel(m.id, p);
     auto peak = [&](double mu) {
       double best = 0;
-      for (int i = 0; i <= 64; ++i) best = std::max(best, std::abs(At(model, mu, mu, Pi * i / 64).lin));
+      for (int i = 0; i <= 64; ++i)
+        best = std::max(best, std::abs(At(model, mu, mu, Pi * i / 64).lin));
       return best;
     };
     double near = peak(1e-9), far = peak(1e-3);
     INFO(m.id << ": peak |f| at mu = 1e-9: " << near << ", at mu = 1e-3: " << far);
     CHECK(std::isfinite(near));
-    if (UnboundedInCorner(m)) CHECK(near > 100 * far);
-    else CHECK(near <= 2 * far + 1e-6);  // bounded: no 1/mu growth
+    if (UnboundedInCorner(m))
+      CHECK(near > 100 * far);
+    else
+      CHECK(near <= 2 * far + 1e-6);  // bounded: no 1/mu growth
   }
 }
 
@@ -229,11 +243,13 @@ TEST_CASE("Fresnel terms stay in [0, 1] at every edge and are continuous in eta 
       // k -> 0: the conductor formula meets the dielectric one (TIR included), outside the
       // grazing layer of eta = 1 and the critical angle of eta < 1 (both of width ~sqrt(k)).
       bool critical = eta < 1 && std::abs(std::sqrt(1 - mu * mu) - eta) < 1e-3;
-      if (mu >= 1e-3 && !critical) worstK = std::max(worstK, std::abs(FrComplex(mu, eta, 1e-12) - fd));
+      if (mu >= 1e-3 && !critical)
+        worstK = std::max(worstK, std::abs(FrComplex(mu, eta, 1e-12) - fd));
       // Total internal reflection: below the critical angle F = 1 exactly.
       if (eta < 1 && 1 - mu * mu > eta * eta) CHECK(fd == 1.0);
     }
-    if (mu >= 0.05) worstEta = std::max(worstEta, std::abs(FrDielectric(mu, 1 + 1e-9) - FrDielectric(mu, 1.0)));
+    if (mu >= 0.05)
+      worstEta = std::max(worstEta, std::abs(FrDielectric(mu, 1 + 1e-9) - FrDielectric(mu, 1.0)));
     CHECK(FrSchlick(0, mu) >= 0);
     CHECK(FrSchlick(1, mu) == 1);
   }
@@ -290,9 +306,11 @@ TEST_CASE("A million random points per model: finite, non-negative (for every rh
     AnyModel model = MakeModel(m.id, {});
     for (int i = 0; i < kPoints; ++i) {
       if (i % 16 == 0) {  // a new model every 16 points
-        ModelParams p = variants[static_cast<size_t>(rng.Uniform() * variants.size()) % variants.size()].params;
+        ModelParams p =
+            variants[static_cast<size_t>(rng.Uniform() * variants.size()) % variants.size()].params;
         if (rough) p.roughness = pick(0, rough->hi, {0.0, 1e-12, 1e-6, rough->hi});
-        if (p.eta && !p.k && rng.Uniform() < 0.5) p.eta = std::exp(std::log(0.01) + rng.Uniform() * std::log(1e4));
+        if (p.eta && !p.k && rng.Uniform() < 0.5)
+          p.eta = std::exp(std::log(0.01) + rng.Uniform() * std::log(1e4));
         if (p.k && rng.Uniform() < 0.5) p.k = 100 * rng.Uniform();
         if (p.f0) p.f0 = pick(0, 1, {0.0, 1.0});
         if (p.rs) p.rs = pick(0, 1, {0.0, 1.0});
@@ -307,9 +325,11 @@ TEST_CASE("A million random points per model: finite, non-negative (for every rh
       lowest = std::min(lowest, f.lin + f.quad);
       if (std::isfinite(f.lin)) highest = std::max(highest, f.lin + f.quad);
     }
-    std::printf("stress long: %-26s %d points, %lld non-finite, %lld negative at rho = 1 (%lld for some rho), "
-                "min %.3g, max %.3g\n",
-                m.id.c_str(), kPoints, bad, negative, negativeSomeRho, lowest, highest);
+    std::printf(
+        "stress long: %-26s %d points, %lld non-finite, %lld negative at rho = 1 (%lld for some "
+        "rho), "
+        "min %.3g, max %.3g\n",
+        m.id.c_str(), kPoints, bad, negative, negativeSomeRho, lowest, highest);
     INFO(m.id);
     CHECK(bad == 0);
     if (m.nonNegative) CHECK(negativeSomeRho == 0);

@@ -147,11 +147,14 @@ inline void WriteFile(const std::string& path, const std::string& bytes) {
 /// Runs `kiln ARGS` like test::RunKiln, killed (SIGKILL, reported as exit 137) after `seconds`:
 /// a hostile argument that makes kiln run on is a failure, not a hung test run.
 /// `shellPrefix` runs first in the same shell (e.g. "ulimit -v 1048576;").
-inline test::CommandResult RunKilnFor(int seconds, const std::string& args, const std::string& shellPrefix = "") {
+inline test::CommandResult RunKilnFor(int seconds, const std::string& args,
+                                      const std::string& shellPrefix = "") {
   static int counter = 0;
-  std::string base = "/tmp/kiln_stress_run_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
-  std::string cmd = shellPrefix + " timeout -s KILL " + std::to_string(seconds) + " " + std::string(KILN_BINARY) +
-                    " " + args + " </dev/null >" + base + ".out 2>" + base + ".err";
+  std::string base =
+      "/tmp/kiln_stress_run_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
+  std::string cmd = shellPrefix + " timeout -s KILL " + std::to_string(seconds) + " " +
+                    std::string(KILN_BINARY) + " " + args + " </dev/null >" + base + ".out 2>" +
+                    base + ".err";
   int status = std::system(cmd.c_str());
   test::CommandResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

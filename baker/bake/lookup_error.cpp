@@ -14,14 +14,16 @@ std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
   std::string s;
   char buf[64];
   for (size_t d = 0; d < where.size() && d < spec.axes.size(); ++d) {
-    std::snprintf(buf, sizeof buf, "%s%s=%.6g", s.empty() ? "" : " ", spec.axes[d].name.c_str(), where[d]);
+    std::snprintf(buf, sizeof buf, "%s%s=%.6g", s.empty() ? "" : " ", spec.axes[d].name.c_str(),
+                  where[d]);
     s += buf;
   }
   return s;
 }
 
-LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view, long long randomPoints,
-                                     double refTol, int threads, Filter filter, long long maxCells, bool alsoCubic) {
+LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
+                                     long long randomPoints, double refTol, int threads,
+                                     Filter filter, long long maxCells, bool alsoCubic) {
   size_t dims = spec.axes.size();
   size_t allCells = 1;
   for (const AxisSpec& a : spec.axes) allCells *= static_cast<size_t>(std::max(1, a.size - 1));
@@ -58,28 +60,32 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   tbb::task_arena arena(n);
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, total, 1), [&](const tbb::blocked_range<size_t>& r) {
-      for (size_t i = r.begin(); i != r.end(); ++i) {
-        double x[3] = {0, 0, 0};
-        point(i, x);
-        IntegrationStats st;
-        std::vector<double> exact = refTol > 0 ? EvaluateSpec(spec, x, refTol, st) : EvaluateSpec(spec, x, st);
-        // One float per channel of the table, and at least one per exact value (a table with
-        // fewer channels than its quantity then compares the missing ones against 0).
-        std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
-        view.sample(x, got.data(), filter);
-        double m = 0;
-        for (size_t c = 0; c < exact.size(); ++c) m = std::max(m, std::abs(got[c] - exact[c]));
-        err[i] = m;
-        if (alsoCubic) {
-          view.sample(x, got.data(), Filter::Cubic);
-          double mc = 0;
-          for (size_t c = 0; c < exact.size(); ++c) mc = std::max(mc, std::abs(got[c] - exact[c]));
-          errCubic[i] = mc;
-        }
-        inCorner[i] = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
-      }
-    });
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, total, 1), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i != r.end(); ++i) {
+            double x[3] = {0, 0, 0};
+            point(i, x);
+            IntegrationStats st;
+            std::vector<double> exact =
+                refTol > 0 ? EvaluateSpec(spec, x, refTol, st) : EvaluateSpec(spec, x, st);
+            // One float per channel of the table, and at least one per exact value (a table with
+            // fewer channels than its quantity then compares the missing ones against 0).
+            std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
+            view.sample(x, got.data(), filter);
+            double m = 0;
+            for (size_t c = 0; c < exact.size(); ++c) m = std::max(m, std::abs(got[c] - exact[c]));
+            err[i] = m;
+            if (alsoCubic) {
+              view.sample(x, got.data(), Filter::Cubic);
+              double mc = 0;
+              for (size_t c = 0; c < exact.size(); ++c)
+                mc = std::max(mc, std::abs(got[c] - exact[c]));
+              errCubic[i] = mc;
+            }
+            inCorner[i] =
+                dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
+          }
+        });
   });
   size_t worst = 0;
   double sum = 0;

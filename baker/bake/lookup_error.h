@@ -15,7 +15,7 @@ struct LookupErrorReport {
   /// (E ~ g(mu / alpha), F ~ g(mu / sqrt(eta - 1))) that no tensor grid interpolates
   /// (README "Lookup error"). Equal to max for other tables.
   double maxOutsideCorner = 0;
-  std::vector<double> where;  ///< the parameter values of the worst point, axis order
+  std::vector<double> where;            ///< the parameter values of the worst point, axis order
   double cubicMax = -1, cubicRms = -1;  ///< with the cubic filter at the same points (alsoCubic)
   long long points = 0;
   std::string WhereText(const TableSpec& spec) const;  ///< "mu=0.0001 roughness=0.01"
@@ -27,9 +27,10 @@ struct LookupErrorReport {
 /// Deterministic: same result for any thread count. maxCells > 0 checks only that many cell
 /// centres, evenly strided (a quick check of a large or costly table). alsoCubic also samples
 /// every point with the cubic filter (cubicMax, cubicRms), for the cost of the lookups only.
-LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view, long long randomPoints,
-                                     double refTol, int threads, Filter filter = Filter::Linear,
-                                     long long maxCells = 0, bool alsoCubic = false);
+LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
+                                     long long randomPoints, double refTol, int threads,
+                                     Filter filter = Filter::Linear, long long maxCells = 0,
+                                     bool alsoCubic = false);
 
 /// The bound a baked table declares: the measured max times this margin (random points between
 /// the measured ones can exceed it slightly; kiln verify checks with 100x more points).

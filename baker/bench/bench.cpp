@@ -23,10 +23,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+double Since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
 
 int AllThreads(int requested) {
-  return requested > 0 ? requested : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return requested > 0 ? requested
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 /// A table kind of the sweep: a catalogue table, its axis sizes for the sweep, and the sizes of
@@ -108,7 +111,8 @@ Plan MakePlan(BenchScale scale) {
 TableSpec Sized(const std::string& name, const std::vector<int>& sizes) {
   TableSpec s = CatalogueTable(name);
   if (sizes.size() != s.axes.size())
-    throw std::invalid_argument("bench: table '" + name + "' has " + std::to_string(s.axes.size()) + " axes");
+    throw std::invalid_argument("bench: table '" + name + "' has " + std::to_string(s.axes.size()) +
+                                " axes");
   for (size_t d = 0; d < sizes.size(); ++d) s.axes[d].size = sizes[d];
   return s;
 }
@@ -166,7 +170,8 @@ Measured TimeRuns(F&& once) {
 /// Runs every `once` once per round, `rounds` rounds, and keeps each one's first table and
 /// median time: the machine's speed drifts by tens of percent over seconds, so times that are to
 /// be compared are taken side by side.
-std::vector<Measured> InterleavedRuns(const std::vector<std::function<Table(long long&)>>& once, int rounds) {
+std::vector<Measured> InterleavedRuns(const std::vector<std::function<Table(long long&)>>& once,
+                                      int rounds) {
   std::vector<Measured> m(once.size());
   std::vector<std::vector<double>> times(once.size());
   for (int r = 0; r < rounds; ++r)
@@ -211,7 +216,8 @@ class Bench {
     auto it = refs_.find(Key(spec));
     if (it != refs_.end()) return it->second;
     Reference r = ComputeReference(spec, plan_.ref);
-    Log("reference %s %s: tol %.0e, %zu nodes + %zu cell centres (of %zu) + %zu random points, %.2f s\n",
+    Log("reference %s %s: tol %.0e, %zu nodes + %zu cell centres (of %zu) + %zu random points, "
+        "%.2f s\n",
         spec.name.c_str(), SizeText(spec).c_str(), plan_.ref.tol, spec.TexelCount(), r.cellCentres,
         r.totalCells, r.randomPoints, r.seconds);
     return refs_.emplace(Key(spec), std::move(r)).first->second;
@@ -243,8 +249,9 @@ class Bench {
     if (it != cache_.end()) return it->second;
     std::string method = gaussLegendre ? std::to_string(n) + "x" + std::to_string(n) +
                                              " Gauss-Legendre rule, importance-sampled map"
-                                       : std::to_string(n) + "-sample Hammersley Monte Carlo, "
-                                                             "importance sampling";
+                                       : std::to_string(n) +
+                                             "-sample Hammersley Monte Carlo, "
+                                             "importance sampling";
     Measured m = TimeRuns([&](long long& evals) {
       PointSet points = gaussLegendre ? GaussLegendrePoints(n) : HammersleyPoints(n);
       BakeStats st;
@@ -287,8 +294,8 @@ class Bench {
     };
     std::string warps;
     for (const AxisSpec& a : spec.axes) warps += " " + a.name + ":" + warpName(a.warp);
-    r.note = "warps" + warps + "; max bake error at" + at(b.worstAt) + "; max linear lookup error at" +
-             at(lin.worstAt);
+    r.note = "warps" + warps + "; max bake error at" + at(b.worstAt) +
+             "; max linear lookup error at" + at(lin.worstAt);
     return r;
   }
 
@@ -303,16 +310,18 @@ class Bench {
     Log("%-11s %-18s %-18s %-9s %-7g %2d thr %8.3f s (%d) %11lld evals  bake %.1e/%.1e  "
         "lookup lin %.1e (off corner %.1e) cub %.1e%s%s\n",
         r.section.c_str(), r.method.c_str(), r.table.c_str(), r.size.c_str(), r.setting, r.threads,
-        r.seconds, r.runs, r.evals, r.bakeMax, r.bakeRms, r.linearMax, r.linearMaxOffCorner, r.cubicMax,
-        r.note.empty() ? "" : "  ", r.note.c_str());
+        r.seconds, r.runs, r.evals, r.bakeMax, r.bakeRms, r.linearMax, r.linearMaxOffCorner,
+        r.cubicMax, r.note.empty() ? "" : "  ", r.note.c_str());
   }
 
   void Sweep(const Kind& k) {
     TableSpec spec = Sized(k.table, k.base);
     if (UsesFixedRule(spec))  // one method, no tolerance: the fixed rule (spec.h)
-      Add(Row("sweep", "kiln-fixed-rule", spec, kFixedRuleBound, threads_, Kiln(spec, spec.tol, threads_)));
+      Add(Row("sweep", "kiln-fixed-rule", spec, kFixedRuleBound, threads_,
+              Kiln(spec, spec.tol, threads_)));
     else
-      for (double tol : plan_.tols) Add(Row("sweep", "kiln", spec, tol, threads_, Kiln(spec, tol, threads_)));
+      for (double tol : plan_.tols)
+        Add(Row("sweep", "kiln", spec, tol, threads_, Kiln(spec, tol, threads_)));
     for (int n : plan_.mcSamples)
       Add(Row("sweep", "mc-hammersley", spec, n, threads_, Estimate(spec, false, n, threads_)));
     for (int n : plan_.glOrders)
@@ -337,15 +346,17 @@ class Bench {
     TableSpec spec = Sized("ggx-dfg", {plan_.issueSize, plan_.issueSize});
     const int threads = 2, n = plan_.sizeSweepSamples, rounds = 7;
     const std::string size = std::to_string(plan_.issueSize);
-    std::string dir = (std::filesystem::temp_directory_path() /
-                       ("kiln-bench-" + std::to_string(::getpid()))).string();
+    std::string dir =
+        (std::filesystem::temp_directory_path() / ("kiln-bench-" + std::to_string(::getpid())))
+            .string();
     std::filesystem::create_directories(dir);
     BakeOptions texels, command;
     texels.threads = command.threads = threads;
     texels.measureLookupError = false;
     command.measureLookupError = true;
     PointSet points = HammersleyPoints(n);
-    const std::string mcMethod = std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling";
+    const std::string mcMethod =
+        std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling";
     double lookupSeconds = 0;
     struct Variant {
       std::string method, note;
@@ -373,16 +384,24 @@ class Bench {
       };
     };
     v.push_back({"kiln", "texels only (BakeTable wall time)", spec.tol, kilnBake(texels, false)});
-    v.push_back({"kiln-bake-command", "as kiln bake --only ggx-dfg --size " + size +
-                 " -j 2: texels + its lookup-error check + EXR write", spec.tol, kilnBake(command, true)});
-    v.push_back({"kiln-bake-written", "as kiln bake --only ggx-dfg --size " + size +
-                 " -j 2 --no-lookup-error: texels + EXR write", spec.tol, kilnBake(texels, true)});
-    v.push_back({"mc-hammersley", "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG "
-                 "estimator), half vectors of a row computed once", double(n), mcBake(false)});
-    v.push_back({"mc-hammersley-written", "the Monte Carlo bake + the same EXR write", double(n), mcBake(true)});
-    v.push_back({"mc-hammersley-per-texel", "the same estimator with every texel drawing its own points and half "
-                 "vectors, as Filament's libs/ibl DFV and the UE4/LearnOpenGL listings", double(n),
-                 [&](long long& evals) {
+    v.push_back({"kiln-bake-command",
+                 "as kiln bake --only ggx-dfg --size " + size +
+                     " -j 2: texels + its lookup-error check + EXR write",
+                 spec.tol, kilnBake(command, true)});
+    v.push_back({"kiln-bake-written",
+                 "as kiln bake --only ggx-dfg --size " + size +
+                     " -j 2 --no-lookup-error: texels + EXR write",
+                 spec.tol, kilnBake(texels, true)});
+    v.push_back({"mc-hammersley",
+                 "GGX importance sampling, height-correlated Smith (the Filament/UE4 DFG "
+                 "estimator), half vectors of a row computed once",
+                 double(n), mcBake(false)});
+    v.push_back({"mc-hammersley-written", "the Monte Carlo bake + the same EXR write", double(n),
+                 mcBake(true)});
+    v.push_back({"mc-hammersley-per-texel",
+                 "the same estimator with every texel drawing its own points and half "
+                 "vectors, as Filament's libs/ibl DFV and the UE4/LearnOpenGL listings",
+                 double(n), [&](long long& evals) {
                    BakeStats st;
                    Table t = EstimateDFGTablePerTexel(spec, n, threads, &st);
                    evals = st.evals;
@@ -395,9 +414,12 @@ class Bench {
     for (size_t i = 0; i < v.size(); ++i) {
       const Variant& x = v[i];
       BenchRow row = Row("baker-issue", x.method, spec, x.setting, threads, measured[i]);
-      row.note = x.note + (x.method == "kiln-bake-command" ? " (lookup-error check " + Sci(lookupSeconds) +
-                                                                 " s in the last run)" : "") +
-                 "; median of " + std::to_string(rounds) + " rounds, variants interleaved; " + row.note;
+      row.note = x.note +
+                 (x.method == "kiln-bake-command"
+                      ? " (lookup-error check " + Sci(lookupSeconds) + " s in the last run)"
+                      : "") +
+                 "; median of " + std::to_string(rounds) + " rounds, variants interleaved; " +
+                 row.note;
       Add(row);
     }
   }
@@ -423,8 +445,9 @@ class Bench {
     for (int c : counts)
       once.push_back([&, c](long long& evals) {
         BakeStats st;
-        Table t = EstimateTable(spec, points, std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling",
-                                c, &st);
+        Table t = EstimateTable(
+            spec, points, std::to_string(n) + "-sample Hammersley Monte Carlo, importance sampling",
+            c, &st);
         evals = st.evals;
         return t;
       });
@@ -432,9 +455,11 @@ class Bench {
     const std::string how = "median of 7 rounds, thread counts interleaved";
     for (size_t i = 0; i < counts.size(); ++i) {
       BenchRow r = Row("threads", "kiln", spec, spec.tol, counts[i], m[i]);
-      r.note = (m[i].table.data == m[0].table.data ? "texels bit-identical to the 1-thread bake"
-                                                   : "texels DIFFER from the 1-thread bake") +  // must not
-               std::string("; ") + how;
+      r.note = (m[i].table.data == m[0].table.data
+                    ? "texels bit-identical to the 1-thread bake"
+                    : "texels DIFFER from the 1-thread bake") +  // must not
+               std::string("; ") +
+               how;
       Add(r);
     }
     for (size_t i = 0; i < counts.size(); ++i) {
@@ -444,8 +469,9 @@ class Bench {
     }
   }
 
-  void AddTiming(const std::string& method, const std::string& table, int dims, const std::string& size,
-                 double setting, const CallTiming& t, const std::string& note) {
+  void AddTiming(const std::string& method, const std::string& table, int dims,
+                 const std::string& size, double setting, const CallTiming& t,
+                 const std::string& note) {
     BenchRow r;
     r.section = "runtime";
     r.method = method;
@@ -543,9 +569,10 @@ BenchResult RunBench(const BenchOptions& opt, std::FILE* log) {
   result.summary = BenchSummary(result.rows);
   result.seconds = Since(t0);
   char machine[160];
-  std::snprintf(machine, sizeof machine,
-                "machine: %u hardware threads; 1-minute load average %.2f at the start, %.2f at the end",
-                std::thread::hardware_concurrency(), loadBefore, LoadAverage());
+  std::snprintf(
+      machine, sizeof machine,
+      "machine: %u hardware threads; 1-minute load average %.2f at the start, %.2f at the end",
+      std::thread::hardware_concurrency(), loadBefore, LoadAverage());
   result.summary.push_back(machine);
   std::filesystem::create_directories(opt.outDir);
   std::string csv = CsvText(result.rows), svg = BenchSvg(result.rows);

@@ -18,17 +18,17 @@ struct BenchRow {
   std::string method;  ///< kiln, mc-hammersley, gauss-legendre, lookup-linear, evaluate, ...
   std::string table;   ///< table name (or model id for the runtime's evaluate/integrate rows)
   int dims = 0;
-  std::string size;    ///< "64x64", "32x32x16"
+  std::string size;  ///< "64x64", "32x32x16"
   long long texels = 0;
   double setting = NAN;  ///< kiln: tolerance; Monte Carlo and Gauss-Legendre: samples per texel
   int threads = 0;
   double seconds = NAN;  ///< wall time, median of `runs` runs
   int runs = 0;
-  long long evals = 0;   ///< integrand evaluations (per call for the runtime rows)
+  long long evals = 0;  ///< integrand evaluations (per call for the runtime rows)
   double bakeMax = NAN, bakeRms = NAN;
   double linearMax = NAN, linearRms = NAN, cubicMax = NAN, cubicRms = NAN;
   double linearMaxOffCorner = NAN;  ///< linear max without the corner cells (reference.h)
-  long long bytes = 0;   ///< float32 texels
+  long long bytes = 0;              ///< float32 texels
   double nsPerCall = NAN;
   std::string note;
 };

@@ -17,7 +17,8 @@ struct Style {
 };
 
 Style MethodStyle(const std::string& method) {
-  if (method == "kiln") return {"kiln, adaptive Gauss-Kronrod (label: tol)", "#d62728", Marker::Circle};
+  if (method == "kiln")
+    return {"kiln, adaptive Gauss-Kronrod (label: tol)", "#d62728", Marker::Circle};
   if (method == "kiln-fixed-rule")
     return {"kiln, fixed visible-normal rule (label: declared error)", "#d62728", Marker::Diamond};
   if (method == "mc-hammersley")
@@ -93,7 +94,8 @@ std::string BenchSvg(const std::vector<BenchRow>& rows) {
     p.xLabel = "table bytes (float32); label: nodes per axis";
     p.yLabel = "lookup error (max solid, rms dashed)";
     PlotSeries kl{"kiln tol 1e-8, linear filter, max", "#d62728", Marker::Circle, false, {}};
-    PlotSeries ko{"kiln tol 1e-8, linear filter, max off the corner", "#9467bd", Marker::Triangle, false, {}};
+    PlotSeries ko{
+        "kiln tol 1e-8, linear filter, max off the corner", "#9467bd", Marker::Triangle, false, {}};
     PlotSeries klr{"kiln tol 1e-8, linear filter, rms", "#d62728", Marker::Circle, true, {}};
     PlotSeries kcr{"kiln tol 1e-8, cubic filter, rms", "#ff7f0e", Marker::Diamond, true, {}};
     PlotSeries mlr{"Monte Carlo, linear filter, rms", "#1f77b4", Marker::Square, true, {}};
@@ -115,8 +117,9 @@ std::string BenchSvg(const std::vector<BenchRow>& rows) {
     panels.push_back(p);
   }
   int columns = static_cast<int>(std::max(sweep.size(), sizes.size()));
-  return SvgPlot("kiln bench: bake error against time (top), lookup error against table size (bottom)",
-                 panels, columns);
+  return SvgPlot(
+      "kiln bench: bake error against time (top), lookup error against table size (bottom)", panels,
+      columns);
 }
 
 std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
@@ -124,7 +127,8 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
   const double nan = NAN;
   // "tol 1e-06" for an adaptive kiln row, "the fixed rule" for the fixed one.
   auto how = [](const BenchRow& k) {
-    return k.method == "kiln-fixed-rule" ? std::string("the fixed rule") : "tol " + Short(k.setting);
+    return k.method == "kiln-fixed-rule" ? std::string("the fixed rule")
+                                         : "tol " + Short(k.setting);
   };
   for (const std::string& table : Tables(rows, "sweep")) {
     const BenchRow* mc = Find(rows, "sweep", table, "mc-hammersley", 1024);
@@ -151,7 +155,8 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
         }
       if (match) {
         line += " kiln reaches that error (or less) fastest with " + how(*match) + ": " +
-                Errors(*match) + " = " + Fmt("%.3g", match->seconds / mc->seconds) + "x the MC time;";
+                Errors(*match) + " = " + Fmt("%.3g", match->seconds / mc->seconds) +
+                "x the MC time;";
         // Equal error: where the MC rows' error-time line (least squares in log-log over the
         // rows with >= 1024 samples) reaches that kiln row's max error. An extrapolation.
         double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -180,8 +185,8 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
       // Measured, no extrapolation: the fastest kiln row at least as accurate as MC's best.
       for (const BenchRow* k : kiln)
         if (k->bakeMax <= m->bakeMax) {
-          line += " kiln beats that with " + how(*k) + " in " + Fmt("%.3g", k->seconds) +
-                  " s (" + Fmt("%.2g", k->seconds / m->seconds) + "x the time, " +
+          line += " kiln beats that with " + how(*k) + " in " + Fmt("%.3g", k->seconds) + " s (" +
+                  Fmt("%.2g", k->seconds / m->seconds) + "x the time, " +
                   Fmt("%.2g", m->bakeMax / k->bakeMax) + "x smaller max error);";
           break;
         }
@@ -193,13 +198,14 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
     out.push_back(line);
   }
   for (const std::string& table : Tables(rows, "size")) {
-    std::string line = table + " lookup error against size (kiln tol 1e-8; linear max / linear max off "
+    std::string line = table +
+                       " lookup error against size (kiln tol 1e-8; linear max / linear max off "
                        "the corner / linear rms / cubic rms):";
     for (const BenchRow& r : rows)
       if (r.section == "size" && r.table == table && r.method == "kiln")
-        line += " " + r.size + " (" + std::to_string(r.bytes) + " B): " + Fmt("%.1e", r.linearMax) + " / " +
-                Fmt("%.1e", r.linearMaxOffCorner) + " / " + Fmt("%.1e", r.linearRms) + " / " +
-                Fmt("%.1e", r.cubicRms) + ";";
+        line += " " + r.size + " (" + std::to_string(r.bytes) + " B): " + Fmt("%.1e", r.linearMax) +
+                " / " + Fmt("%.1e", r.linearMaxOffCorner) + " / " + Fmt("%.1e", r.linearRms) +
+                " / " + Fmt("%.1e", r.cubicRms) + ";";
     out.push_back(line);
   }
   const BenchRow* k = Find(rows, "baker-issue", "ggx-dfg", "kiln", nan);
@@ -208,20 +214,24 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
   const BenchRow* written = Find(rows, "baker-issue", "ggx-dfg", "kiln-bake-written", nan);
   const BenchRow* mcWritten = Find(rows, "baker-issue", "ggx-dfg", "mc-hammersley-written", nan);
   if (k && cmd && mc) {
-    std::string line = "baker issue, ggx-dfg " + k->size + " on 2 threads: kiln bake " +
-                       Fmt("%.3g", cmd->seconds) + " s as a command (texels " + Fmt("%.3g", k->seconds) +
-                       " s), bake error max " + Fmt("%.1e", k->bakeMax) + " rms " + Fmt("%.1e", k->bakeRms) +
-                       "; " + Short(mc->setting) + "-sample Hammersley MC " + Fmt("%.3g", mc->seconds) +
-                       " s, bake error max " + Fmt("%.1e", mc->bakeMax) + " rms " + Fmt("%.1e", mc->bakeRms) +
-                       "; kiln texels take " + Fmt("%.3g", k->seconds / mc->seconds) + "x the MC time for " +
-                       Fmt("%.3g", mc->bakeMax / k->bakeMax) + "x smaller max error; the whole command " +
-                       Fmt("%.3g", cmd->seconds / mc->seconds) + "x";
+    std::string line =
+        "baker issue, ggx-dfg " + k->size + " on 2 threads: kiln bake " +
+        Fmt("%.3g", cmd->seconds) + " s as a command (texels " + Fmt("%.3g", k->seconds) +
+        " s), bake error max " + Fmt("%.1e", k->bakeMax) + " rms " + Fmt("%.1e", k->bakeRms) +
+        "; " + Short(mc->setting) + "-sample Hammersley MC " + Fmt("%.3g", mc->seconds) +
+        " s, bake error max " + Fmt("%.1e", mc->bakeMax) + " rms " + Fmt("%.1e", mc->bakeRms) +
+        "; kiln texels take " + Fmt("%.3g", k->seconds / mc->seconds) + "x the MC time for " +
+        Fmt("%.3g", mc->bakeMax / k->bakeMax) + "x smaller max error; the whole command " +
+        Fmt("%.3g", cmd->seconds / mc->seconds) + "x";
     if (written && mcWritten)
-      line += "; both written to EXR, no lookup-error check: " + Fmt("%.3g", written->seconds) + " s against " +
-              Fmt("%.3g", mcWritten->seconds) + " s, " + Fmt("%.3g", written->seconds / mcWritten->seconds) + "x";
-    if (const BenchRow* perTexel = Find(rows, "baker-issue", "ggx-dfg", "mc-hammersley-per-texel", nan))
-      line += "; MC with per-texel sampling (as Filament's generator) " + Fmt("%.3g", perTexel->seconds) +
-              " s: the whole kiln command " + Fmt("%.3g", cmd->seconds / perTexel->seconds) + "x";
+      line += "; both written to EXR, no lookup-error check: " + Fmt("%.3g", written->seconds) +
+              " s against " + Fmt("%.3g", mcWritten->seconds) + " s, " +
+              Fmt("%.3g", written->seconds / mcWritten->seconds) + "x";
+    if (const BenchRow* perTexel =
+            Find(rows, "baker-issue", "ggx-dfg", "mc-hammersley-per-texel", nan))
+      line += "; MC with per-texel sampling (as Filament's generator) " +
+              Fmt("%.3g", perTexel->seconds) + " s: the whole kiln command " +
+              Fmt("%.3g", cmd->seconds / perTexel->seconds) + "x";
     out.push_back(line);
   }
   for (const char* method : {"kiln", "mc-hammersley"}) {
@@ -229,16 +239,17 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
     for (const BenchRow& r : rows)
       if (r.section == "threads" && r.method == method) t.push_back(&r);
     if (t.size() == 2)
-      out.push_back(std::string("threads, ") + method + " " + t[0]->table + " " + t[0]->size + ": " +
-                    Fmt("%.3g", t[0]->seconds) + " s on 1 thread, " + Fmt("%.3g", t[1]->seconds) +
-                    " s on " + std::to_string(t[1]->threads) + " (" +
+      out.push_back(std::string("threads, ") + method + " " + t[0]->table + " " + t[0]->size +
+                    ": " + Fmt("%.3g", t[0]->seconds) + " s on 1 thread, " +
+                    Fmt("%.3g", t[1]->seconds) + " s on " + std::to_string(t[1]->threads) + " (" +
                     Fmt("%.2f", t[0]->seconds / t[1]->seconds) + "x)" +
                     (std::string(method) == "kiln" ? "; " + t[1]->note : std::string()));
   }
   std::string lookups = "runtime ns/call (1 thread):";
   for (const BenchRow& r : rows) {
     if (r.section != "runtime") continue;
-    std::string what = r.method == "directional-albedo" ? r.method + " tol " + Short(r.setting) : r.method;
+    std::string what =
+        r.method == "directional-albedo" ? r.method + " tol " + Short(r.setting) : r.method;
     lookups += " " + r.table + (r.size.empty() ? "" : " " + r.size) + " " + what + " " +
                Fmt("%.3g", r.nsPerCall) + ";";
   }

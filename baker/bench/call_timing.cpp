@@ -32,7 +32,8 @@ CallTiming Median(long long calls, int batches, F&& batch) {
     auto t0 = std::chrono::steady_clock::now();
     batch();
     auto t1 = std::chrono::steady_clock::now();
-    ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() / static_cast<double>(calls));
+    ns.push_back(std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                 static_cast<double>(calls));
   }
   std::sort(ns.begin(), ns.end());
   CallTiming t;
@@ -50,7 +51,8 @@ CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int b
   std::vector<double> x(static_cast<size_t>(kInputs) * 3, 0);
   uint64_t seed = 11;
   for (int i = 0; i < kInputs; ++i)
-    for (int d = 0; d < dims; ++d) x[i * 3 + d] = Lerp(Uniform(seed), view.axis[d].lo, view.axis[d].hi);
+    for (int d = 0; d < dims; ++d)
+      x[i * 3 + d] = Lerp(Uniform(seed), view.axis[d].lo, view.axis[d].hi);
   return Median(calls, batches, [&] {
     double sum = 0;
     float out[8];

@@ -9,9 +9,9 @@
 namespace kiln {
 
 struct CallTiming {
-  double nsPerCall = 0;     ///< median over the batches
-  double seconds = 0;       ///< wall time of all batches
-  long long calls = 0;      ///< calls per batch
+  double nsPerCall = 0;        ///< median over the batches
+  double seconds = 0;          ///< wall time of all batches
+  long long calls = 0;         ///< calls per batch
   long long evalsPerCall = 0;  ///< integrand evaluations per call (direct integration only)
 };
 

@@ -167,7 +167,9 @@ struct Rows {
   Axis mu, r;
   int width, rSize;
   explicit Rows(const TableSpec& spec)
-      : mu(spec.axes[0].ToAxis()), r(spec.axes[1].ToAxis()), width(spec.axes[0].size),
+      : mu(spec.axes[0].ToAxis()),
+        r(spec.axes[1].ToAxis()),
+        width(spec.axes[0].size),
         rSize(spec.axes[1].size) {}
   double Roughness(size_t k) const { return r.node(static_cast<int>(k % rSize)); }
   double LayerScale(double rk) const {
@@ -255,13 +257,15 @@ std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
   for (int i = 0; i < n; ++i) {
     const double phi = 2 * Pi * i / n, u = RadicalInverse2(static_cast<uint32_t>(i));
     const double den = 1 + (a2 - 1) * u;
-    const double cosT = std::sqrt((1 - u) / den), sinT = std::sqrt(a2 * u / den);  // exact as alpha -> 0
+    const double cosT = std::sqrt((1 - u) / den),
+                 sinT = std::sqrt(a2 * u / den);  // exact as alpha -> 0
     const Vec3 h{sinT * std::cos(phi), sinT * std::sin(phi), cosT};
     const double voh = Dot(v, h);
     const Vec3 l = 2 * voh * h - v;
     if (!(l.z > 0) || !(voh > 0)) continue;
     // Height-correlated Smith: Vis = G / (4 mu_o mu_l) = 0.5 / (mu_l Lv + mu_o Ll).
-    const double vis = 0.5 / (l.z * std::sqrt(mu * mu * (1 - a2) + a2) + mu * std::sqrt(l.z * l.z * (1 - a2) + a2));
+    const double vis = 0.5 / (l.z * std::sqrt(mu * mu * (1 - a2) + a2) +
+                              mu * std::sqrt(l.z * l.z * (1 - a2) + a2));
     const double g = 4 * vis * l.z * voh / h.z, fc = Pow5(1 - voh);
     a += (1 - fc) * g;
     b += fc * g;
@@ -273,8 +277,10 @@ std::array<double, 2> DFGPerTexel(int n, double mu, double alpha) {
 
 Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats) {
   if (!(Describe(spec.quantity).monteCarlo == &kGgxDfgMonteCarlo && EstimatorSupports(spec)))
-    throw std::invalid_argument("table '" + spec.name + "': no per-texel Monte Carlo estimator for it");
-  Table t = TableShell(spec, kBenchGenerator, std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
+    throw std::invalid_argument("table '" + spec.name +
+                                "': no per-texel Monte Carlo estimator for it");
+  Table t = TableShell(spec, kBenchGenerator,
+                       std::to_string(n) + "-sample Hammersley Monte Carlo, per-texel sampling");
   const int width = spec.axes[0].size, rSize = spec.axes[1].size;
   Axis muAxis = spec.axes[0].ToAxis(), rAxis = spec.axes[1].ToAxis();
   auto t0 = std::chrono::steady_clock::now();
@@ -283,7 +289,8 @@ Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeSt
     tbb::parallel_for(tbb::blocked_range<int>(0, rSize, 1), [&](const tbb::blocked_range<int>& b) {
       for (int k = b.begin(); k != b.end(); ++k) {
         const double r = rAxis.node(k), alpha = GGXAlpha(r);
-        const double c = spec.axes[0].warp == Warp::Root4Layer ? layerScale(rAxis.lo, rAxis.hi, r) : 1e-12;
+        const double c =
+            spec.axes[0].warp == Warp::Root4Layer ? layerScale(rAxis.lo, rAxis.hi, r) : 1e-12;
         float* out = &t.data[static_cast<size_t>(k) * width * 2];
         for (int i = 0; i < width; ++i) {
           std::array<double, 2> ab = DFGPerTexel(n, muAxis.node(i, c), alpha);
@@ -314,9 +321,10 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
   auto row = [&](size_t k) { fill(k, &t.data[k * width * nc]); };
   tbb::task_arena arena(Threads(threads));
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 1), [&](const tbb::blocked_range<size_t>& b) {
-      for (size_t k = b.begin(); k != b.end(); ++k) row(k);
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 1),
+                      [&](const tbb::blocked_range<size_t>& b) {
+                        for (size_t k = b.begin(); k != b.end(); ++k) row(k);
+                      });
   });
   if (stats) {
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

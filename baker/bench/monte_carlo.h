@@ -93,6 +93,7 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
 /// inversion) inside its sample loop, nothing shared between texels. The same sums in double, so
 /// the texels agree with EstimateTable's to rounding. Quantity dfg of ggx only (else throws
 /// std::invalid_argument); oneTBB over rows on `threads` threads.
-Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeStats* stats = nullptr);
+Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads,
+                               BakeStats* stats = nullptr);
 
 }  // namespace kiln

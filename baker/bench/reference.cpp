@@ -33,11 +33,12 @@ long long ParallelEvals(size_t n, int threads, F&& f) {
   std::atomic<long long> evals{0};
   tbb::task_arena arena(Threads(threads));
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
-      long long local = 0;
-      for (size_t i = r.begin(); i != r.end(); ++i) local += f(i);
-      evals += local;
-    });
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        long long local = 0;
+                        for (size_t i = r.begin(); i != r.end(); ++i) local += f(i);
+                        evals += local;
+                      });
   });
   return evals.load();
 }
@@ -89,7 +90,8 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
   }
   uint64_t seed = 0x6B696C6E62656E63ull;  // "kilnbenc"
   for (size_t j = 0; j < ref.randomPoints; ++j)
-    for (size_t d = 0; d < dims; ++d) texel.push_back(NextUniform(seed) * std::max(0, axes[d].size - 1));
+    for (size_t d = 0; d < dims; ++d)
+      texel.push_back(NextUniform(seed) * std::max(0, axes[d].size - 1));
   size_t count = texel.size() / std::max<size_t>(dims, 1);
   ref.points.resize(texel.size());
   ref.inCorner.assign(count, 0);
@@ -98,7 +100,8 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
     double* x = &ref.points[j * dims];
     for (size_t d = 0; d < dims; ++d) {
       x[d] = AxisValueAtTexel(axes[d], texel[j * dims + d]);
-      if (overMu && (d == 1 || spec.axes[d].name == "eta") && texel[j * dims + d] < 1) ref.inCorner[j] = 1;
+      if (overMu && (d == 1 || spec.axes[d].name == "eta") && texel[j * dims + d] < 1)
+        ref.inCorner[j] = 1;
     }
     if (axes[0].size > 1)  // a root4-layer axis 0 follows axis 1
       x[0] = axes[0].unwarped(texel[j * dims] / (axes[0].size - 1), LayerScaleOf(spec, x));
@@ -123,7 +126,8 @@ ErrorStats BakeError(const Table& table, const Reference& ref) {
   for (size_t i = 0; i < n; ++i) {
     double m = 0;
     for (size_t c = 0; c < nc; ++c)
-      m = std::max(m, std::abs(static_cast<double>(table.data[i * nc + c]) - ref.nodes[i * nc + c]));
+      m = std::max(m,
+                   std::abs(static_cast<double>(table.data[i * nc + c]) - ref.nodes[i * nc + c]));
     if (m > e.max || i == 0) {
       e.max = m;
       e.worstAt.clear();

@@ -21,10 +21,10 @@
 namespace kiln {
 
 struct ReferenceOptions {
-  double tol = 1e-10;        ///< integration tolerance of the reference values
-  int maxCellCentres = 4096; ///< cell centres beyond this are subsampled (even stride)
-  int randomPoints = 1000;   ///< fixed-seed random points in texel space
-  int threads = 0;           ///< 0: all cores
+  double tol = 1e-10;         ///< integration tolerance of the reference values
+  int maxCellCentres = 4096;  ///< cell centres beyond this are subsampled (even stride)
+  int randomPoints = 1000;    ///< fixed-seed random points in texel space
+  int threads = 0;            ///< 0: all cores
 };
 
 /// The reference values of one table spec (one set of axes).
@@ -36,8 +36,8 @@ struct Reference {
   std::vector<Axis> axes;           ///< the spec's axes (node positions)
   size_t dims = 0, channels = 0;
   size_t cellCentres = 0, totalCells = 0, randomPoints = 0;
-  double seconds = 0;               ///< wall time to compute it
-  long long evals = 0;              ///< integrand evaluations
+  double seconds = 0;   ///< wall time to compute it
+  long long evals = 0;  ///< integrand evaluations
   size_t PointCount() const { return dims ? points.size() / dims : 0; }
 };
 
@@ -46,7 +46,7 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt);
 
 struct ErrorStats {
   double max = 0, rms = 0;
-  double maxOffCorner = 0;       ///< LookupError: max over the points outside the corner
+  double maxOffCorner = 0;      ///< LookupError: max over the points outside the corner
   std::vector<double> worstAt;  ///< the node or point (axis units) where the max was found
 };
 

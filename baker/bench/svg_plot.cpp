@@ -53,13 +53,15 @@ std::string MarkerSvg(Marker m, double x, double y, const std::string& colour) {
              Num(y + 3) + " " + Num(x + 4) + "," + Num(y + 3) + "\" " + fill + "/>";
     case Marker::Diamond:
       return "<polygon points=\"" + Num(x) + "," + Num(y - 4.5) + " " + Num(x - 4) + "," + Num(y) +
-             " " + Num(x) + "," + Num(y + 4.5) + " " + Num(x + 4) + "," + Num(y) + "\" " + fill + "/>";
+             " " + Num(x) + "," + Num(y + 4.5) + " " + Num(x + 4) + "," + Num(y) + "\" " + fill +
+             "/>";
   }
   return "";
 }
 
 std::string Text(double x, double y, const std::string& s, const std::string& attrs) {
-  return "<text x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" " + attrs + ">" + XmlEscape(s) + "</text>";
+  return "<text x=\"" + Num(x) + "\" y=\"" + Num(y) + "\" " + attrs + ">" + XmlEscape(s) +
+         "</text>";
 }
 
 /// One panel at offset (ox, oy); returns its SVG group.
@@ -79,9 +81,10 @@ std::string Panel(const PlotPanel& p, double ox, double oy) {
   auto Y = [&](double y) { return py + kPlotH - (std::log10(y) - y0) / (y1 - y0) * kPlotH; };
   std::string out = "<g>\n";
   out += Text(px + kPlotW / 2, oy + 20, p.title,
-              "text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\"") + "\n";
-  out += "<rect x=\"" + Num(px) + "\" y=\"" + Num(py) + "\" width=\"" + Num(kPlotW) + "\" height=\"" +
-         Num(kPlotH) + "\" fill=\"none\" stroke=\"#444\"/>\n";
+              "text-anchor=\"middle\" font-size=\"14\" font-weight=\"bold\"") +
+         "\n";
+  out += "<rect x=\"" + Num(px) + "\" y=\"" + Num(py) + "\" width=\"" + Num(kPlotW) +
+         "\" height=\"" + Num(kPlotH) + "\" fill=\"none\" stroke=\"#444\"/>\n";
   // Decade grid and labels; minor ticks at 2..9 when there are few decades.
   for (int e = x0; e <= x1; ++e) {
     double x = px + static_cast<double>(e - x0) / (x1 - x0) * kPlotW;
@@ -96,13 +99,16 @@ std::string Panel(const PlotPanel& p, double ox, double oy) {
   }
   for (int e = y0; e <= y1; ++e) {
     double y = py + kPlotH - static_cast<double>(e - y0) / (y1 - y0) * kPlotH;
-    out += "<line x1=\"" + Num(px) + "\" y1=\"" + Num(y) + "\" x2=\"" + Num(px + kPlotW) + "\" y2=\"" +
-           Num(y) + "\" stroke=\"#ddd\"/>\n";
+    out += "<line x1=\"" + Num(px) + "\" y1=\"" + Num(y) + "\" x2=\"" + Num(px + kPlotW) +
+           "\" y2=\"" + Num(y) + "\" stroke=\"#ddd\"/>\n";
     out += Text(px - 5, y + 3.5, Decade(e), "text-anchor=\"end\" font-size=\"10\"") + "\n";
   }
-  out += Text(px + kPlotW / 2, py + kPlotH + 32, p.xLabel, "text-anchor=\"middle\" font-size=\"11\"") + "\n";
+  out +=
+      Text(px + kPlotW / 2, py + kPlotH + 32, p.xLabel, "text-anchor=\"middle\" font-size=\"11\"") +
+      "\n";
   out += "<text transform=\"translate(" + Num(ox + 16) + "," + Num(py + kPlotH / 2) +
-         ") rotate(-90)\" text-anchor=\"middle\" font-size=\"11\">" + XmlEscape(p.yLabel) + "</text>\n";
+         ") rotate(-90)\" text-anchor=\"middle\" font-size=\"11\">" + XmlEscape(p.yLabel) +
+         "</text>\n";
   // Series: a polyline through the usable points, markers, labels.
   for (const PlotSeries& s : p.series) {
     std::string pts;
@@ -115,7 +121,8 @@ std::string Panel(const PlotPanel& p, double ox, double oy) {
       if (!Usable(q)) continue;
       out += MarkerSvg(s.marker, X(q.x), Y(q.y), s.colour) + "\n";
       if (!q.label.empty())
-        out += Text(X(q.x) + 5, Y(q.y) - 5, q.label, "font-size=\"8\" fill=\"" + s.colour + "\"") + "\n";
+        out += Text(X(q.x) + 5, Y(q.y) - 5, q.label, "font-size=\"8\" fill=\"" + s.colour + "\"") +
+               "\n";
     }
   }
   // Pareto front over every series of the panel: sorted by x, keep strictly decreasing y.
@@ -134,7 +141,8 @@ std::string Panel(const PlotPanel& p, double ox, double oy) {
       std::string d = "M" + Num(X(front[0].x)) + "," + Num(Y(front[0].y));
       for (size_t i = 1; i < front.size(); ++i)
         d += " H" + Num(X(front[i].x)) + " V" + Num(Y(front[i].y));
-      out += "<path d=\"" + d + "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1\" "
+      out += "<path d=\"" + d +
+             "\" fill=\"none\" stroke=\"#000\" stroke-width=\"1\" "
              "stroke-dasharray=\"2,2\"/>\n";
       for (const PlotPoint& q : front)
         out += "<circle cx=\"" + Num(X(q.x)) + "\" cy=\"" + Num(Y(q.y)) +
@@ -152,9 +160,11 @@ std::string Panel(const PlotPanel& p, double ox, double oy) {
     ly += kLegendLine;
   }
   if (p.paretoFront) {
-    out += "<circle cx=\"" + Num(px + 11) + "\" cy=\"" + Num(ly) + "\" r=\"6\" fill=\"none\" stroke=\"#000\"/>\n";
+    out += "<circle cx=\"" + Num(px + 11) + "\" cy=\"" + Num(ly) +
+           "\" r=\"6\" fill=\"none\" stroke=\"#000\"/>\n";
     out += Text(px + 28, ly + 3.5, "Pareto front (nothing both faster and more accurate)",
-                "font-size=\"10\"") + "\n";
+                "font-size=\"10\"") +
+           "\n";
   }
   out += "</g>\n";
   return out;
@@ -166,11 +176,20 @@ std::string XmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -179,7 +198,8 @@ std::string XmlEscape(const std::string& text) {
 std::string SvgPlot(const std::string& title, const std::vector<PlotPanel>& panels, int columns) {
   columns = std::max(1, std::min<int>(columns, std::max<size_t>(panels.size(), 1)));
   size_t maxSeries = 0;
-  for (const PlotPanel& p : panels) maxSeries = std::max(maxSeries, p.series.size() + (p.paretoFront ? 1 : 0));
+  for (const PlotPanel& p : panels)
+    maxSeries = std::max(maxSeries, p.series.size() + (p.paretoFront ? 1 : 0));
   double panelW = kLeft + kPlotW + kRight;
   double panelH = kTop + kPlotH + kAxisBelow + kLegendLine * maxSeries + 10;
   int rows = static_cast<int>((panels.size() + columns - 1) / columns);
@@ -188,8 +208,11 @@ std::string SvgPlot(const std::string& title, const std::vector<PlotPanel>& pane
   out += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + Num(width) +
          "\" height=\"" + Num(height) + "\" viewBox=\"0 0 " + Num(width) + " " + Num(height) +
          "\" font-family=\"sans-serif\">\n";
-  out += "<rect x=\"0\" y=\"0\" width=\"" + Num(width) + "\" height=\"" + Num(height) + "\" fill=\"#fff\"/>\n";
-  out += Text(width / 2, 24, title, "text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\"") + "\n";
+  out += "<rect x=\"0\" y=\"0\" width=\"" + Num(width) + "\" height=\"" + Num(height) +
+         "\" fill=\"#fff\"/>\n";
+  out +=
+      Text(width / 2, 24, title, "text-anchor=\"middle\" font-size=\"16\" font-weight=\"bold\"") +
+      "\n";
   for (size_t i = 0; i < panels.size(); ++i) {
     double ox = panelW * static_cast<double>(i % columns);
     double oy = 36 + panelH * static_cast<double>(i / columns);

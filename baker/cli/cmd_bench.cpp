@@ -11,8 +11,9 @@ namespace kiln::cli {
 
 void RegisterBench(CLI::App& app) {
   auto* sub = app.add_subcommand(
-      "bench", "time kiln's bake against Monte Carlo and Gauss-Legendre bakes of the same tables, "
-               "with bake and lookup errors; writes DIR/bench.csv and DIR/bench.svg");
+      "bench",
+      "time kiln's bake against Monte Carlo and Gauss-Legendre bakes of the same tables, "
+      "with bake and lookup errors; writes DIR/bench.csv and DIR/bench.svg");
   struct Args {
     std::string out = "bench";
     bool quick = false;

@@ -29,7 +29,8 @@ void RegisterEval(CLI::App& app) {
     check("--mu-l", args->mu_l);
     if (!std::isfinite(args->phi)) throw std::invalid_argument("eval: --phi must be finite");
     AnyModel model = MakeModel(args->model, args->params.Params());
-    double f = Evaluate(model, ViewDirection(args->mu_o), DirectionFromMuPhi(args->mu_l, args->phi));
+    double f =
+        Evaluate(model, ViewDirection(args->mu_o), DirectionFromMuPhi(args->mu_l, args->phi));
     std::printf("%s\n", FullPrecision(f).c_str());
   });
 }

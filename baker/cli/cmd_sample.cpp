@@ -16,7 +16,8 @@ void RegisterSample(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   sub->add_option("file", args->file, "a kiln .exr table")->required();
-  sub->add_option("coords", args->x, "one value per axis, in axis order (see kiln inspect)")->required();
+  sub->add_option("coords", args->x, "one value per axis, in axis order (see kiln inspect)")
+      ->required();
   sub->add_flag("--cubic", args->cubic, "Catmull-Rom instead of linear interpolation");
   sub->callback([args] {
     Table t = loadTable(args->file);

@@ -9,7 +9,8 @@
 // Stretch by alpha (x, y scaled by 1/alpha): o' = (alpha sin_o, 0, mu_o) / L,
 // L = sqrt(alpha^2 sin_o^2 + mu_o^2), and h maps to the unit normal n' = (sin t' cos p,
 // sin t' sin p, cos t') (t' = theta'_h, p = phi_h, unchanged). D_o is uniform over the projected
-// area of the stretched hemisphere, pi (1 + o'_z) / 2, i.e. D_o dh = 2 (o'.n')^+ dn' / (pi (1 + o'_z)):
+// area of the stretched hemisphere, pi (1 + o'_z) / 2, i.e. D_o dh = 2 (o'.n')^+ dn' / (pi (1 +
+// o'_z)):
 //     E_w = 4 / (pi (1 + o'_z)) int_0^pi dp int_0^{t'max(p)} sin t' (o'.n') g w dt',
 // the 2 from the mirror symmetry p -> -p, g = G2 / G1(o) = 1 / (1 + Lambda_l / (1 + Lambda_o)) in
 // [0, 1]. No lobe is left in (t', p): alpha = 1e-12 is as smooth as alpha = 1.
@@ -214,7 +215,7 @@ inline double RoughLog(double x) {
   const int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
   bits = (bits & ((std::uint64_t(1) << 52) - 1)) | (std::uint64_t(1023) << 52);
   double m;
-  std::memcpy(&m, &bits, sizeof m);  // x = m 2^e, m in [1, 2)
+  std::memcpy(&m, &bits, sizeof m);                // x = m 2^e, m in [1, 2)
   const double z = (m - 1) / (m + 1), z2 = z * z;  // log m = 2 atanh(z)
   return e * 0.69314718055994531 + 2 * z * (1 + z2 * (1.0 / 3 + z2 * (0.2 + z2 / 7)));
 }
@@ -375,9 +376,11 @@ struct TunedBand {
   double perEFold;
   int deficit;
 };
-constexpr TunedBand kTunedBands[] = {
-    {0.004, 11, 7, 4, 1.3, 4}, {0.02, 11, 7, 4, 1.4, 4}, {0.06, 10, 7, 5, 1.4, 4},
-    {0.16, 12, 8, 5, 1.2, 4},  {INFINITY, 12, 9, 4, 1.4, 4}};
+constexpr TunedBand kTunedBands[] = {{0.004, 11, 7, 4, 1.3, 4},
+                                     {0.02, 11, 7, 4, 1.4, 4},
+                                     {0.06, 10, 7, 5, 1.4, 4},
+                                     {0.16, 12, 8, 5, 1.2, 4},
+                                     {INFINITY, 12, 9, 4, 1.4, 4}};
 
 }  // namespace
 
@@ -405,7 +408,7 @@ std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOp
   const double st = std::sqrt(std::max(0.0, 1 - mu * mu));
   const double L = std::sqrt(a2 * st * st + mu * mu);
   const double ozs = mu / L, oxs = a * st / L;  // stretched view o'
-  const double pref = 16 / (kPi * (1 + ozs));    // 4 / (pi (1 + o'_z)) times the kernel's 1/4
+  const double pref = 16 / (kPi * (1 + ozs));   // 4 / (pi (1 + o'_z)) times the kernel's 1/4
   const double muLo = MuLambda(mu, a);
   const double sMask = mu > 0 ? mu * a / (mu + 2 * muLo) : 0;  // pole of g at mu_l = -sMask
   const double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));

@@ -1,5 +1,5 @@
-// The hemispherical integrals kiln tabulates (docs/models.md "Hemispherical integrals"), for any model,
-// deterministic, in double precision, to an absolute tolerance (default 1e-9).
+// The hemispherical integrals kiln tabulates (docs/models.md "Hemispherical integrals"), for any
+// model, deterministic, in double precision, to an absolute tolerance (default 1e-9).
 #pragma once
 #include <array>
 

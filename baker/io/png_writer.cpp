@@ -27,165 +27,166 @@ constexpr int kOneDimRowHeight = 32;
 using CrcTable = std::array<std::uint32_t, 256>;
 
 CrcTable makeCrcTable() {
-    CrcTable table{};
-    for (std::uint32_t n = 0; n < 256; ++n) {
-        std::uint32_t c = n;
-        for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-        table[n] = c;
-    }
-    return table;
+  CrcTable table{};
+  for (std::uint32_t n = 0; n < 256; ++n) {
+    std::uint32_t c = n;
+    for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+    table[n] = c;
+  }
+  return table;
 }
 
 /// CRC-32 (ISO 3309, as PNG uses) of bytes [begin, end).
 std::uint32_t crc32(const CrcTable& table, const std::string& bytes, std::size_t begin) {
-    std::uint32_t c = 0xFFFFFFFFu;
-    for (std::size_t i = begin; i < bytes.size(); ++i)
-        c = table[(c ^ static_cast<std::uint8_t>(bytes[i])) & 0xFFu] ^ (c >> 8);
-    return c ^ 0xFFFFFFFFu;
+  std::uint32_t c = 0xFFFFFFFFu;
+  for (std::size_t i = begin; i < bytes.size(); ++i)
+    c = table[(c ^ static_cast<std::uint8_t>(bytes[i])) & 0xFFu] ^ (c >> 8);
+  return c ^ 0xFFFFFFFFu;
 }
 
 /// Adler-32 checksum (zlib) of `bytes`.
 std::uint32_t adler32(const std::vector<std::uint8_t>& bytes) {
-    constexpr std::uint32_t kMod = 65521;
-    std::uint32_t a = 1, b = 0;
-    for (std::uint8_t byte : bytes) {
-        a = (a + byte) % kMod;
-        b = (b + a) % kMod;
-    }
-    return (b << 16) | a;
+  constexpr std::uint32_t kMod = 65521;
+  std::uint32_t a = 1, b = 0;
+  for (std::uint8_t byte : bytes) {
+    a = (a + byte) % kMod;
+    b = (b + a) % kMod;
+  }
+  return (b << 16) | a;
 }
 
 void appendBigEndian32(std::string& out, std::uint32_t v) {
-    out += static_cast<char>((v >> 24) & 0xFFu);
-    out += static_cast<char>((v >> 16) & 0xFFu);
-    out += static_cast<char>((v >> 8) & 0xFFu);
-    out += static_cast<char>(v & 0xFFu);
+  out += static_cast<char>((v >> 24) & 0xFFu);
+  out += static_cast<char>((v >> 16) & 0xFFu);
+  out += static_cast<char>((v >> 8) & 0xFFu);
+  out += static_cast<char>(v & 0xFFu);
 }
 
-void appendChunk(std::string& png, const CrcTable& crc, const char type[4], const std::string& data) {
-    appendBigEndian32(png, static_cast<std::uint32_t>(data.size()));
-    const std::size_t typeStart = png.size();
-    png.append(type, 4);
-    png += data;
-    appendBigEndian32(png, crc32(crc, png, typeStart));
+void appendChunk(std::string& png, const CrcTable& crc, const char type[4],
+                 const std::string& data) {
+  appendBigEndian32(png, static_cast<std::uint32_t>(data.size()));
+  const std::size_t typeStart = png.size();
+  png.append(type, 4);
+  png += data;
+  appendBigEndian32(png, crc32(crc, png, typeStart));
 }
 
 /// A zlib stream holding `raw` in stored (uncompressed) deflate blocks.
 std::string zlibStored(const std::vector<std::uint8_t>& raw) {
-    std::string z;
-    z += static_cast<char>(0x78);  // CMF: deflate, 32K window
-    z += static_cast<char>(0x01);  // FLG: no dictionary, check bits
-    std::size_t pos = 0;
-    do {
-        const std::size_t length = std::min(kStoredBlockMax, raw.size() - pos);
-        const bool last = pos + length == raw.size();
-        z += static_cast<char>(last ? 1 : 0);  // BFINAL, BTYPE = 00 (stored)
-        z += static_cast<char>(length & 0xFFu);
-        z += static_cast<char>((length >> 8) & 0xFFu);
-        z += static_cast<char>(~length & 0xFFu);
-        z += static_cast<char>((~length >> 8) & 0xFFu);
-        z.append(reinterpret_cast<const char*>(raw.data()) + pos, length);
-        pos += length;
-    } while (pos < raw.size());
-    appendBigEndian32(z, adler32(raw));
-    return z;
+  std::string z;
+  z += static_cast<char>(0x78);  // CMF: deflate, 32K window
+  z += static_cast<char>(0x01);  // FLG: no dictionary, check bits
+  std::size_t pos = 0;
+  do {
+    const std::size_t length = std::min(kStoredBlockMax, raw.size() - pos);
+    const bool last = pos + length == raw.size();
+    z += static_cast<char>(last ? 1 : 0);  // BFINAL, BTYPE = 00 (stored)
+    z += static_cast<char>(length & 0xFFu);
+    z += static_cast<char>((length >> 8) & 0xFFu);
+    z += static_cast<char>(~length & 0xFFu);
+    z += static_cast<char>((~length >> 8) & 0xFFu);
+    z.append(reinterpret_cast<const char*>(raw.data()) + pos, length);
+    pos += length;
+  } while (pos < raw.size());
+  appendBigEndian32(z, adler32(raw));
+  return z;
 }
 
 }  // namespace
 
 std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
-    if (width < 1 || height < 1)
-        throw std::invalid_argument("PNG image must be at least 1 x 1 pixels");
-    const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
-    if (rgb.size() != rowBytes * static_cast<std::size_t>(height))
-        throw std::invalid_argument("PNG pixel buffer does not match width x height x 3");
+  if (width < 1 || height < 1)
+    throw std::invalid_argument("PNG image must be at least 1 x 1 pixels");
+  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
+  if (rgb.size() != rowBytes * static_cast<std::size_t>(height))
+    throw std::invalid_argument("PNG pixel buffer does not match width x height x 3");
 
-    std::vector<std::uint8_t> raw;  // each row: filter type 0 (None), then the pixels
-    raw.reserve((rowBytes + 1) * static_cast<std::size_t>(height));
-    for (int y = 0; y < height; ++y) {
-        raw.push_back(0);
-        const auto row = rgb.begin() + static_cast<std::ptrdiff_t>(rowBytes * static_cast<std::size_t>(y));
-        raw.insert(raw.end(), row, row + static_cast<std::ptrdiff_t>(rowBytes));
-    }
+  std::vector<std::uint8_t> raw;  // each row: filter type 0 (None), then the pixels
+  raw.reserve((rowBytes + 1) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y) {
+    raw.push_back(0);
+    const auto row =
+        rgb.begin() + static_cast<std::ptrdiff_t>(rowBytes * static_cast<std::size_t>(y));
+    raw.insert(raw.end(), row, row + static_cast<std::ptrdiff_t>(rowBytes));
+  }
 
-    const CrcTable crc = makeCrcTable();
-    std::string png = "\x89PNG\r\n\x1a\n";
-    std::string header;
-    appendBigEndian32(header, static_cast<std::uint32_t>(width));
-    appendBigEndian32(header, static_cast<std::uint32_t>(height));
-    header += static_cast<char>(8);  // bit depth
-    header += static_cast<char>(2);  // colour type: RGB
-    header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
-    appendChunk(png, crc, "IHDR", header);
-    appendChunk(png, crc, "IDAT", zlibStored(raw));
-    appendChunk(png, crc, "IEND", std::string());
-    return png;
+  const CrcTable crc = makeCrcTable();
+  std::string png = "\x89PNG\r\n\x1a\n";
+  std::string header;
+  appendBigEndian32(header, static_cast<std::uint32_t>(width));
+  appendBigEndian32(header, static_cast<std::uint32_t>(height));
+  header += static_cast<char>(8);  // bit depth
+  header += static_cast<char>(2);  // colour type: RGB
+  header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
+  appendChunk(png, crc, "IHDR", header);
+  appendChunk(png, crc, "IDAT", zlibStored(raw));
+  appendChunk(png, crc, "IEND", std::string());
+  return png;
 }
 
 void viridis(double t, std::uint8_t rgb[3]) {
-    if (!(t > 0.0)) t = 0.0;
-    if (t > 1.0) t = 1.0;
-    // Polynomial fit of matplotlib's viridis (Matt Zucker, public domain).
-    static constexpr double c[7][3] = {
-        {0.2777273272234177, 0.005407344544966578, 0.3340998053353061},
-        {0.1050930431085774, 1.404613529898575, 1.384590162594685},
-        {-0.3308618287255563, 0.214847559468213, 0.09509516302823659},
-        {-4.634230498983486, -5.799100973351585, -19.33244095627987},
-        {6.228269936347081, 14.17993336680509, 56.69055260068105},
-        {4.776384997670288, -13.74514537774601, -65.35303263337234},
-        {-5.435455855934631, 4.645852612178535, 26.3124352495832}};
-    for (int k = 0; k < 3; ++k) {
-        double v = c[6][k];
-        for (int p = 5; p >= 0; --p) v = v * t + c[p][k];
-        v = std::min(1.0, std::max(0.0, v));
-        rgb[k] = static_cast<std::uint8_t>(std::lround(v * 255.0));
-    }
+  if (!(t > 0.0)) t = 0.0;
+  if (t > 1.0) t = 1.0;
+  // Polynomial fit of matplotlib's viridis (Matt Zucker, public domain).
+  static constexpr double c[7][3] = {{0.2777273272234177, 0.005407344544966578, 0.3340998053353061},
+                                     {0.1050930431085774, 1.404613529898575, 1.384590162594685},
+                                     {-0.3308618287255563, 0.214847559468213, 0.09509516302823659},
+                                     {-4.634230498983486, -5.799100973351585, -19.33244095627987},
+                                     {6.228269936347081, 14.17993336680509, 56.69055260068105},
+                                     {4.776384997670288, -13.74514537774601, -65.35303263337234},
+                                     {-5.435455855934631, 4.645852612178535, 26.3124352495832}};
+  for (int k = 0; k < 3; ++k) {
+    double v = c[6][k];
+    for (int p = 5; p >= 0; --p) v = v * t + c[p][k];
+    v = std::min(1.0, std::max(0.0, v));
+    rgb[k] = static_cast<std::uint8_t>(std::lround(v * 255.0));
+  }
 }
 
 void writeFalseColourPng(const std::string& path, const Table& table) {
-    std::string problem;
-    if (!validateTable(table, problem))
-        throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
-    const int columns = table.imageWidth();
-    const int rows = table.imageHeight();
-    const int channels = static_cast<int>(table.channels.size());
-    const int scale = std::max(1, std::min(kMaxScale, kTargetPanelSize / std::max(columns, rows)));
-    const int rowHeight = table.dims() == 1 ? std::max(scale, kOneDimRowHeight) : scale;
-    const int panelWidth = columns * scale;
-    const int width = channels * panelWidth + (channels - 1) * kPanelGap;
-    const int height = rows * rowHeight;
+  std::string problem;
+  if (!validateTable(table, problem))
+    throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
+  const int columns = table.imageWidth();
+  const int rows = table.imageHeight();
+  const int channels = static_cast<int>(table.channels.size());
+  const int scale = std::max(1, std::min(kMaxScale, kTargetPanelSize / std::max(columns, rows)));
+  const int rowHeight = table.dims() == 1 ? std::max(scale, kOneDimRowHeight) : scale;
+  const int panelWidth = columns * scale;
+  const int width = channels * panelWidth + (channels - 1) * kPanelGap;
+  const int height = rows * rowHeight;
 
-    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3,
-                                  kGapGrey);
-    for (int c = 0; c < channels; ++c) {
-        float lo = table.data[static_cast<std::size_t>(c)], hi = lo;
-        for (std::size_t k = static_cast<std::size_t>(c); k < table.data.size();
-             k += static_cast<std::size_t>(channels)) {
-            lo = std::min(lo, table.data[k]);
-            hi = std::max(hi, table.data[k]);
-        }
-        const double range = static_cast<double>(hi) - static_cast<double>(lo);
-        const int panelX = c * (panelWidth + kPanelGap);
-        for (int row = 0; row < rows; ++row) {
-            for (int col = 0; col < columns; ++col) {
-                const float v = table.data[(static_cast<std::size_t>(row) * columns + col) * channels + c];
-                const double t = range > 0.0 ? (static_cast<double>(v) - lo) / range : 0.5;
-                std::uint8_t colour[3];
-                viridis(t, colour);
-                for (int py = row * rowHeight; py < (row + 1) * rowHeight; ++py) {
-                    for (int px = panelX + col * scale; px < panelX + (col + 1) * scale; ++px) {
-                        std::uint8_t* pixel =
-                            &rgb[(static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px)) * 3];
-                        pixel[0] = colour[0];
-                        pixel[1] = colour[1];
-                        pixel[2] = colour[2];
-                    }
-                }
-            }
-        }
+  std::vector<std::uint8_t> rgb(
+      static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, kGapGrey);
+  for (int c = 0; c < channels; ++c) {
+    float lo = table.data[static_cast<std::size_t>(c)], hi = lo;
+    for (std::size_t k = static_cast<std::size_t>(c); k < table.data.size();
+         k += static_cast<std::size_t>(channels)) {
+      lo = std::min(lo, table.data[k]);
+      hi = std::max(hi, table.data[k]);
     }
-    const std::string png = encodePngRgb8(width, height, rgb);
-    writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, png); });
+    const double range = static_cast<double>(hi) - static_cast<double>(lo);
+    const int panelX = c * (panelWidth + kPanelGap);
+    for (int row = 0; row < rows; ++row) {
+      for (int col = 0; col < columns; ++col) {
+        const float v = table.data[(static_cast<std::size_t>(row) * columns + col) * channels + c];
+        const double t = range > 0.0 ? (static_cast<double>(v) - lo) / range : 0.5;
+        std::uint8_t colour[3];
+        viridis(t, colour);
+        for (int py = row * rowHeight; py < (row + 1) * rowHeight; ++py) {
+          for (int px = panelX + col * scale; px < panelX + (col + 1) * scale; ++px) {
+            std::uint8_t* pixel =
+                &rgb[(static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px)) * 3];
+            pixel[0] = colour[0];
+            pixel[1] = colour[1];
+            pixel[2] = colour[2];
+          }
+        }
+      }
+    }
+  }
+  const std::string png = encodePngRgb8(width, height, rgb);
+  writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, png); });
 }
 
 }  // namespace kiln

@@ -27,7 +27,10 @@ inline Vec3 Normalize(Vec3 a) {
 /// sqrt that returns 0 for the tiny negative arguments rounding produces.
 inline double SafeSqrt(double x) { return std::sqrt(std::max(0.0, x)); }
 inline double Sqr(double x) { return x * x; }
-inline double Pow5(double x) { double x2 = x * x; return x2 * x2 * x; }
+inline double Pow5(double x) {
+  double x2 = x * x;
+  return x2 * x2 * x;
+}
 inline double Clamp(double x, double lo, double hi) { return std::min(hi, std::max(lo, x)); }
 inline double Lerp(double t, double a, double b) { return a + t * (b - a); }
 

@@ -28,14 +28,18 @@ enum class IntegrationDomain { Light, HalfVector };
 
 /// The angular quantities of a direction pair that the diffuse models use.
 struct PairGeometry {
-  double mu_o, mu_l;          ///< cos(theta_o), cos(theta_l)
+  double mu_o, mu_l;  ///< cos(theta_o), cos(theta_l)
   double sinTheta_o, sinTheta_l;
-  double cosPhi;              ///< cos of the azimuth difference (1 when either is normal)
-  double ol;                  ///< o . l
+  double cosPhi;  ///< cos of the azimuth difference (1 when either is normal)
+  double ol;      ///< o . l
 
   PairGeometry(Vec3 wo, Vec3 wi)
-      : mu_o(CosTheta(wo)), mu_l(CosTheta(wi)), sinTheta_o(SinTheta(wo)), sinTheta_l(SinTheta(wi)),
-        cosPhi(1), ol(Dot(wo, wi)) {
+      : mu_o(CosTheta(wo)),
+        mu_l(CosTheta(wi)),
+        sinTheta_o(SinTheta(wo)),
+        sinTheta_l(SinTheta(wi)),
+        cosPhi(1),
+        ol(Dot(wo, wi)) {
     double s = sinTheta_o * sinTheta_l;
     if (s > 0) cosPhi = Clamp((wo.x * wi.x + wo.y * wi.y) / s, -1.0, 1.0);
   }

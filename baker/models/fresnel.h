@@ -71,10 +71,14 @@ struct Fresnel {
   /// F at cos(theta_d) = o.h.
   double operator()(double cosTheta_d) const {
     switch (kind) {
-      case Kind::One: return 1.0;
-      case Kind::Schlick: return FrSchlick(f0, cosTheta_d);
-      case Kind::Dielectric: return FrDielectric(cosTheta_d, eta);
-      case Kind::Conductor: return FrComplex(cosTheta_d, eta, k);
+      case Kind::One:
+        return 1.0;
+      case Kind::Schlick:
+        return FrSchlick(f0, cosTheta_d);
+      case Kind::Dielectric:
+        return FrDielectric(cosTheta_d, eta);
+      case Kind::Conductor:
+        return FrComplex(cosTheta_d, eta, k);
     }
     return 1.0;
   }

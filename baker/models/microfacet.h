@@ -60,7 +60,8 @@ struct BeckmannDistribution {
     double a2 = alpha * alpha, cos4 = Sqr(Sqr(CosTheta(wm)));
     return std::exp(-tan2 / a2) / (Pi * a2 * cos4);
   }
-  /// mu * Lambda(mu) with a = mu / (alpha sin):  Lambda = (erf(a) - 1)/2 + exp(-a^2)/(2 a sqrt(pi)).
+  /// mu * Lambda(mu) with a = mu / (alpha sin):  Lambda = (erf(a) - 1)/2 + exp(-a^2)/(2 a
+  /// sqrt(pi)).
   double MuLambda(double mu) const {
     double s = SafeSqrt(1 - mu * mu);
     if (s == 0) return 0;

@@ -19,39 +19,131 @@ std::vector<ModelInfo> BuildModels() {
   using D = IntegrationDomain;
   const char* micro = "alpha = r^2 (Disney 2012)";
   const char* sigma = "sigma = r (slope std. deviation, radians)";
-  std::vector<ParamInfo> spec = {Rough(1, "perceptual roughness r, alpha = r^2"), F0(1), Eta(), K()};
+  std::vector<ParamInfo> spec = {Rough(1, "perceptual roughness r, alpha = r^2"), F0(1), Eta(),
+                                 K()};
   return {
       {"lambert", "rho/pi (Lambert 1760)", "none", {Rho()}, true, true, true, false, D::Light},
-      {"burley", "Disney diffuse (Burley 2012)", "r as is",
-       {Rough(1, "Disney roughness"), Rho()}, true, false, true, false, D::Light},
-      {"frostbite", "renormalised Disney diffuse (Lagarde 2014)", "r as is",
-       {Rough(1, "Disney roughness"), Rho()}, true, false, true, false, D::Light},
-      {"oren-nayar", "full Oren-Nayar with interreflection (Oren & Nayar 1994)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, false, true, D::Light},
-      {"oren-nayar-qualitative", "qualitative Oren-Nayar (Oren & Nayar 1994)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, false, D::Light},
-      {"oren-nayar-qualitative-ir", "qualitative Oren-Nayar, A with 0.57 (interreflection)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, false, D::Light},
-      {"fujii", "tiny improved Oren-Nayar (Fujii)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho()}, true, false, true, true, D::Light},
-      {"fujii-normalized", "energy-normalised improved Oren-Nayar (Fujii)", "sigma' = r in [0,1]",
-       {Rough(1, "sigma'"), Rho()}, true, true, true, false, D::Light},
-      {"gotanda-fresnel", "normalised Oren-Nayar with Fresnel (Gotanda 2014 eq. 33-34)", sigma,
-       {Rough(HalfPi, "sigma, radians"), Rho(), F0(0)}, true, true, false, false, D::Light},
-      {"gotanda-ggx", "Oren-Nayar fitted to GGX + Smith (Gotanda 2014 eq. 35)", sigma,
-       {Rough(1, "sigma, radians (the fit's range)"), Rho(), F0(0)}, false, true, true, false,
+      {"burley",
+       "Disney diffuse (Burley 2012)",
+       "r as is",
+       {Rough(1, "Disney roughness"), Rho()},
+       true,
+       false,
+       true,
+       false,
        D::Light},
-      {"hammon", "GGX diffuse (Hammon 2017)", micro,
-       {Rough(1, "perceptual roughness r, alpha = r^2"), Rho()}, true, false, true, true, D::Light},
-      {"shirley", "coupled diffuse (Shirley et al. 1997)", "none", {Rho(), F0(0)}, true, true, true,
-       false, D::Light},
-      {"ashikhmin-shirley-diffuse", "coupled diffuse (Ashikhmin & Shirley 2000)", "none",
-       {Rho(), Rs(0)}, true, true, true, false, D::Light},
-      {"triace-lambert", "energy-conserving Lambert (tri-Ace, Gotanda 2010)", "none",
-       {Rho(), Rs(0), F0(0)}, false, true, true, false, D::Light},
-      {"ggx", "GGX, height-correlated Smith (Walter 2007, Heitz 2014)", micro, spec, true, true, true,
-       false, D::HalfVector},
-      {"ggx-separable", "GGX, separable Smith", micro, spec, true, true, true, false, D::HalfVector},
+      {"frostbite",
+       "renormalised Disney diffuse (Lagarde 2014)",
+       "r as is",
+       {Rough(1, "Disney roughness"), Rho()},
+       true,
+       false,
+       true,
+       false,
+       D::Light},
+      {"oren-nayar",
+       "full Oren-Nayar with interreflection (Oren & Nayar 1994)",
+       sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()},
+       true,
+       false,
+       false,
+       true,
+       D::Light},
+      {"oren-nayar-qualitative",
+       "qualitative Oren-Nayar (Oren & Nayar 1994)",
+       sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()},
+       true,
+       false,
+       true,
+       false,
+       D::Light},
+      {"oren-nayar-qualitative-ir",
+       "qualitative Oren-Nayar, A with 0.57 (interreflection)",
+       sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()},
+       true,
+       false,
+       true,
+       false,
+       D::Light},
+      {"fujii",
+       "tiny improved Oren-Nayar (Fujii)",
+       sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho()},
+       true,
+       false,
+       true,
+       true,
+       D::Light},
+      {"fujii-normalized",
+       "energy-normalised improved Oren-Nayar (Fujii)",
+       "sigma' = r in [0,1]",
+       {Rough(1, "sigma'"), Rho()},
+       true,
+       true,
+       true,
+       false,
+       D::Light},
+      {"gotanda-fresnel",
+       "normalised Oren-Nayar with Fresnel (Gotanda 2014 eq. 33-34)",
+       sigma,
+       {Rough(HalfPi, "sigma, radians"), Rho(), F0(0)},
+       true,
+       true,
+       false,
+       false,
+       D::Light},
+      {"gotanda-ggx",
+       "Oren-Nayar fitted to GGX + Smith (Gotanda 2014 eq. 35)",
+       sigma,
+       {Rough(1, "sigma, radians (the fit's range)"), Rho(), F0(0)},
+       false,
+       true,
+       true,
+       false,
+       D::Light},
+      {"hammon",
+       "GGX diffuse (Hammon 2017)",
+       micro,
+       {Rough(1, "perceptual roughness r, alpha = r^2"), Rho()},
+       true,
+       false,
+       true,
+       true,
+       D::Light},
+      {"shirley",
+       "coupled diffuse (Shirley et al. 1997)",
+       "none",
+       {Rho(), F0(0)},
+       true,
+       true,
+       true,
+       false,
+       D::Light},
+      {"ashikhmin-shirley-diffuse",
+       "coupled diffuse (Ashikhmin & Shirley 2000)",
+       "none",
+       {Rho(), Rs(0)},
+       true,
+       true,
+       true,
+       false,
+       D::Light},
+      {"triace-lambert",
+       "energy-conserving Lambert (tri-Ace, Gotanda 2010)",
+       "none",
+       {Rho(), Rs(0), F0(0)},
+       false,
+       true,
+       true,
+       false,
+       D::Light},
+      {"ggx", "GGX, height-correlated Smith (Walter 2007, Heitz 2014)", micro, spec, true, true,
+       true, false, D::HalfVector},
+      {"ggx-separable", "GGX, separable Smith", micro, spec, true, true, true, false,
+       D::HalfVector},
       {"ggx-vcavity", "GGX, Cook-Torrance V-cavity G", micro, spec, true, true, true, false,
        D::HalfVector},
       {"beckmann", "Beckmann, height-correlated Smith", micro, spec, true, true, true, false,
@@ -60,15 +152,29 @@ std::vector<ModelInfo> BuildModels() {
        D::HalfVector},
       {"blinn-phong", "Blinn-Phong NDF s = 2/alpha^2 - 2, Beckmann Smith height-correlated", micro,
        spec, true, false, true, false, D::HalfVector},
-      {"blinn-phong-normalized", "normalised Blinn-Phong (tri-Ace, Gotanda 2010)",
+      {"blinn-phong-normalized",
+       "normalised Blinn-Phong (tri-Ace, Gotanda 2010)",
        "alpha = r^2, s = 2/alpha^2 - 2",
-       {Rough(1, "perceptual roughness r, s = 2/r^4 - 2"), Rs(1), F0(1), Eta(), K()}, true, true,
-       true, false, D::HalfVector},
-      {"ashikhmin-shirley", "anisotropic Phong specular (Ashikhmin & Shirley 2000)",
+       {Rough(1, "perceptual roughness r, s = 2/r^4 - 2"), Rs(1), F0(1), Eta(), K()},
+       true,
+       true,
+       true,
+       false,
+       D::HalfVector},
+      {"ashikhmin-shirley",
+       "anisotropic Phong specular (Ashikhmin & Shirley 2000)",
        "alpha = r^2, n_u = n_v = 2/alpha^2 - 2 unless nu, nv given",
-       {Rough(1, "perceptual roughness r"), {"nu", 0, 1e7, 0, "exponent along u (overrides r)"},
-        {"nv", 0, 1e7, 0, "exponent along v (overrides r)"}, F0(1), Eta(), K()},
-       true, true, true, false, D::HalfVector},
+       {Rough(1, "perceptual roughness r"),
+        {"nu", 0, 1e7, 0, "exponent along u (overrides r)"},
+        {"nv", 0, 1e7, 0, "exponent along v (overrides r)"},
+        F0(1),
+        Eta(),
+        K()},
+       true,
+       true,
+       true,
+       false,
+       D::HalfVector},
   };
 }
 
@@ -80,14 +186,22 @@ std::string Format(double x) {
 
 double Get(const ModelInfo& info, const ModelParams& p, const std::string& name) {
   const std::optional<double>* slot = nullptr;
-  if (name == "roughness") slot = &p.roughness;
-  else if (name == "rho") slot = &p.rho;
-  else if (name == "f0") slot = &p.f0;
-  else if (name == "eta") slot = &p.eta;
-  else if (name == "k") slot = &p.k;
-  else if (name == "rs") slot = &p.rs;
-  else if (name == "nu") slot = &p.nu;
-  else if (name == "nv") slot = &p.nv;
+  if (name == "roughness")
+    slot = &p.roughness;
+  else if (name == "rho")
+    slot = &p.rho;
+  else if (name == "f0")
+    slot = &p.f0;
+  else if (name == "eta")
+    slot = &p.eta;
+  else if (name == "k")
+    slot = &p.k;
+  else if (name == "rs")
+    slot = &p.rs;
+  else if (name == "nu")
+    slot = &p.nu;
+  else if (name == "nv")
+    slot = &p.nv;
   for (const ParamInfo& pi : info.params)
     if (pi.name == name) return slot && *slot ? **slot : pi.def;
   return 0;
@@ -123,9 +237,14 @@ AnyModel MakeModel(const std::string& id, const ModelParams& p) {
   const ModelInfo* info = FindModel(id);
   if (!info) throw std::invalid_argument("unknown model '" + id + "' (see `kiln list`)");
   // Every given parameter must be one the model takes, and inside its range.
-  const std::pair<const char*, const std::optional<double>*> given[] = {
-      {"roughness", &p.roughness}, {"rho", &p.rho}, {"f0", &p.f0}, {"eta", &p.eta},
-      {"k", &p.k}, {"rs", &p.rs}, {"nu", &p.nu}, {"nv", &p.nv}};
+  const std::pair<const char*, const std::optional<double>*> given[] = {{"roughness", &p.roughness},
+                                                                        {"rho", &p.rho},
+                                                                        {"f0", &p.f0},
+                                                                        {"eta", &p.eta},
+                                                                        {"k", &p.k},
+                                                                        {"rs", &p.rs},
+                                                                        {"nu", &p.nu},
+                                                                        {"nv", &p.nv}};
   for (const auto& [name, value] : given) {
     if (!*value) continue;
     const ParamInfo* pi = nullptr;

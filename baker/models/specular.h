@@ -45,7 +45,8 @@ struct MicrofacetBRDF {
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 
-  // Half-vector integration: q = D cos(theta_h), so f mu_l 4 (o.h)/(2 pi q) = G F (o.h)/(2 pi mu_o n.h).
+  // Half-vector integration: q = D cos(theta_h), so f mu_l 4 (o.h)/(2 pi q) = G F (o.h)/(2 pi mu_o
+  // n.h).
   PolarParam FromV(double v) const { return dist.FromV(v); }
   double VFromTheta(double theta) const { return dist.VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const {
@@ -133,7 +134,8 @@ struct AshikhminShirleySpecular {
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 
   // q = (p) cos^(p-1) / (2 pi) with p = min(n_u, n_v) + 1, so
-  // f mu_l 4 (o.h)/(2 pi q) = sqrt((n_u+1)(n_v+1)) cos^(e - p + 1) F mu_l / (2 pi p max(mu_l, mu_o)).
+  // f mu_l 4 (o.h)/(2 pi q) = sqrt((n_u+1)(n_v+1)) cos^(e - p + 1) F mu_l / (2 pi p max(mu_l,
+  // mu_o)).
   double P() const { return std::min(nu, nv) + 1; }
   PolarParam FromV(double v) const { return CosinePowerParam{P()}.FromV(v); }
   double VFromTheta(double theta) const { return CosinePowerParam{P()}.VFromTheta(theta); }

@@ -20,18 +20,18 @@ struct SceneBakeResult {
 /// same mtime; with `header`, a missing DIR/<name>.h is written from the file). Adds the baked
 /// tables to DIR/manifest.json. Prints one line per table and a summary to `log` (nullptr:
 /// silent). Throws what BakeTable and WriteBakedTable throw.
-SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOptions& opt, bool half,
-                         bool header, std::FILE* log);
+SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOptions& opt,
+                         bool half, bool header, std::FILE* log);
 
 /// `kiln bake --scene SCENE --out DIR`: reads and plans the scene, bakes it (BakePlan, report on
 /// stdout). Returns the process exit code: 0, or 1 after printing "kiln: error: ..." on stderr
 /// for a bad scene file or a failed bake. Warnings (e.g. an unknown required extension) go to
 /// stderr and do not fail the run.
-int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt, bool half,
-              bool header);
+int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt,
+              bool half, bool header);
 
 /// Same, with plan options (the axis size override of tests and previews).
-int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt, bool half,
-              bool header, const PlanOptions& planOpt);
+int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt,
+              bool half, bool header, const PlanOptions& planOpt);
 
 }  // namespace kiln

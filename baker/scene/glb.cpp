@@ -38,24 +38,29 @@ std::string GlbJsonChunk(const std::string& bytes, const std::string& file) {
     throw SceneError(file, "byte 0 (glb header)",
                      "file has " + std::to_string(bytes.size()) + " bytes, a glb header needs 12");
   if (!IsGlb(bytes))
-    throw SceneError(file, "byte 0 (glb magic)", "not a glTF binary: magic " + Hex(U32(bytes, 0)) +
-                                                     ", expected 0x46546C67 ('glTF')");
+    throw SceneError(
+        file, "byte 0 (glb magic)",
+        "not a glTF binary: magic " + Hex(U32(bytes, 0)) + ", expected 0x46546C67 ('glTF')");
   uint32_t version = U32(bytes, 4), length = U32(bytes, 8);
   if (version != 2)
-    throw SceneError(file, "byte 4 (glb version)",
-                     "glb version " + std::to_string(version) + ", kiln reads glTF 2.0 (version 2)");
+    throw SceneError(
+        file, "byte 4 (glb version)",
+        "glb version " + std::to_string(version) + ", kiln reads glTF 2.0 (version 2)");
   if (length != bytes.size())
-    throw SceneError(file, "byte 8 (glb length)", "header says " + std::to_string(length) +
-                                                      " bytes, the file has " + std::to_string(bytes.size()));
+    throw SceneError(file, "byte 8 (glb length)",
+                     "header says " + std::to_string(length) + " bytes, the file has " +
+                         std::to_string(bytes.size()));
   if (bytes.size() < 20)
-    throw SceneError(file, "byte 12 (first chunk)", "no chunk after the header (a glb needs a JSON chunk)");
+    throw SceneError(file, "byte 12 (first chunk)",
+                     "no chunk after the header (a glb needs a JSON chunk)");
   uint32_t chunkLength = U32(bytes, 12), chunkType = U32(bytes, 16);
   if (chunkType != kChunkJson)
     throw SceneError(file, "byte 16 (first chunk type)",
                      "first chunk is " + Hex(chunkType) + ", expected JSON (0x4E4F534A)");
   if (chunkLength > bytes.size() - 20)
-    throw SceneError(file, "byte 12 (JSON chunk length)",
-                     "chunk of " + std::to_string(chunkLength) + " bytes runs past the end of the file");
+    throw SceneError(
+        file, "byte 12 (JSON chunk length)",
+        "chunk of " + std::to_string(chunkLength) + " bytes runs past the end of the file");
   return bytes.substr(20, chunkLength);
 }
 

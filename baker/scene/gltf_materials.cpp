@@ -8,21 +8,26 @@ namespace {
 
 using Kind = SceneNote::Kind;
 
-const char* const kMaterialExtensions[] = {
-    "KHR_materials_anisotropy",        "KHR_materials_clearcoat",
-    "KHR_materials_diffuse_transmission", "KHR_materials_dispersion",
-    "KHR_materials_emissive_strength", "KHR_materials_ior",
-    "KHR_materials_iridescence",       "KHR_materials_pbrSpecularGlossiness",
-    "KHR_materials_sheen",             "KHR_materials_specular",
-    "KHR_materials_transmission",      "KHR_materials_unlit",
-    "KHR_materials_volume"};
+const char* const kMaterialExtensions[] = {"KHR_materials_anisotropy",
+                                           "KHR_materials_clearcoat",
+                                           "KHR_materials_diffuse_transmission",
+                                           "KHR_materials_dispersion",
+                                           "KHR_materials_emissive_strength",
+                                           "KHR_materials_ior",
+                                           "KHR_materials_iridescence",
+                                           "KHR_materials_pbrSpecularGlossiness",
+                                           "KHR_materials_sheen",
+                                           "KHR_materials_specular",
+                                           "KHR_materials_transmission",
+                                           "KHR_materials_unlit",
+                                           "KHR_materials_volume"};
 
 const char* const kNonMaterialExtensions[] = {
-    "KHR_animation_pointer",  "KHR_draco_mesh_compression", "KHR_interactivity",
-    "KHR_lights_punctual",    "KHR_materials_variants",     "KHR_mesh_quantization",
-    "KHR_node_visibility",    "KHR_texture_basisu",         "KHR_texture_transform",
-    "KHR_xmp_json_ld",        "EXT_lights_image_based",     "EXT_mesh_gpu_instancing",
-    "EXT_meshopt_compression", "EXT_texture_avif",          "EXT_texture_webp"};
+    "KHR_animation_pointer",   "KHR_draco_mesh_compression", "KHR_interactivity",
+    "KHR_lights_punctual",     "KHR_materials_variants",     "KHR_mesh_quantization",
+    "KHR_node_visibility",     "KHR_texture_basisu",         "KHR_texture_transform",
+    "KHR_xmp_json_ld",         "EXT_lights_image_based",     "EXT_mesh_gpu_instancing",
+    "EXT_meshopt_compression", "EXT_texture_avif",           "EXT_texture_webp"};
 
 /// Reads one material: the helpers below share its pointer, label and the scene to fill.
 class MaterialReader {
@@ -53,7 +58,8 @@ class MaterialReader {
     scene_.needs.push_back({kind, "ggx", std::move(ranges), label_ + ": " + why});
   }
   /// A factor in [lo, hi] multiplied by an optional texture: one value without a texture,
-  /// [0, f] with one (the texture multiplies the factor), the whole axis when animated. `what` describes it for reasons.
+  /// [0, f] with one (the texture multiplies the factor), the whole axis when animated. `what`
+  /// describes it for reasons.
   ValueRange Factor(const Json& obj, const std::string& at, const std::string& key, double def,
                     const std::string& textureKey, std::string& what) const {
     double f = r_.NumberIn(obj, at, key, def, 0, 1);
@@ -88,8 +94,9 @@ void MaterialReader::Read() {
   for (const std::string& name : present)
     if (!IsKnownMaterialExtension(name))
       Note(Kind::Unknown, name,
-           IsNonMaterialExtension(name) ? "not a material extension here: ignored"
-                                        : "unknown material extension: ignored (the plan covers what kiln knows)");
+           IsNonMaterialExtension(name)
+               ? "not a material extension here: ignored"
+               : "unknown material extension: ignored (the plan covers what kiln knows)");
 
   if (Ext("KHR_materials_unlit")) {
     Note(Kind::NoTable, "KHR_materials_unlit", "unlit: no BRDF, so no table");
@@ -131,7 +138,8 @@ void MaterialReader::Read() {
       Note(Kind::NoEffect, "KHR_materials_clearcoat", "clearcoatFactor 0: no coat");
     } else {
       std::string rWhat;
-      ValueRange cr = Factor(*cc, at, "clearcoatRoughnessFactor", 0, "clearcoatRoughnessTexture", rWhat);
+      ValueRange cr =
+          Factor(*cc, at, "clearcoatRoughnessFactor", 0, "clearcoatRoughnessTexture", rWhat);
       Need(Quantity::Dfg, {{"roughness", cr}}, "clearcoat GGX lobe, " + rWhat);
     }
   }
@@ -147,7 +155,8 @@ void MaterialReader::Read() {
     std::string at = ExtAt("KHR_materials_ior");
     ior = r_.NumberIn(*iorExt, at, "ior", 1.5, 0, std::numeric_limits<double>::infinity());
     if (ior > 0 && ior < 1)
-      r_.Fail(PointerChild(at, "ior"), ExactNumber(ior) + " is not a valid IOR (>= 1, or exactly 0)");
+      r_.Fail(PointerChild(at, "ior"),
+              ExactNumber(ior) + " is not a valid IOR (>= 1, or exactly 0)");
     iorAnimated = Animated(at, "ior");
   }
   bool transmits = false;
@@ -156,16 +165,19 @@ void MaterialReader::Read() {
     ValueRange t = Factor(*tr, ExtAt("KHR_materials_transmission"), "transmissionFactor", 0,
                           "transmissionTexture", trWhat);
     transmits = t.whole || t.hi > 0;
-    if (!transmits) Note(Kind::NoEffect, "KHR_materials_transmission", "transmissionFactor 0: no transmission");
+    if (!transmits)
+      Note(Kind::NoEffect, "KHR_materials_transmission", "transmissionFactor 0: no transmission");
   }
   if (vol && !transmits)
-    Note(Kind::NoEffect, "KHR_materials_volume", "no effect without transmission (transmissionFactor > 0)");
+    Note(Kind::NoEffect, "KHR_materials_volume",
+         "no effect without transmission (transmissionFactor > 0)");
   double dispersion = 0;
   if (disp) {
     dispersion = r_.NumberIn(*disp, ExtAt("KHR_materials_dispersion"), "dispersion", 0, 0,
                              std::numeric_limits<double>::infinity());
     if (!transmits)
-      Note(Kind::NoEffect, "KHR_materials_dispersion", "no effect without transmission (transmissionFactor > 0)");
+      Note(Kind::NoEffect, "KHR_materials_dispersion",
+           "no effect without transmission (transmissionFactor > 0)");
     else if (dispersion == 0)
       Note(Kind::NoEffect, "KHR_materials_dispersion", "dispersion 0: no dispersion");
   }
@@ -175,10 +187,13 @@ void MaterialReader::Read() {
     if (fullyMetallic) {
       for (const char* name : {"KHR_materials_ior", "KHR_materials_transmission"})
         if (Ext(name))
-          Note(Kind::NoEffect, name, "the material is fully metallic (metallicFactor 1, no texture): no dielectric layer");
+          Note(
+              Kind::NoEffect, name,
+              "the material is fully metallic (metallicFactor 1, no texture): no dielectric layer");
     } else if (ior == 0 && !iorAnimated) {
       Note(Kind::NoTable, "KHR_materials_ior",
-           "ior 0 (specular-glossiness compatibility): F = 1, the dielectric albedo is ggx-albedo's");
+           "ior 0 (specular-glossiness compatibility): F = 1, the dielectric albedo is "
+           "ggx-albedo's");
     } else {
       ValueRange eta = ValueRange::Exactly(ior);
       if (iorAnimated) {
@@ -201,10 +216,12 @@ void MaterialReader::Read() {
 
   if (Ext("KHR_materials_specular")) {
     if (fullyMetallic)
-      Note(Kind::NoEffect, "KHR_materials_specular", "the material is fully metallic: no dielectric layer");
+      Note(Kind::NoEffect, "KHR_materials_specular",
+           "the material is fully metallic: no dielectric layer");
     else
       Note(Kind::NoTable, "KHR_materials_specular",
-           "scales the dielectric Fresnel (F0 x specularColor, F90 x specular): F0 A + F90 B from ggx-dfg");
+           "scales the dielectric Fresnel (F0 x specularColor, F90 x specular): F0 A + F90 B from "
+           "ggx-dfg");
   }
   if (const Json* sh = Ext("KHR_materials_sheen")) {
     std::string at = ExtAt("KHR_materials_sheen");
@@ -218,11 +235,13 @@ void MaterialReader::Read() {
       Note(Kind::NoEffect, "KHR_materials_sheen", "sheenColorFactor 0: no sheen");
     else
       Note(Kind::NotYet, "KHR_materials_sheen",
-           "Charlie sheen (Estevez-Kulla 2017) needs E(mu, sheenRoughness) for albedo scaling; kiln has no Charlie model yet");
+           "Charlie sheen (Estevez-Kulla 2017) needs E(mu, sheenRoughness) for albedo scaling; "
+           "kiln has no Charlie model yet");
   }
   if (const Json* ir = Ext("KHR_materials_iridescence")) {
     std::string what;
-    ValueRange f = Factor(*ir, ExtAt("KHR_materials_iridescence"), "iridescenceFactor", 0, "iridescenceTexture", what);
+    ValueRange f = Factor(*ir, ExtAt("KHR_materials_iridescence"), "iridescenceFactor", 0,
+                          "iridescenceTexture", what);
     if (!f.whole && f.hi == 0)
       Note(Kind::NoEffect, "KHR_materials_iridescence", "iridescenceFactor 0: no thin film");
     else
@@ -232,7 +251,8 @@ void MaterialReader::Read() {
   if (const Json* an = Ext("KHR_materials_anisotropy")) {
     std::string at = ExtAt("KHR_materials_anisotropy");
     double s = r_.NumberIn(*an, at, "anisotropyStrength", 0, 0, 1);
-    if (s == 0 && !Animated(at, "anisotropyStrength") && !JsonReader::Find(*an, "anisotropyTexture"))
+    if (s == 0 && !Animated(at, "anisotropyStrength") &&
+        !JsonReader::Find(*an, "anisotropyTexture"))
       Note(Kind::NoEffect, "KHR_materials_anisotropy", "anisotropyStrength 0: isotropic");
     else
       Note(Kind::NotYet, "KHR_materials_anisotropy",
@@ -242,8 +262,8 @@ void MaterialReader::Read() {
     Note(Kind::NoTable, "KHR_materials_emissive_strength", "emission is not a BRDF");
   if (const Json* dt = Ext("KHR_materials_diffuse_transmission")) {
     std::string what;
-    ValueRange f = Factor(*dt, ExtAt("KHR_materials_diffuse_transmission"), "diffuseTransmissionFactor", 0,
-                          "diffuseTransmissionTexture", what);
+    ValueRange f = Factor(*dt, ExtAt("KHR_materials_diffuse_transmission"),
+                          "diffuseTransmissionFactor", 0, "diffuseTransmissionTexture", what);
     if (!f.whole && f.hi == 0)
       Note(Kind::NoEffect, "KHR_materials_diffuse_transmission", "diffuseTransmissionFactor 0");
     else
@@ -255,7 +275,8 @@ void MaterialReader::Read() {
 }  // namespace
 
 void AddGltfMaterial(const Json& material, const std::string& at, const std::string& label,
-                     const std::set<std::string>& animated, const JsonReader& reader, Scene& scene) {
+                     const std::set<std::string>& animated, const JsonReader& reader,
+                     Scene& scene) {
   MaterialReader(material, at, label, animated, reader, scene).Read();
 }
 

@@ -28,7 +28,8 @@ std::string Join(const std::vector<std::string>& items) {
 }
 
 /// One parameter value: a number, [lo, hi] or "any", inside the model's range.
-ValueRange ReadValue(const Json& v, const std::string& at, const ParamInfo& p, const JsonReader& r) {
+ValueRange ReadValue(const Json& v, const std::string& at, const ParamInfo& p,
+                     const JsonReader& r) {
   auto inRange = [&](double x, const std::string& where) {
     if (x < p.lo || x > p.hi)
       r.Fail(where, p.name + " " + ExactNumber(x) + " is outside [" + ExactNumber(p.lo) + ", " +
@@ -38,10 +39,12 @@ ValueRange ReadValue(const Json& v, const std::string& at, const ParamInfo& p, c
   if (v.is_number()) return ValueRange::Exactly(inRange(r.Number(v, at), at));
   if (v.is_string() && v.get<std::string>() == "any") return ValueRange::Whole();
   if (v.is_array()) {
-    if (v.size() != 2) r.Fail(at, "an interval is [lo, hi], got " + std::to_string(v.size()) + " values");
+    if (v.size() != 2)
+      r.Fail(at, "an interval is [lo, hi], got " + std::to_string(v.size()) + " values");
     double lo = inRange(r.Number(v[0], PointerChild(at, 0)), PointerChild(at, 0));
     double hi = inRange(r.Number(v[1], PointerChild(at, 1)), PointerChild(at, 1));
-    if (lo > hi) r.Fail(at, "interval [" + ExactNumber(lo) + ", " + ExactNumber(hi) + "] has lo > hi");
+    if (lo > hi)
+      r.Fail(at, "interval [" + ExactNumber(lo) + ", " + ExactNumber(hi) + "] has lo > hi");
     return ValueRange::Between(lo, hi);
   }
   r.Fail(at, "expected a number, an interval [lo, hi] or \"any\", got " + JsonKind(v));
@@ -73,9 +76,11 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
         std::string name = r.String((*it)[j], jat);
         const QuantityInfo* q = FindQuantity(name);
         if (!q || !q->sceneKind)
-          r.Fail(jat, "unknown table kind '" + name + "' (one of: " + Join(SceneTableKinds()) + ")");
+          r.Fail(jat,
+                 "unknown table kind '" + name + "' (one of: " + Join(SceneTableKinds()) + ")");
         std::string problem = KindProblem(*info, q->id);
-        if (!problem.empty()) r.Fail(jat, "model '" + id + "' has no " + name + " table: " + problem);
+        if (!problem.empty())
+          r.Fail(jat, "model '" + id + "' has no " + name + " table: " + problem);
         if (std::find(kinds.begin(), kinds.end(), q->id) == kinds.end()) kinds.push_back(q->id);
       }
       continue;
@@ -99,11 +104,13 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
       scene.notes.push_back({Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly", label});
     } else if (info->specular()) {
       kinds = {Quantity::Dfg, Quantity::Albedo, Quantity::AlbedoAvg};
-      if (conductor) kinds.push_back(Quantity::FresnelConductor);
+      if (conductor)
+        kinds.push_back(Quantity::FresnelConductor);
       else if (values.count("eta") && KindProblem(*info, Quantity::FresnelAlbedo).empty())
         kinds.push_back(Quantity::FresnelAlbedo);
       else if (values.count("eta"))
-        scene.notes.push_back({Kind::NotYet, "eta", "exact-Fresnel albedo tables are baked for ggx only", label});
+        scene.notes.push_back(
+            {Kind::NotYet, "eta", "exact-Fresnel albedo tables are baked for ggx only", label});
     } else {
       kinds = {Quantity::Albedo, Quantity::AlbedoAvg};
     }
@@ -113,17 +120,27 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
 
   // Parameters with no table axis.
   if (values.count("rho"))
-    scene.notes.push_back({Kind::NoTable, "rho", "tables are baked at rho = 1: scale by rho (rho^2 channel where the model has one)", label});
+    scene.notes.push_back(
+        {Kind::NoTable, "rho",
+         "tables are baked at rho = 1: scale by rho (rho^2 channel where the model has one)",
+         label});
   if (values.count("f0")) {
     if (info->specular())
-      scene.notes.push_back({Kind::NoTable, "f0", "Schlick F0 is applied at run time: F0 A + B from the dfg table", label});
+      scene.notes.push_back({Kind::NoTable, "f0",
+                             "Schlick F0 is applied at run time: F0 A + B from the dfg table",
+                             label});
     else
-      scene.notes.push_back({Kind::NotYet, "f0", "the " + id + " tables are baked at its default f0 (no f0 axis yet)", label});
+      scene.notes.push_back({Kind::NotYet, "f0",
+                             "the " + id + " tables are baked at its default f0 (no f0 axis yet)",
+                             label});
   }
   if (values.count("rs"))
-    scene.notes.push_back({Kind::NotYet, "rs", "the " + id + " tables are baked at its default rs (no rs axis yet)", label});
+    scene.notes.push_back({Kind::NotYet, "rs",
+                           "the " + id + " tables are baked at its default rs (no rs axis yet)",
+                           label});
   if (values.count("nu") || values.count("nv"))
-    scene.notes.push_back({Kind::NotYet, "nu, nv", "tables use n_u = n_v from roughness (no anisotropy axis yet)", label});
+    scene.notes.push_back({Kind::NotYet, "nu, nv",
+                           "tables use n_u = n_v from roughness (no anisotropy axis yet)", label});
 
   auto value = [&](const std::string& name) {
     auto found = values.find(name);
@@ -163,10 +180,12 @@ Scene ReadKilnScene(const Json& doc, const std::string& path) {
   if (!version->is_number_integer() && !version->is_number_unsigned())
     r.Fail("/kiln_scene", "expected the integer 1, got " + JsonKind(*version));
   if (version->get<long long>() != 1)
-    r.Fail("/kiln_scene", "version " + std::to_string(version->get<long long>()) + ", kiln reads version 1");
+    r.Fail("/kiln_scene",
+           "version " + std::to_string(version->get<long long>()) + ", kiln reads version 1");
   for (auto it = doc.begin(); it != doc.end(); ++it)
     if (it.key() != "kiln_scene" && it.key() != "materials" && it.key() != "description")
-      r.Fail(PointerChild("", it.key()), "unknown key '" + it.key() + "' (keys: kiln_scene, materials, description)");
+      r.Fail(PointerChild("", it.key()),
+             "unknown key '" + it.key() + "' (keys: kiln_scene, materials, description)");
   const Json* materials = JsonReader::Find(doc, "materials");
   if (!materials) r.Fail("/materials", "missing (an array of materials)");
   r.Array(*materials, "/materials");

@@ -42,7 +42,8 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
     if (a.name == "roughness" && !HasRoughness(spec.model)) continue;  // a constant axis
     ValueRange v = found->second;
     if (v.lo == a.lo && v.hi == a.hi) continue;
-    std::string tag = NameTag(a.name) + ShortNumber(v.lo) + (v.Single() ? "" : "-" + ShortNumber(v.hi));
+    std::string tag =
+        NameTag(a.name) + ShortNumber(v.lo) + (v.Single() ? "" : "-" + ShortNumber(v.hi));
     if (v.Single())
       cuts.push_back({i, Describe(spec.quantity).readsParams, v.lo, SliceAxis(a, v.lo), tag});
     else
@@ -100,8 +101,9 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
   };
   std::vector<Group> groups;
   for (const TableNeed& need : scene.needs) {
-    auto g = std::find_if(groups.begin(), groups.end(),
-                          [&](const Group& x) { return x.kind == need.kind && x.model == need.model; });
+    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
+      return x.kind == need.kind && x.model == need.model;
+    });
     if (g == groups.end()) {
       groups.push_back({need.kind, need.model, WholeTableSpec(need.kind, need.model, opt), {}, {}});
       g = groups.end() - 1;
@@ -109,8 +111,9 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
     for (const AxisSpec& a : g->whole.axes) {
       auto found = need.ranges.find(a.name);
       // An axis the need does not bound spans the whole axis.
-      ValueRange v = found == need.ranges.end() || found->second.whole ? ValueRange::Between(a.lo, a.hi)
-                                                                       : found->second;
+      ValueRange v = found == need.ranges.end() || found->second.whole
+                         ? ValueRange::Between(a.lo, a.hi)
+                         : found->second;
       if (a.name == "mu" && found == need.ranges.end()) continue;
       auto have = g->ranges.find(a.name);
       g->ranges[a.name] = have == g->ranges.end() ? v : have->second.Union(v);
@@ -135,12 +138,15 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
       plan.notes.push_back({n.kind, n.topic, n.why, {}});
       p = plan.notes.end() - 1;
     }
-    if (!n.material.empty() && std::find(p->materials.begin(), p->materials.end(), n.material) == p->materials.end())
+    if (!n.material.empty() &&
+        std::find(p->materials.begin(), p->materials.end(), n.material) == p->materials.end())
       p->materials.push_back(n.material);
   }
   return plan;
 }
 
-Plan PlanSceneFile(const std::string& path, const PlanOptions& opt) { return PlanScene(ReadScene(path), opt); }
+Plan PlanSceneFile(const std::string& path, const PlanOptions& opt) {
+  return PlanScene(ReadScene(path), opt);
+}
 
 }  // namespace kiln

@@ -10,11 +10,16 @@ namespace {
 
 const char* NoteHeading(SceneNote::Kind kind) {
   switch (kind) {
-    case SceneNote::Kind::NoTable: return "needs no table";
-    case SceneNote::Kind::NoEffect: return "present but without effect";
-    case SceneNote::Kind::NotYet: return "would need a table kiln cannot bake yet";
-    case SceneNote::Kind::Unknown: return "unknown to kiln (ignored)";
-    case SceneNote::Kind::Unused: return "unused";
+    case SceneNote::Kind::NoTable:
+      return "needs no table";
+    case SceneNote::Kind::NoEffect:
+      return "present but without effect";
+    case SceneNote::Kind::NotYet:
+      return "would need a table kiln cannot bake yet";
+    case SceneNote::Kind::Unknown:
+      return "unknown to kiln (ignored)";
+    case SceneNote::Kind::Unused:
+      return "unused";
   }
   return "";
 }
@@ -36,9 +41,12 @@ TableState StateOf(const TableSpec& spec, const std::string& dir) {
 
 const char* StateName(TableState state) {
   switch (state) {
-    case TableState::UpToDate: return "up to date";
-    case TableState::Stale: return "stale";
-    case TableState::Missing: return "missing";
+    case TableState::UpToDate:
+      return "up to date";
+    case TableState::Stale:
+      return "stale";
+    case TableState::Missing:
+      return "missing";
   }
   return "";
 }
@@ -60,16 +68,18 @@ std::string FormatPlan(const Plan& plan, const std::string& dir) {
     texels += t.spec.TexelCount();
     upToDate += states.back() == TableState::UpToDate;
   }
-  out += "scene " + plan.scenePath + " (" + plan.format + ", " + std::to_string(plan.materialCount) +
-         " material" + (plan.materialCount == 1 ? "" : "s") + "): " + std::to_string(plan.tables.size()) +
-         " table" + (plan.tables.size() == 1 ? "" : "s") + ", " + std::to_string(texels) + " texels; " +
+  out += "scene " + plan.scenePath + " (" + plan.format + ", " +
+         std::to_string(plan.materialCount) + " material" + (plan.materialCount == 1 ? "" : "s") +
+         "): " + std::to_string(plan.tables.size()) + " table" +
+         (plan.tables.size() == 1 ? "" : "s") + ", " + std::to_string(texels) + " texels; " +
          std::to_string(upToDate) + " up to date in " + dir + "\n";
   for (size_t i = 0; i < plan.tables.size(); ++i) {
     const PlannedTable& t = plan.tables[i];
     const TableSpec& s = t.spec;
     out += "\n" + s.name + "  [" + StateName(states[i]) + "]\n";
     const QuantityInfo& q = Describe(s.quantity);
-    out += "  " + std::string(q.name) + " (" + Join(s.channels, ", ") + "): " + q.description + "\n";
+    out +=
+        "  " + std::string(q.name) + " (" + Join(s.channels, ", ") + "): " + q.description + "\n";
     out += "  axes: " + AxesText(s) + " = " + std::to_string(s.TexelCount()) + " texels, " +
            std::to_string(s.TexelCount() * s.channels.size() * 4) + " bytes as float32\n";
     std::vector<std::string> used;
@@ -83,8 +93,9 @@ std::string FormatPlan(const Plan& plan, const std::string& dir) {
     out += "  needed by:\n";
     for (const std::string& r : t.reasons) out += "    " + r + "\n";
   }
-  for (SceneNote::Kind kind : {SceneNote::Kind::NoTable, SceneNote::Kind::NoEffect, SceneNote::Kind::NotYet,
-                               SceneNote::Kind::Unknown, SceneNote::Kind::Unused}) {
+  for (SceneNote::Kind kind :
+       {SceneNote::Kind::NoTable, SceneNote::Kind::NoEffect, SceneNote::Kind::NotYet,
+        SceneNote::Kind::Unknown, SceneNote::Kind::Unused}) {
     bool heading = false;
     for (const PlanNote& n : plan.notes) {
       if (n.kind != kind) continue;

@@ -27,7 +27,8 @@ Scene ReadScene(const std::string& path) {
   Json doc = ParseSceneJson(bytes, path);
   if (doc.is_object() && doc.contains("kiln_scene")) return ReadKilnScene(doc, path);
   if (doc.is_object() && !doc.contains("asset"))
-    throw SceneError(path, "/", "neither a glTF 2.0 asset (no \"asset\") nor a kiln scene (no \"kiln_scene\")");
+    throw SceneError(
+        path, "/", "neither a glTF 2.0 asset (no \"asset\") nor a kiln scene (no \"kiln_scene\")");
   return ReadGltfDocument(doc, path, "glTF");
 }
 

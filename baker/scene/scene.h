@@ -49,16 +49,17 @@ struct SceneNote {
     Unused,    ///< a material no mesh primitive uses
   };
   Kind kind = Kind::NoTable;
-  std::string topic;     ///< "Lambert diffuse", "KHR_materials_sheen", ...
-  std::string why;       ///< one line
-  std::string material;  ///< the material it concerns, e.g. "'Velvet' (/materials/2)"; "" for the file
+  std::string topic;  ///< "Lambert diffuse", "KHR_materials_sheen", ...
+  std::string why;    ///< one line
+  std::string
+      material;  ///< the material it concerns, e.g. "'Velvet' (/materials/2)"; "" for the file
 };
 
 /// What a scene file asks of kiln.
 struct Scene {
   std::string path;
-  std::string format;      ///< "glTF", "glb" or "kiln scene"
-  int materialCount = 0;   ///< materials the planner looked at (used ones; glTF default included)
+  std::string format;     ///< "glTF", "glb" or "kiln scene"
+  int materialCount = 0;  ///< materials the planner looked at (used ones; glTF default included)
   std::vector<TableNeed> needs;
   std::vector<SceneNote> notes;
   std::vector<std::string> warnings;  ///< e.g. an unknown extension in extensionsRequired

@@ -12,7 +12,8 @@ class SceneError : public std::runtime_error {
  public:
   SceneError(const std::string& file, const std::string& place, const std::string& problem)
       : std::runtime_error(file + ": " + (place.empty() ? "" : place + ": ") + problem),
-        file_(file), place_(place) {}
+        file_(file),
+        place_(place) {}
   const std::string& File() const { return file_; }
   const std::string& Place() const { return place_; }
 

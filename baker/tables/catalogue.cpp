@@ -28,10 +28,20 @@ const std::vector<std::string>& CatalogueMicrofacetModels() {
 }
 
 const std::vector<std::string>& CatalogueDiffuseModels() {
-  static const std::vector<std::string> models = {
-      "lambert", "burley", "frostbite", "oren-nayar", "oren-nayar-qualitative",
-      "oren-nayar-qualitative-ir", "fujii", "fujii-normalized", "gotanda-fresnel", "gotanda-ggx",
-      "hammon", "shirley", "ashikhmin-shirley-diffuse", "triace-lambert"};
+  static const std::vector<std::string> models = {"lambert",
+                                                  "burley",
+                                                  "frostbite",
+                                                  "oren-nayar",
+                                                  "oren-nayar-qualitative",
+                                                  "oren-nayar-qualitative-ir",
+                                                  "fujii",
+                                                  "fujii-normalized",
+                                                  "gotanda-fresnel",
+                                                  "gotanda-ggx",
+                                                  "hammon",
+                                                  "shirley",
+                                                  "ashikhmin-shirley-diffuse",
+                                                  "triace-lambert"};
   return models;
 }
 

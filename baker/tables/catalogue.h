@@ -9,7 +9,7 @@
 namespace kiln {
 
 struct CatalogueOptions {
-  int size = 0;              ///< 0: each table's default; otherwise every axis gets this size
+  int size = 0;                ///< 0: each table's default; otherwise every axis gets this size
   double brdfRoughness = 0.5;  ///< roughness of the full-BRDF tables (*-brdf)
 };
 

@@ -80,11 +80,14 @@ TableSpec SpecFromTable(const Table& table) {
   s.name = table.name;
   s.model = table.model;
   const QuantityInfo* q = FindQuantity(table.quantity);
-  if (!q) throw std::invalid_argument("table '" + table.name + "': unknown quantity '" + table.quantity + "'");
+  if (!q)
+    throw std::invalid_argument("table '" + table.name + "': unknown quantity '" + table.quantity +
+                                "'");
   s.quantity = q->id;
   s.channels = table.channels;
   s.meanings = table.channelMeanings;
-  for (const TableAxis& a : table.axes) s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp});
+  for (const TableAxis& a : table.axes)
+    s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp});
   try {
     for (const std::string& kv : splitList(table.params, ';')) {
       size_t eq = kv.find('=');
@@ -93,7 +96,8 @@ TableSpec SpecFromTable(const Table& table) {
       s.params[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
     }
   } catch (const std::exception& e) {
-    throw std::invalid_argument("cannot read kiln.params '" + table.params + "' (" + e.what() + ")");
+    throw std::invalid_argument("cannot read kiln.params '" + table.params + "' (" + e.what() +
+                                ")");
   }
   s.tol = table.tolerance;
   return s;

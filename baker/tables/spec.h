@@ -23,13 +23,13 @@ struct AxisSpec {
 /// What a table holds: one table kind (quantity; baker/quantities/ describes each, with its
 /// axes and channels) of one model over its axes.
 struct TableSpec {
-  std::string name;      ///< file stem, e.g. "ggx-dfg"
-  std::string model;     ///< model id, or "none"
+  std::string name;                   ///< file stem, e.g. "ggx-dfg"
+  std::string model;                  ///< model id, or "none"
   Quantity quantity = Quantity::Dfg;  ///< written to files as QuantityName(quantity)
   std::vector<std::string> channels, meanings;
   std::vector<AxisSpec> axes;
   std::map<std::string, double> params;  ///< fixed model parameters (brdf: roughness)
-  double tol = 1e-8;     ///< absolute integration tolerance per texel
+  double tol = 1e-8;                     ///< absolute integration tolerance per texel
 
   /// "key=value;..." of params, %.17g.
   std::string ParamsText() const;

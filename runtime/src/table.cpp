@@ -14,131 +14,132 @@ namespace {
 constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 30;
 /// A number printed with enough digits to tell close bounds apart.
 std::string number(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.9g", value);
-    return text;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", value);
+  return text;
 }
 
 }  // namespace
 
 std::string axisProblem(const Axis& axis) {
-    if (axis.size < 1) return "size is " + std::to_string(axis.size) + ", must be >= 1";
-    if (!std::isfinite(axis.lo) || !std::isfinite(axis.hi))
-        return "bounds lo " + number(axis.lo) + ", hi " + number(axis.hi) + " are not finite";
-    if (!(axis.lo < axis.hi)) return "lo " + number(axis.lo) + " >= hi " + number(axis.hi);
-    if (axis.warp == Warp::Log && !(axis.lo > 0.0))
-        return "lo " + number(axis.lo) + " <= 0 with the log warp";
-    Warp parsed;
-    if (!warpFromName(warpName(axis.warp), parsed)) return "unknown warp";
-    return std::string();
+  if (axis.size < 1) return "size is " + std::to_string(axis.size) + ", must be >= 1";
+  if (!std::isfinite(axis.lo) || !std::isfinite(axis.hi))
+    return "bounds lo " + number(axis.lo) + ", hi " + number(axis.hi) + " are not finite";
+  if (!(axis.lo < axis.hi)) return "lo " + number(axis.lo) + " >= hi " + number(axis.hi);
+  if (axis.warp == Warp::Log && !(axis.lo > 0.0))
+    return "lo " + number(axis.lo) + " <= 0 with the log warp";
+  Warp parsed;
+  if (!warpFromName(warpName(axis.warp), parsed)) return "unknown warp";
+  return std::string();
 }
 
 std::vector<std::string> splitList(const std::string& text, char separator) {
-    std::vector<std::string> items;
-    if (text.empty()) return items;
-    std::string::size_type start = 0;
-    for (;;) {
-        const std::string::size_type end = text.find(separator, start);
-        if (end == std::string::npos) {
-            items.push_back(text.substr(start));
-            return items;
-        }
-        items.push_back(text.substr(start, end - start));
-        start = end + 1;
+  std::vector<std::string> items;
+  if (text.empty()) return items;
+  std::string::size_type start = 0;
+  for (;;) {
+    const std::string::size_type end = text.find(separator, start);
+    if (end == std::string::npos) {
+      items.push_back(text.substr(start));
+      return items;
     }
+    items.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
 }
 
 std::string joinList(const std::vector<std::string>& items, char separator) {
-    std::string text;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) text += separator;
-        text += items[i];
-    }
-    return text;
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) text += separator;
+    text += items[i];
+  }
+  return text;
 }
 
 bool validateTable(const Table& table, std::string& problem) {
-    const int dims = table.dims();
-    if (dims < 1 || dims > 3) {
-        problem = "dims is " + std::to_string(dims) + ", must be 1, 2 or 3";
-        return false;
+  const int dims = table.dims();
+  if (dims < 1 || dims > 3) {
+    problem = "dims is " + std::to_string(dims) + ", must be 1, 2 or 3";
+    return false;
+  }
+  std::uint64_t nodes = 1;
+  for (int d = 0; d < dims; ++d) {
+    const TableAxis& a = table.axes[static_cast<std::size_t>(d)];
+    const std::string label = "axis " + std::to_string(d) + " ('" + a.name + "')";
+    if (a.name.empty()) {
+      problem = "axis " + std::to_string(d) + " has no name";
+      return false;
     }
-    std::uint64_t nodes = 1;
-    for (int d = 0; d < dims; ++d) {
-        const TableAxis& a = table.axes[static_cast<std::size_t>(d)];
-        const std::string label = "axis " + std::to_string(d) + " ('" + a.name + "')";
-        if (a.name.empty()) {
-            problem = "axis " + std::to_string(d) + " has no name";
-            return false;
-        }
-        const std::string axisIssue = axisProblem(a.axis);
-        if (!axisIssue.empty()) {
-            problem = label + ": " + axisIssue;
-            return false;
-        }
-        if (a.axis.warp == Warp::Root4Layer && (d != 0 || dims < 2)) {
-            problem = label + ": the root4-layer warp couples axis 0 to axis 1; it is allowed "
-                      "only on axis 0 of a table with two or more axes";
-            return false;
-        }
-        nodes *= static_cast<std::uint64_t>(a.axis.size);
-        if (nodes > kMaxValues) {
-            problem = "the grid is too large (more than 2^30 nodes)";
-            return false;
-        }
+    const std::string axisIssue = axisProblem(a.axis);
+    if (!axisIssue.empty()) {
+      problem = label + ": " + axisIssue;
+      return false;
     }
-    if (table.channels.empty()) {
-        problem = "the table has no channels";
-        return false;
+    if (a.axis.warp == Warp::Root4Layer && (d != 0 || dims < 2)) {
+      problem = label +
+                ": the root4-layer warp couples axis 0 to axis 1; it is allowed "
+                "only on axis 0 of a table with two or more axes";
+      return false;
     }
-    std::set<std::string> seen;
-    for (const std::string& c : table.channels) {
-        if (c.empty() || c.find(',') != std::string::npos) {
-            problem = "channel name '" + c + "' is empty or contains ','";
-            return false;
-        }
-        if (!seen.insert(c).second) {
-            problem = "channel name '" + c + "' appears twice";
-            return false;
-        }
+    nodes *= static_cast<std::uint64_t>(a.axis.size);
+    if (nodes > kMaxValues) {
+      problem = "the grid is too large (more than 2^30 nodes)";
+      return false;
     }
-    if (!table.channelMeanings.empty() && table.channelMeanings.size() != table.channels.size()) {
-        problem = std::to_string(table.channelMeanings.size()) + " channel meanings for " +
-                  std::to_string(table.channels.size()) + " channels";
-        return false;
+  }
+  if (table.channels.empty()) {
+    problem = "the table has no channels";
+    return false;
+  }
+  std::set<std::string> seen;
+  for (const std::string& c : table.channels) {
+    if (c.empty() || c.find(',') != std::string::npos) {
+      problem = "channel name '" + c + "' is empty or contains ','";
+      return false;
     }
-    for (const std::string& m : table.channelMeanings) {
-        if (m.find(';') != std::string::npos) {
-            problem = "channel meaning '" + m + "' contains ';'";
-            return false;
-        }
+    if (!seen.insert(c).second) {
+      problem = "channel name '" + c + "' appears twice";
+      return false;
     }
-    const std::uint64_t expected = nodes * table.channels.size();
-    if (expected > kMaxValues) {
-        problem = "the table is too large (more than 2^30 values)";
-        return false;
+  }
+  if (!table.channelMeanings.empty() && table.channelMeanings.size() != table.channels.size()) {
+    problem = std::to_string(table.channelMeanings.size()) + " channel meanings for " +
+              std::to_string(table.channels.size()) + " channels";
+    return false;
+  }
+  for (const std::string& m : table.channelMeanings) {
+    if (m.find(';') != std::string::npos) {
+      problem = "channel meaning '" + m + "' contains ';'";
+      return false;
     }
-    if (table.data.size() != expected) {
-        problem = "data holds " + std::to_string(table.data.size()) + " values, the grid needs " +
-                  std::to_string(expected);
-        return false;
+  }
+  const std::uint64_t expected = nodes * table.channels.size();
+  if (expected > kMaxValues) {
+    problem = "the table is too large (more than 2^30 values)";
+    return false;
+  }
+  if (table.data.size() != expected) {
+    problem = "data holds " + std::to_string(table.data.size()) + " values, the grid needs " +
+              std::to_string(expected);
+    return false;
+  }
+  const LutView view = table.view();
+  for (std::size_t k = 0; k < table.data.size(); ++k) {
+    if (!std::isfinite(table.data[k])) {
+      const std::size_t channel = k % table.channels.size();
+      std::size_t node = k / table.channels.size();
+      const std::size_t i0 = node % static_cast<std::size_t>(view.size(0));
+      node /= static_cast<std::size_t>(view.size(0));
+      const std::size_t i1 = node % static_cast<std::size_t>(view.size(1));
+      const std::size_t i2 = node / static_cast<std::size_t>(view.size(1));
+      problem = std::string(std::isnan(table.data[k]) ? "NaN" : "infinite") + " texel at node (" +
+                std::to_string(i0) + ", " + std::to_string(i1) + ", " + std::to_string(i2) +
+                ") of channel '" + table.channels[channel] + "'";
+      return false;
     }
-    const LutView view = table.view();
-    for (std::size_t k = 0; k < table.data.size(); ++k) {
-        if (!std::isfinite(table.data[k])) {
-            const std::size_t channel = k % table.channels.size();
-            std::size_t node = k / table.channels.size();
-            const std::size_t i0 = node % static_cast<std::size_t>(view.size(0));
-            node /= static_cast<std::size_t>(view.size(0));
-            const std::size_t i1 = node % static_cast<std::size_t>(view.size(1));
-            const std::size_t i2 = node / static_cast<std::size_t>(view.size(1));
-            problem = std::string(std::isnan(table.data[k]) ? "NaN" : "infinite") +
-                      " texel at node (" + std::to_string(i0) + ", " + std::to_string(i1) +
-                      ", " + std::to_string(i2) + ") of channel '" + table.channels[channel] + "'";
-            return false;
-        }
-    }
-    return true;
+  }
+  return true;
 }
 
 }  // namespace kiln

@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   for (int i = 2; i < argc && i < 5; ++i) x[i - 2] = std::strtod(argv[i], nullptr);
   float out[8] = {};
   lut.sample(x, out);
-  for (int c = 0; c < lut.channels && c < 8; ++c) std::printf(c ? " %.17g" : "%.17g", double(out[c]));
+  for (int c = 0; c < lut.channels && c < 8; ++c)
+    std::printf(c ? " %.17g" : "%.17g", double(out[c]));
   std::printf("\n");
   return 0;
 }

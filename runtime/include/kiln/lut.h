@@ -44,32 +44,39 @@ enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle };
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log" or "root4".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
-    switch (warp) {
-        case Warp::Linear: return "linear";
-        case Warp::Sqrt: return "sqrt";
-        case Warp::Square: return "square";
-        case Warp::Log: return "log";
-        case Warp::Root4: return "root4";
-        case Warp::Root4Layer: return "root4-layer";
-        case Warp::Angle: return "angle";
-    }
-    return "unknown";
+  switch (warp) {
+    case Warp::Linear:
+      return "linear";
+    case Warp::Sqrt:
+      return "sqrt";
+    case Warp::Square:
+      return "square";
+    case Warp::Log:
+      return "log";
+    case Warp::Root4:
+      return "root4";
+    case Warp::Root4Layer:
+      return "root4-layer";
+    case Warp::Angle:
+      return "angle";
+  }
+  return "unknown";
 }
 
 /// Parses a warp name as written by warpName (exact, case-sensitive match).
 /// On success stores the warp in `warp` and returns true; otherwise leaves
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
-    if (name == nullptr) return false;
-    const Warp all[] = {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4,
-                        Warp::Root4Layer, Warp::Angle};
-    for (Warp candidate : all) {
-        if (std::strcmp(name, warpName(candidate)) == 0) {
-            warp = candidate;
-            return true;
-        }
+  if (name == nullptr) return false;
+  const Warp all[] = {Warp::Linear, Warp::Sqrt,       Warp::Square, Warp::Log,
+                      Warp::Root4,  Warp::Root4Layer, Warp::Angle};
+  for (Warp candidate : all) {
+    if (std::strcmp(name, warpName(candidate)) == 0) {
+      warp = candidate;
+      return true;
     }
-    return false;
+  }
+  return false;
 }
 
 /// Interpolation filter of LutView::sample.
@@ -87,9 +94,9 @@ constexpr double kPi = 3.14159265358979323846;
 /// The layer scale c = max(r^2, 1e-12) of the Root4Layer warp, from the value r
 /// of the axis it couples to (clamped to that axis; NaN maps to its lo).
 inline double layerScale(double lo, double hi, double r) noexcept {
-    const double rc = !(r > lo) ? lo : (!(r < hi) ? hi : r);
-    const double c = rc * rc;
-    return c > 1e-12 ? c : 1e-12;
+  const double rc = !(r > lo) ? lo : (!(r < hi) ? hi : r);
+  const double c = rc * rc;
+  return c > 1e-12 ? c : 1e-12;
 }
 
 /// One axis of a table: `size` nodes over [lo, hi] placed by `warp`.
@@ -98,118 +105,136 @@ inline double layerScale(double lo, double hi, double r) noexcept {
 /// Every mapping takes the layer scale c of the Root4Layer warp (layerScale() of
 /// the coupled axis' value); the other warps ignore it.
 struct Axis {
-    double lo = 0.0;
-    double hi = 1.0;
-    int size = 1;
-    Warp warp = Warp::Linear;
+  double lo = 0.0;
+  double hi = 1.0;
+  int size = 1;
+  Warp warp = Warp::Linear;
 
-    /// True when the axis satisfies the conditions above.
-    bool valid() const noexcept {
-        return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
-               (warp != Warp::Log || lo > 0.0);
+  /// True when the axis satisfies the conditions above.
+  bool valid() const noexcept {
+    return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
+           (warp != Warp::Log || lo > 0.0);
+  }
+
+  /// Position of node i: lo + (hi - lo) * w^-1(i / (N - 1)) (for the log warp
+  /// lo * (hi / lo)^(i / (N - 1))). Exactly lo at i = 0 and exactly hi at
+  /// i = N - 1; i is clamped to [0, N - 1]. An axis of size 1 has its single
+  /// node at lo.
+  double node(int i, double c = 1e-12) const noexcept {
+    if (size <= 1 || i <= 0) return lo;
+    if (i >= size - 1) return hi;
+    return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c);
+  }
+
+  /// The Root4Layer warp of y in [0, 1] (see Warp).
+  static double layerWarp(double y, double c) noexcept {
+    return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
+  }
+
+  /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
+  /// (clamp to edge); a NaN x maps to t = 0.
+  double warped(double x, double c = 1e-12) const noexcept {
+    if (!(x > lo)) return 0.0;  // also catches NaN
+    if (!(x < hi)) return 1.0;
+    double t = 0.0;
+    switch (warp) {
+      case Warp::Linear:
+        t = (x - lo) / (hi - lo);
+        break;
+      case Warp::Sqrt:
+        t = std::sqrt((x - lo) / (hi - lo));
+        break;
+      case Warp::Square: {
+        const double y = (x - lo) / (hi - lo);
+        t = y * y;
+        break;
+      }
+      case Warp::Log:
+        t = std::log(x / lo) / std::log(hi / lo);
+        break;
+      case Warp::Root4:
+        t = std::sqrt(std::sqrt((x - lo) / (hi - lo)));
+        break;
+      case Warp::Root4Layer:
+        t = layerWarp((x - lo) / (hi - lo), c);
+        break;
+      case Warp::Angle:
+        t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi);
+        break;
     }
+    if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
+    return t < 1.0 ? t : 1.0;
+  }
 
-    /// Position of node i: lo + (hi - lo) * w^-1(i / (N - 1)) (for the log warp
-    /// lo * (hi / lo)^(i / (N - 1))). Exactly lo at i = 0 and exactly hi at
-    /// i = N - 1; i is clamped to [0, N - 1]. An axis of size 1 has its single
-    /// node at lo.
-    double node(int i, double c = 1e-12) const noexcept {
-        if (size <= 1 || i <= 0) return lo;
-        if (i >= size - 1) return hi;
-        return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c);
-    }
-
-    /// The Root4Layer warp of y in [0, 1] (see Warp).
-    static double layerWarp(double y, double c) noexcept {
-        return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
-    }
-
-    /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
-    /// (clamp to edge); a NaN x maps to t = 0.
-    double warped(double x, double c = 1e-12) const noexcept {
-        if (!(x > lo)) return 0.0;  // also catches NaN
-        if (!(x < hi)) return 1.0;
-        double t = 0.0;
-        switch (warp) {
-            case Warp::Linear: t = (x - lo) / (hi - lo); break;
-            case Warp::Sqrt: t = std::sqrt((x - lo) / (hi - lo)); break;
-            case Warp::Square: {
-                const double y = (x - lo) / (hi - lo);
-                t = y * y;
-                break;
-            }
-            case Warp::Log: t = std::log(x / lo) / std::log(hi / lo); break;
-            case Warp::Root4: t = std::sqrt(std::sqrt((x - lo) / (hi - lo))); break;
-            case Warp::Root4Layer: t = layerWarp((x - lo) / (hi - lo), c); break;
-            case Warp::Angle: t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi); break;
+  /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
+  /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
+  /// form: safeguarded Newton to the last bits (deterministic).
+  double unwarped(double t, double c = 1e-12) const noexcept {
+    if (!(t > 0.0)) return lo;
+    if (!(t < 1.0)) return hi;
+    switch (warp) {
+      case Warp::Root4Layer: {
+        // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
+        // smooth with slope >= 1/2, safeguarded as rtsafe (Numerical Recipes 9.4): a
+        // bisection of the bracket [sa, sb] whenever a step would leave it or would not
+        // halve the step before, so it cannot cycle. Deterministic, to the last bits.
+        double sa = 0.0, sb = 1.0, s = t, step = 1.0, stepBefore = 1.0;
+        for (int k = 0; k < 200; ++k) {
+          const double s4 = (s * s) * (s * s);
+          const double r = 0.5 * (s + s4 * (1.0 + c) / (s4 + c)) - t;
+          if (r == 0.0) break;
+          (r < 0.0 ? sa : sb) = s;
+          const double q = (s4 + c) * (s4 + c);
+          const double slope = 0.5 * (1.0 + 4.0 * (1.0 + c) * c * (s * s * s) / q);
+          double next = s - r / slope;
+          stepBefore = step;
+          if (!(next > sa && next < sb) || std::fabs(2.0 * r) > std::fabs(stepBefore * slope)) {
+            step = 0.5 * (sb - sa);
+            next = sa + step;
+          } else {
+            step = r / slope;
+          }
+          const bool done = std::fabs(next - s) <= 1e-16 * next || !(sb > sa);
+          s = next;
+          if (done) break;
         }
-        if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
-        return t < 1.0 ? t : 1.0;
+        return lo + (hi - lo) * ((s * s) * (s * s));
+      }
+      case Warp::Linear:
+        return lo + (hi - lo) * t;
+      case Warp::Sqrt:
+        return lo + (hi - lo) * (t * t);
+      case Warp::Square:
+        return lo + (hi - lo) * std::sqrt(t);
+      case Warp::Log:
+        return lo * std::exp(t * std::log(hi / lo));
+      case Warp::Root4:
+        return lo + (hi - lo) * ((t * t) * (t * t));
+      case Warp::Angle:
+        return lo + (hi - lo) * std::sin(t * (kPi / 2.0));
     }
+    return lo;
+  }
 
-    /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
-    /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
-    /// form: safeguarded Newton to the last bits (deterministic).
-    double unwarped(double t, double c = 1e-12) const noexcept {
-        if (!(t > 0.0)) return lo;
-        if (!(t < 1.0)) return hi;
-        switch (warp) {
-            case Warp::Root4Layer: {
-                // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
-                // smooth with slope >= 1/2, safeguarded as rtsafe (Numerical Recipes 9.4): a
-                // bisection of the bracket [sa, sb] whenever a step would leave it or would not
-                // halve the step before, so it cannot cycle. Deterministic, to the last bits.
-                double sa = 0.0, sb = 1.0, s = t, step = 1.0, stepBefore = 1.0;
-                for (int k = 0; k < 200; ++k) {
-                    const double s4 = (s * s) * (s * s);
-                    const double r = 0.5 * (s + s4 * (1.0 + c) / (s4 + c)) - t;
-                    if (r == 0.0) break;
-                    (r < 0.0 ? sa : sb) = s;
-                    const double q = (s4 + c) * (s4 + c);
-                    const double slope = 0.5 * (1.0 + 4.0 * (1.0 + c) * c * (s * s * s) / q);
-                    double next = s - r / slope;
-                    stepBefore = step;
-                    if (!(next > sa && next < sb) || std::fabs(2.0 * r) > std::fabs(stepBefore * slope)) {
-                        step = 0.5 * (sb - sa);
-                        next = sa + step;
-                    } else {
-                        step = r / slope;
-                    }
-                    const bool done = std::fabs(next - s) <= 1e-16 * next || !(sb > sa);
-                    s = next;
-                    if (done) break;
-                }
-                return lo + (hi - lo) * ((s * s) * (s * s));
-            }
-            case Warp::Linear: return lo + (hi - lo) * t;
-            case Warp::Sqrt: return lo + (hi - lo) * (t * t);
-            case Warp::Square: return lo + (hi - lo) * std::sqrt(t);
-            case Warp::Log: return lo * std::exp(t * std::log(hi / lo));
-            case Warp::Root4: return lo + (hi - lo) * ((t * t) * (t * t));
-            case Warp::Angle: return lo + (hi - lo) * std::sin(t * (kPi / 2.0));
-        }
-        return lo;
-    }
+  /// Continuous node index s = t * (N - 1) in [0, N - 1] of a value x (see
+  /// warped() for clamping and NaN). A result within 1e-9 of an integer is
+  /// snapped onto it, so texel(node(i)) == i exactly despite the rounding of
+  /// the warp round trip, and a lookup at a node returns the stored value bit
+  /// for bit. Always 0 on an axis of size 1.
+  double texel(double x, double c = 1e-12) const noexcept {
+    if (size <= 1) return 0.0;
+    const double s = warped(x, c) * static_cast<double>(size - 1);
+    const double nearest = std::floor(s + 0.5);
+    return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
+  }
 
-    /// Continuous node index s = t * (N - 1) in [0, N - 1] of a value x (see
-    /// warped() for clamping and NaN). A result within 1e-9 of an integer is
-    /// snapped onto it, so texel(node(i)) == i exactly despite the rounding of
-    /// the warp round trip, and a lookup at a node returns the stored value bit
-    /// for bit. Always 0 on an axis of size 1.
-    double texel(double x, double c = 1e-12) const noexcept {
-        if (size <= 1) return 0.0;
-        const double s = warped(x, c) * static_cast<double>(size - 1);
-        const double nearest = std::floor(s + 0.5);
-        return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
-    }
-
-    /// Texture coordinate of x for hardware bilinear filtering of a texture of
-    /// `size` texels with texel centres at (i + 0.5) / size:
-    /// (0.5 + texel(x)) / size. Lies in [0.5 / N, 1 - 0.5 / N].
-    double gpuCoord(double x, double c = 1e-12) const noexcept {
-        const int n = size > 1 ? size : 1;
-        return (0.5 + texel(x, c)) / static_cast<double>(n);
-    }
+  /// Texture coordinate of x for hardware bilinear filtering of a texture of
+  /// `size` texels with texel centres at (i + 0.5) / size:
+  /// (0.5 + texel(x)) / size. Lies in [0.5 / N, 1 - 0.5 / N].
+  double gpuCoord(double x, double c = 1e-12) const noexcept {
+    const int n = size > 1 ? size : 1;
+    return (0.5 + texel(x, c)) / static_cast<double>(n);
+  }
 };
 
 /// A non-owning view of a table of `dims` (1..3) axes and `channels` float
@@ -220,163 +245,161 @@ struct Axis {
 /// a 1D table is size0 x 1). Axes at index >= dims are ignored (treated as a
 /// single node). The view is a literal type: it can be a constexpr value.
 struct LutView {
-    const float* data = nullptr;
-    int channels = 0;
-    int dims = 0;
-    Axis axis[3] = {};
+  const float* data = nullptr;
+  int channels = 0;
+  int dims = 0;
+  Axis axis[3] = {};
 
-    /// Number of nodes along axis d (1 for d >= dims).
-    int size(int d) const noexcept {
-        return d >= 0 && d < dims && d < 3 ? axis[d].size : 1;
+  /// Number of nodes along axis d (1 for d >= dims).
+  int size(int d) const noexcept { return d >= 0 && d < dims && d < 3 ? axis[d].size : 1; }
+
+  /// Number of floats the data array holds: size0 * size1 * size2 * channels.
+  std::size_t valueCount() const noexcept {
+    return static_cast<std::size_t>(size(0)) * static_cast<std::size_t>(size(1)) *
+           static_cast<std::size_t>(size(2)) *
+           static_cast<std::size_t>(channels > 0 ? channels : 0);
+  }
+
+  /// True when data is set, channels >= 1, dims is 1..3, every used axis is
+  /// valid(), and a Root4Layer warp sits only on axis 0 of a view of 2+ axes.
+  /// sample() and at() return zeros on an invalid view.
+  bool valid() const noexcept {
+    if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
+    for (int d = 0; d < dims; ++d) {
+      if (!axis[d].valid()) return false;
+      if (axis[d].warp == Warp::Root4Layer && (d != 0 || dims < 2)) return false;
     }
+    return true;
+  }
 
-    /// Number of floats the data array holds: size0 * size1 * size2 * channels.
-    std::size_t valueCount() const noexcept {
-        return static_cast<std::size_t>(size(0)) * static_cast<std::size_t>(size(1)) *
-               static_cast<std::size_t>(size(2)) *
-               static_cast<std::size_t>(channels > 0 ? channels : 0);
+  /// The layer scale of axis 0 at the point x (Root4Layer; 1e-12 otherwise).
+  double layerScaleAt(const double* x) const noexcept {
+    if (dims < 2 || axis[0].warp != Warp::Root4Layer) return 1e-12;
+    return layerScale(axis[1].lo, axis[1].hi, x[1]);
+  }
+
+  /// Stored value of channel c at node (i0, i1, i2). Indices are clamped to
+  /// the grid (unused axes to 0), so any input is safe.
+  float at(int i0, int i1, int i2, int c) const noexcept {
+    if (!valid()) return 0.0f;
+    return data[offset(clampIndex(i0, size(0)), clampIndex(i1, size(1)), clampIndex(i2, size(2))) +
+                static_cast<std::size_t>(clampIndex(c, channels))];
+  }
+
+  /// Interpolates every channel at the point x (dims values, in axis order,
+  /// in axis units; each is clamped to its axis, NaN maps to lo) and writes
+  /// `channels` floats to out. The interpolation runs in double on the
+  /// stored floats; at a node the stored value is returned bit for bit.
+  /// Writes zeros when the view is not valid().
+  void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (!valid()) {
+      for (int c = 0; c < channels; ++c) out[c] = 0.0f;
+      return;
     }
-
-    /// True when data is set, channels >= 1, dims is 1..3, every used axis is
-    /// valid(), and a Root4Layer warp sits only on axis 0 of a view of 2+ axes.
-    /// sample() and at() return zeros on an invalid view.
-    bool valid() const noexcept {
-        if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
-        for (int d = 0; d < dims; ++d) {
-            if (!axis[d].valid()) return false;
-            if (axis[d].warp == Warp::Root4Layer && (d != 0 || dims < 2)) return false;
-        }
-        return true;
+    Stencil stencil[3];
+    const double c = layerScaleAt(x);
+    for (int d = 0; d < 3; ++d) {
+      if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c);
     }
-
-    /// The layer scale of axis 0 at the point x (Root4Layer; 1e-12 otherwise).
-    double layerScaleAt(const double* x) const noexcept {
-        if (dims < 2 || axis[0].warp != Warp::Root4Layer) return 1e-12;
-        return layerScale(axis[1].lo, axis[1].hi, x[1]);
+    for (int c = 0; c < channels; ++c) {
+      double sum = 0.0;
+      bool started = false;
+      for (int k2 = 0; k2 < stencil[2].count; ++k2) {
+        for (int k1 = 0; k1 < stencil[1].count; ++k1) {
+          const double w21 = stencil[2].weight[k2] * stencil[1].weight[k1];
+          if (w21 == 0.0) continue;
+          const std::size_t row = offset(0, stencil[1].index[k1], stencil[2].index[k2]);
+          for (int k0 = 0; k0 < stencil[0].count; ++k0) {
+            const double w = w21 * stencil[0].weight[k0];
+            // Zero weights are skipped so a node lookup is a single
+            // product 1 * v (exact, even for -0).
+            if (w == 0.0) continue;
+            const double v =
+                static_cast<double>(data[row +
+                                         static_cast<std::size_t>(stencil[0].index[k0]) *
+                                             static_cast<std::size_t>(channels) +
+                                         static_cast<std::size_t>(c)]);
+            sum = started ? sum + w * v : w * v;
+            started = true;
+          }
+        }
+      }
+      // A cubic may overshoot its nodes; near the largest float that would round to
+      // infinity, so the result saturates at the largest finite float instead.
+      const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+      if (sum > fmax) sum = fmax;
+      if (sum < -fmax) sum = -fmax;
+      out[c] = static_cast<float>(sum);
     }
+  }
 
-    /// Stored value of channel c at node (i0, i1, i2). Indices are clamped to
-    /// the grid (unused axes to 0), so any input is safe.
-    float at(int i0, int i1, int i2, int c) const noexcept {
-        if (!valid()) return 0.0f;
-        return data[offset(clampIndex(i0, size(0)), clampIndex(i1, size(1)),
-                           clampIndex(i2, size(2))) +
-                    static_cast<std::size_t>(clampIndex(c, channels))];
+ private:
+  /// Nodes and weights one axis contributes to a lookup (at most 4).
+  struct Stencil {
+    int index[4] = {0, 0, 0, 0};
+    double weight[4] = {1.0, 0.0, 0.0, 0.0};
+    int count = 1;
+  };
+
+  static int clampIndex(int i, int n) noexcept { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
+
+  /// Offset of channel 0 of node (i0, i1, i2) in data.
+  std::size_t offset(int i0, int i1, int i2) const noexcept {
+    const std::size_t n0 = static_cast<std::size_t>(size(0));
+    const std::size_t n1 = static_cast<std::size_t>(size(1));
+    return ((static_cast<std::size_t>(i2) * n1 + static_cast<std::size_t>(i1)) * n0 +
+            static_cast<std::size_t>(i0)) *
+           static_cast<std::size_t>(channels);
+  }
+
+  static Stencil makeStencil(const Axis& a, double x, Filter filter, double c) noexcept {
+    Stencil st;
+    const int n = a.size;
+    if (n <= 1) return st;  // single node, weight 1
+    const double s = a.texel(x, c);
+    int i = static_cast<int>(std::floor(s));
+    if (i > n - 2) i = n - 2;
+    if (i < 0) i = 0;
+    const double f = s - static_cast<double>(i);
+    if (filter == Filter::Linear || n < 3) {
+      st.count = 2;
+      st.index[0] = i;
+      st.index[1] = i + 1;
+      st.weight[0] = 1.0 - f;
+      st.weight[1] = f;
+      return st;
     }
-
-    /// Interpolates every channel at the point x (dims values, in axis order,
-    /// in axis units; each is clamped to its axis, NaN maps to lo) and writes
-    /// `channels` floats to out. The interpolation runs in double on the
-    /// stored floats; at a node the stored value is returned bit for bit.
-    /// Writes zeros when the view is not valid().
-    void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
-        if (!valid()) {
-            for (int c = 0; c < channels; ++c) out[c] = 0.0f;
-            return;
-        }
-        Stencil stencil[3];
-        const double c = layerScaleAt(x);
-        for (int d = 0; d < 3; ++d) {
-            if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c);
-        }
-        for (int c = 0; c < channels; ++c) {
-            double sum = 0.0;
-            bool started = false;
-            for (int k2 = 0; k2 < stencil[2].count; ++k2) {
-                for (int k1 = 0; k1 < stencil[1].count; ++k1) {
-                    const double w21 = stencil[2].weight[k2] * stencil[1].weight[k1];
-                    if (w21 == 0.0) continue;
-                    const std::size_t row = offset(0, stencil[1].index[k1], stencil[2].index[k2]);
-                    for (int k0 = 0; k0 < stencil[0].count; ++k0) {
-                        const double w = w21 * stencil[0].weight[k0];
-                        // Zero weights are skipped so a node lookup is a single
-                        // product 1 * v (exact, even for -0).
-                        if (w == 0.0) continue;
-                        const double v = static_cast<double>(
-                            data[row + static_cast<std::size_t>(stencil[0].index[k0]) *
-                                           static_cast<std::size_t>(channels) +
-                                 static_cast<std::size_t>(c)]);
-                        sum = started ? sum + w * v : w * v;
-                        started = true;
-                    }
-                }
-            }
-            // A cubic may overshoot its nodes; near the largest float that would round to
-            // infinity, so the result saturates at the largest finite float instead.
-            const double fmax = static_cast<double>(std::numeric_limits<float>::max());
-            if (sum > fmax) sum = fmax;
-            if (sum < -fmax) sum = -fmax;
-            out[c] = static_cast<float>(sum);
-        }
+    // Catmull-Rom weights for nodes i-1, i, i+1, i+2. Exactly (0, 1, 0, 0)
+    // at f = 0 and (0, 0, 1, 0) at f = 1.
+    double wm1 = 0.5 * (((-f + 2.0) * f - 1.0) * f);
+    double w0 = 0.5 * ((3.0 * f - 5.0) * f * f + 2.0);
+    double w1 = 0.5 * (((-3.0 * f + 4.0) * f + 1.0) * f);
+    double w2 = 0.5 * ((f - 1.0) * f * f);
+    // Fold the quadratically extrapolated ghost nodes into the real ones (n >= 3 here), so
+    // that quadratics are reproduced exactly in the edge cells too.
+    if (i == 0) {  // p[-1] = 3 p[0] - 3 p[1] + p[2]
+      w0 += 3.0 * wm1;
+      w1 -= 3.0 * wm1;
+      w2 += wm1;
+      wm1 = 0.0;
     }
-
-private:
-    /// Nodes and weights one axis contributes to a lookup (at most 4).
-    struct Stencil {
-        int index[4] = {0, 0, 0, 0};
-        double weight[4] = {1.0, 0.0, 0.0, 0.0};
-        int count = 1;
-    };
-
-    static int clampIndex(int i, int n) noexcept { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
-
-    /// Offset of channel 0 of node (i0, i1, i2) in data.
-    std::size_t offset(int i0, int i1, int i2) const noexcept {
-        const std::size_t n0 = static_cast<std::size_t>(size(0));
-        const std::size_t n1 = static_cast<std::size_t>(size(1));
-        return ((static_cast<std::size_t>(i2) * n1 + static_cast<std::size_t>(i1)) * n0 +
-                static_cast<std::size_t>(i0)) *
-               static_cast<std::size_t>(channels);
+    if (i == n - 2) {  // p[n] = 3 p[n-1] - 3 p[n-2] + p[n-3]
+      w1 += 3.0 * w2;
+      w0 -= 3.0 * w2;
+      wm1 += w2;
+      w2 = 0.0;
     }
-
-    static Stencil makeStencil(const Axis& a, double x, Filter filter, double c) noexcept {
-        Stencil st;
-        const int n = a.size;
-        if (n <= 1) return st;  // single node, weight 1
-        const double s = a.texel(x, c);
-        int i = static_cast<int>(std::floor(s));
-        if (i > n - 2) i = n - 2;
-        if (i < 0) i = 0;
-        const double f = s - static_cast<double>(i);
-        if (filter == Filter::Linear || n < 3) {
-            st.count = 2;
-            st.index[0] = i;
-            st.index[1] = i + 1;
-            st.weight[0] = 1.0 - f;
-            st.weight[1] = f;
-            return st;
-        }
-        // Catmull-Rom weights for nodes i-1, i, i+1, i+2. Exactly (0, 1, 0, 0)
-        // at f = 0 and (0, 0, 1, 0) at f = 1.
-        double wm1 = 0.5 * (((-f + 2.0) * f - 1.0) * f);
-        double w0 = 0.5 * ((3.0 * f - 5.0) * f * f + 2.0);
-        double w1 = 0.5 * (((-3.0 * f + 4.0) * f + 1.0) * f);
-        double w2 = 0.5 * ((f - 1.0) * f * f);
-        // Fold the quadratically extrapolated ghost nodes into the real ones (n >= 3 here), so
-        // that quadratics are reproduced exactly in the edge cells too.
-        if (i == 0) {  // p[-1] = 3 p[0] - 3 p[1] + p[2]
-            w0 += 3.0 * wm1;
-            w1 -= 3.0 * wm1;
-            w2 += wm1;
-            wm1 = 0.0;
-        }
-        if (i == n - 2) {  // p[n] = 3 p[n-1] - 3 p[n-2] + p[n-3]
-            w1 += 3.0 * w2;
-            w0 -= 3.0 * w2;
-            wm1 += w2;
-            w2 = 0.0;
-        }
-        st.count = 0;
-        const int idx[4] = {i - 1, i, i + 1, i + 2};
-        const double wts[4] = {wm1, w0, w1, w2};
-        for (int k = 0; k < 4; ++k) {
-            if (idx[k] < 0 || idx[k] > n - 1) continue;
-            st.index[st.count] = idx[k];
-            st.weight[st.count] = wts[k];
-            ++st.count;
-        }
-        return st;
+    st.count = 0;
+    const int idx[4] = {i - 1, i, i + 1, i + 2};
+    const double wts[4] = {wm1, w0, w1, w2};
+    for (int k = 0; k < 4; ++k) {
+      if (idx[k] < 0 || idx[k] > n - 1) continue;
+      st.index[st.count] = idx[k];
+      st.weight[st.count] = wts[k];
+      ++st.count;
     }
+    return st;
+  }
 };
 
 }  // namespace kiln

@@ -17,63 +17,63 @@ constexpr int kFormatVersion = 1;
 
 /// One axis of a table with its name (`kiln.axis<i>.*`).
 struct TableAxis {
-    std::string name;  ///< e.g. "mu", "roughness", "eta"
-    Axis axis;         ///< lo, hi, size, warp
+  std::string name;  ///< e.g. "mu", "roughness", "eta"
+  Axis axis;         ///< lo, hi, size, warp
 };
 
 /// The measured interpolation error of a table (`kiln.lookup_error.*`);
 /// -1 (and empty strings) when not measured.
 struct LookupError {
-    double max = -1.0;   ///< max abs error of a lookup vs the exact integral
-    double rms = -1.0;   ///< rms of the same
-    std::string where;   ///< where the max was found, free text
-    std::string filter;  ///< filter it was measured with: "linear" or "cubic"
-    double cubicMax = -1.0;  ///< the same max with the cubic filter (informative, not a bound)
-    double cubicRms = -1.0;  ///< rms with the cubic filter
+  double max = -1.0;       ///< max abs error of a lookup vs the exact integral
+  double rms = -1.0;       ///< rms of the same
+  std::string where;       ///< where the max was found, free text
+  std::string filter;      ///< filter it was measured with: "linear" or "cubic"
+  double cubicMax = -1.0;  ///< the same max with the cubic filter (informative, not a bound)
+  double cubicRms = -1.0;  ///< rms with the cubic filter
 };
 
 /// A kiln table: metadata and texels. A plain value; validateTable says
 /// whether it is consistent.
 struct Table {
-    std::string generator;                     ///< kiln.generator, e.g. "kiln 0.1.0"
-    std::string name;                          ///< kiln.name, e.g. "ggx-dfg"
-    std::string model;                         ///< kiln.model, e.g. "ggx" or "none"
-    std::string quantity;                      ///< kiln.quantity, e.g. "dfg"
-    std::vector<std::string> channels;         ///< kiln.channels, in storage order
-    std::vector<std::string> channelMeanings;  ///< kiln.channel_meanings, one per channel
-    std::vector<TableAxis> axes;               ///< kiln.dims = axes.size(), 1..3
-    std::string params;                        ///< kiln.params, "key=value;key=value"
-    std::string method;                        ///< kiln.method
-    double tolerance = 0.0;                    ///< kiln.tolerance
-    double bakeError = -1.0;                   ///< kiln.bake_error
-    LookupError lookupError;                   ///< kiln.lookup_error.*
-    std::string specHash;                      ///< kiln.spec_hash (hex)
-    std::vector<float> data;                   ///< the texels, see LutView
+  std::string generator;                     ///< kiln.generator, e.g. "kiln 0.1.0"
+  std::string name;                          ///< kiln.name, e.g. "ggx-dfg"
+  std::string model;                         ///< kiln.model, e.g. "ggx" or "none"
+  std::string quantity;                      ///< kiln.quantity, e.g. "dfg"
+  std::vector<std::string> channels;         ///< kiln.channels, in storage order
+  std::vector<std::string> channelMeanings;  ///< kiln.channel_meanings, one per channel
+  std::vector<TableAxis> axes;               ///< kiln.dims = axes.size(), 1..3
+  std::string params;                        ///< kiln.params, "key=value;key=value"
+  std::string method;                        ///< kiln.method
+  double tolerance = 0.0;                    ///< kiln.tolerance
+  double bakeError = -1.0;                   ///< kiln.bake_error
+  LookupError lookupError;                   ///< kiln.lookup_error.*
+  std::string specHash;                      ///< kiln.spec_hash (hex)
+  std::vector<float> data;                   ///< the texels, see LutView
 
-    /// Number of axes (kiln.dims).
-    int dims() const noexcept { return static_cast<int>(axes.size()); }
+  /// Number of axes (kiln.dims).
+  int dims() const noexcept { return static_cast<int>(axes.size()); }
 
-    /// Nodes along axis d; 1 for d >= dims().
-    int size(int d) const noexcept {
-        return d >= 0 && d < dims() ? axes[static_cast<std::size_t>(d)].axis.size : 1;
-    }
+  /// Nodes along axis d; 1 for d >= dims().
+  int size(int d) const noexcept {
+    return d >= 0 && d < dims() ? axes[static_cast<std::size_t>(d)].axis.size : 1;
+  }
 
-    /// Image width of the table in its file: size(0).
-    int imageWidth() const noexcept { return size(0); }
+  /// Image width of the table in its file: size(0).
+  int imageWidth() const noexcept { return size(0); }
 
-    /// Image height of the table in its file: size(1) * size(2) (slices stacked).
-    int imageHeight() const noexcept { return size(1) * size(2); }
+  /// Image height of the table in its file: size(1) * size(2) (slices stacked).
+  int imageHeight() const noexcept { return size(1) * size(2); }
 
-    /// A non-owning view for sampling; valid while this table's data vector
-    /// is neither resized nor destroyed. At most 3 axes are viewed.
-    LutView view() const noexcept {
-        LutView v;
-        v.data = data.data();
-        v.channels = static_cast<int>(channels.size());
-        v.dims = dims();
-        for (int d = 0; d < 3 && d < dims(); ++d) v.axis[d] = axes[static_cast<std::size_t>(d)].axis;
-        return v;
-    }
+  /// A non-owning view for sampling; valid while this table's data vector
+  /// is neither resized nor destroyed. At most 3 axes are viewed.
+  LutView view() const noexcept {
+    LutView v;
+    v.data = data.data();
+    v.channels = static_cast<int>(channels.size());
+    v.dims = dims();
+    for (int d = 0; d < 3 && d < dims(); ++d) v.axis[d] = axes[static_cast<std::size_t>(d)].axis;
+    return v;
+  }
 };
 
 /// Checks that a table is consistent and writable: 1..3 axes, each valid
