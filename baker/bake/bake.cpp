@@ -18,6 +18,7 @@
 #include "baker/io/atomic_write.h"
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
+#include "baker/io/test_hooks.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
@@ -92,6 +93,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   auto t0 = std::chrono::steady_clock::now();
   {
     ProgressBar bar(spec.name, n, opt.progress);
+    const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
     tbb::task_arena arena(Threads(opt.threads));
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
@@ -103,7 +105,9 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
           for (size_t c = 0; c < nc; ++c) t.data[i * nc + c] = static_cast<float>(v[c]);
           evals[i] = st.evals;
           errors[i] = st.errorEstimate;
-          ++bar.done;
+          if (++bar.done == pauseAfter)
+            TestPause(std::to_string(pauseAfter) + " of " + std::to_string(n) + " texels of " +
+                      spec.name);
         }
       });
     });

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "baker/io/test_hooks.h"
+
 namespace kiln {
 
 namespace {
@@ -27,6 +29,8 @@ void writeAtomically(const std::string& path,
     std::string reason;
     try {
         write(temporary);
+        const std::string name = path.substr(path.find_last_of('/') + 1);
+        if (TestPauseBeforeRename(name)) TestPause("before renaming '" + temporary + "'");
         if (std::rename(temporary.c_str(), path.c_str()) != 0)
             reason = "cannot rename '" + temporary + "' into place: " + std::strerror(errno);
     } catch (const std::exception& e) {
