@@ -71,10 +71,16 @@ struct Fixture {
     REQUIRE(!oldBytes.empty());
     REQUIRE(oldBytes != newBytes);
   }
+  /// Puts the previous table and manifest back (a completed bake replaced them).
+  void Restore() const {
+    WriteFile(exr, oldBytes);
+    WriteFile(manifest, oldManifest);
+  }
 };
 
 /// Killed while the texels are computed: nothing changes, nothing is left behind.
 void KillWhileComputing(const Fixture& f) {
+  f.Restore();
   int status = InterruptBake(f.dir, "KILN_TEST_PAUSE_AFTER_TEXELS=128", SIGKILL);
   REQUIRE(EndedBySignal(status, SIGKILL));
   CHECK(ReadFile(f.exr) == f.oldBytes);
@@ -85,7 +91,7 @@ void KillWhileComputing(const Fixture& f) {
 /// Killed with the temporary file complete and not yet renamed: the old table and manifest stay,
 /// the temporary file is the only thing left, and the next bake removes it.
 void KillWhileWriting(const Fixture& f) {
-  WriteFile(f.exr, f.oldBytes);
+  f.Restore();
   int status = InterruptBake(f.dir, "KILN_TEST_PAUSE_BEFORE_RENAME=" + kTable + ".exr", SIGKILL);
   REQUIRE(EndedBySignal(status, SIGKILL));
   CHECK(ReadFile(f.exr) == f.oldBytes);
@@ -120,6 +126,34 @@ TEST_CASE("A bake killed half-way, 50 times over: the previous table intact ever
     KillWhileComputing(f);
     KillWhileWriting(f);
   }
+}
+
+TEST_CASE("SIGINT, SIGTERM and SIGHUP remove the temporary file and end the bake by that signal",
+          "[stress][interrupt][cli]") {
+  Fixture f;
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+    for (const std::string& env :
+         {std::string("KILN_TEST_PAUSE_AFTER_TEXELS=128"), "KILN_TEST_PAUSE_BEFORE_RENAME=" + kTable + ".exr"}) {
+      INFO("signal " << sig << ", " << env);
+      int status = InterruptBake(f.dir, env, sig);
+      CHECK(EndedBySignal(status, sig));
+      CHECK(ReadFile(f.exr) == f.oldBytes);
+      CHECK(ReadFile(f.manifest) == f.oldManifest);
+      CHECK(Names(f.dir) == std::vector<std::string>{kTable + ".exr", "manifest.json"});
+    }
+  }
+}
+
+TEST_CASE("SIGXFSZ (a file size limit) removes the temporary file", "[stress][interrupt][cli]") {
+  Fixture f;
+  // 1 KiB (dash counts 512-byte blocks): the table's header alone is larger.
+  auto r = RunKilnFor(300, "bake --only " + kTable + " --size " + kSize + " -j 2 --out " + Quote(f.dir),
+                      "ulimit -f 2;");
+  INFO(r.err);
+  CHECK(r.exitCode != 0);
+  CHECK(ReadFile(f.exr) == f.oldBytes);
+  CHECK(ReadFile(f.manifest) == f.oldManifest);
+  CHECK(Names(f.dir) == std::vector<std::string>{kTable + ".exr", "manifest.json"});
 }
 
 // UpdateManifest (baker/bake/bake.cpp) writes manifest.json through writeAtomically like the
