@@ -123,6 +123,8 @@ inline std::string ManifestSpecHash(const std::string& dir, const std::string& n
 }
 
 /// True when the wait status says the process ended by signal `sig`.
-inline bool EndedBySignal(int status, int sig) { return WIFSIGNALED(status) && WTERMSIG(status) == sig; }
+inline bool EndedBySignal(int status, int sig) {
+  return WIFSIGNALED(status) && WTERMSIG(status) == sig;
+}
 
 }  // namespace kiln::stress

@@ -22,14 +22,16 @@ namespace {
 
 /// `kiln bake --only TABLE --size SIZE -j 1 --out DIR` to completion; returns the result.
 kiln::test::CommandResult Bake(const std::string& dir, const std::string& table, int size) {
-  return RunKilnFor(300, "bake --only " + table + " --size " + std::to_string(size) + " -j 1 --out " + Quote(dir));
+  return RunKilnFor(300, "bake --only " + table + " --size " + std::to_string(size) +
+                             " -j 1 --out " + Quote(dir));
 }
 
 /// Starts the same bake paused before the rename of `pauseFile`; returns once it announced it.
 std::unique_ptr<KilnChild> StartPaused(const std::string& dir, const std::string& table, int size,
                                        const std::string& pauseFile) {
   auto child = std::make_unique<KilnChild>(
-      std::vector<std::string>{"bake", "--only", table, "--size", std::to_string(size), "-j", "1", "--out", dir},
+      std::vector<std::string>{"bake", "--only", table, "--size", std::to_string(size), "-j", "1",
+                               "--out", dir},
       std::vector<std::string>{"KILN_TEST_PAUSE_BEFORE_RENAME=" + pauseFile});
   REQUIRE(child->Started());
   std::string pause = child->WaitForPause();
@@ -130,7 +132,8 @@ TEST_CASE("Two bakes into one --out, the issue's reproduction 12 times: every ru
     KilnChild b({"bake", "--only", "ggx-dfg", "--size", "97", "-j1", "--out", dir}, {});
     int statusA = a.Wait(), statusB = b.Wait();
     INFO("run " << run << ": " << a.err << b.err);
-    bool ok = WIFEXITED(statusA) && WEXITSTATUS(statusA) == 0 && WIFEXITED(statusB) && WEXITSTATUS(statusB) == 0;
+    bool ok = WIFEXITED(statusA) && WEXITSTATUS(statusA) == 0 && WIFEXITED(statusB) &&
+              WEXITSTATUS(statusB) == 0;
     CHECK(ok);
     CheckConsistent(dir, "ggx-dfg");
     CheckNoTemporaries(dir);

@@ -26,7 +26,8 @@ const char* kSize = "16";  // 256 texels
 
 /// Runs the same bake to completion in `dir`, through the CLI.
 void BakeToCompletion(const std::string& dir, const char* size) {
-  auto r = RunKilnFor(300, "bake --only " + kTable + " --size " + size + " -j 2 --out " + Quote(dir));
+  auto r =
+      RunKilnFor(300, "bake --only " + kTable + " --size " + size + " -j 2 --out " + Quote(dir));
   INFO(r.err);
   REQUIRE(r.exitCode == 0);
 }
@@ -46,7 +47,8 @@ int InterruptBake(const std::string& dir, const std::string& env, int sig) {
 /// The names in `dir`, sorted.
 std::vector<std::string> Names(const std::string& dir) {
   std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -60,7 +62,8 @@ bool IsTableTemporary(const std::string& name) {
 
 struct Fixture {
   ScratchDir root{"interrupt"};
-  std::string dir = root / "out", exr = dir + "/" + kTable + ".exr", manifest = dir + "/manifest.json";
+  std::string dir = root / "out", exr = dir + "/" + kTable + ".exr",
+              manifest = dir + "/manifest.json";
   std::string newBytes, oldBytes, oldManifest;
   Fixture() {
     BakeToCompletion(root / "reference", kSize);  // what a completed bake writes (deterministic)
@@ -132,8 +135,8 @@ TEST_CASE("SIGINT, SIGTERM and SIGHUP remove the temporary file and end the bake
           "[stress][interrupt][cli]") {
   Fixture f;
   for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
-    for (const std::string& env :
-         {std::string("KILN_TEST_PAUSE_AFTER_TEXELS=128"), "KILN_TEST_PAUSE_BEFORE_RENAME=" + kTable + ".exr"}) {
+    for (const std::string& env : {std::string("KILN_TEST_PAUSE_AFTER_TEXELS=128"),
+                                   "KILN_TEST_PAUSE_BEFORE_RENAME=" + kTable + ".exr"}) {
       INFO("signal " << sig << ", " << env);
       int status = InterruptBake(f.dir, env, sig);
       CHECK(EndedBySignal(status, sig));
@@ -147,8 +150,9 @@ TEST_CASE("SIGINT, SIGTERM and SIGHUP remove the temporary file and end the bake
 TEST_CASE("SIGXFSZ (a file size limit) removes the temporary file", "[stress][interrupt][cli]") {
   Fixture f;
   // 1 KiB (dash counts 512-byte blocks): the table's header alone is larger.
-  auto r = RunKilnFor(300, "bake --only " + kTable + " --size " + kSize + " -j 2 --out " + Quote(f.dir),
-                      "ulimit -f 2;");
+  auto r =
+      RunKilnFor(300, "bake --only " + kTable + " --size " + kSize + " -j 2 --out " + Quote(f.dir),
+                 "ulimit -f 2;");
   INFO(r.err);
   CHECK(r.exitCode != 0);
   CHECK(ReadFile(f.exr) == f.oldBytes);
@@ -171,6 +175,6 @@ TEST_CASE("The manifest, like every table, is replaced by a rename, never rewrit
   BakeToCompletion(dir.path.string(), "6");
   REQUIRE(ReadFile(exr) != oldExr);
   REQUIRE(ReadFile(manifest) != oldManifest);
-  CHECK(ReadFile(dir / "table.link") == oldExr);           // the table: replaced by a rename
-  CHECK(ReadFile(dir / "manifest.link") == oldManifest);   // the manifest: replaced by a rename too
+  CHECK(ReadFile(dir / "table.link") == oldExr);          // the table: replaced by a rename
+  CHECK(ReadFile(dir / "manifest.link") == oldManifest);  // the manifest: replaced by a rename too
 }

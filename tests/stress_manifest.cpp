@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 namespace {
 
 kiln::test::CommandResult Bake(const std::string& dir, const std::string& tables, int size) {
-  return RunKilnFor(300, "bake --only " + tables + " --size " + std::to_string(size) + " -j 1 --out " + Quote(dir));
+  return RunKilnFor(300, "bake --only " + tables + " --size " + std::to_string(size) +
+                             " -j 1 --out " + Quote(dir));
 }
 
 }  // namespace
@@ -33,10 +34,11 @@ TEST_CASE("A corrupt manifest.json is an error naming it, and is left as it was"
     const char* bytes;
     const char* says;
   };
-  for (const Case& c : {Case{"{\"tables\": [ {\"name\": \"ggx-dfg\"", "is not valid JSON ("},
-                        Case{"", "is not valid JSON ("},
-                        Case{"[1, 2, 3]\n", "is not a kiln manifest (no \"tables\" array)"},
-                        Case{"{\"tables\": [ {\"file\": \"x.exr\"} ]}\n", "is not a kiln manifest (an entry"}}) {
+  for (const Case& c :
+       {Case{"{\"tables\": [ {\"name\": \"ggx-dfg\"", "is not valid JSON ("},
+        Case{"", "is not valid JSON ("},
+        Case{"[1, 2, 3]\n", "is not a kiln manifest (no \"tables\" array)"},
+        Case{"{\"tables\": [ {\"file\": \"x.exr\"} ]}\n", "is not a kiln manifest (an entry"}}) {
     INFO("manifest: " << c.bytes);
     WriteFile(manifest, c.bytes);
     auto r = Bake(dir, "burley-albedo-avg", 9);
@@ -46,12 +48,15 @@ TEST_CASE("A corrupt manifest.json is an error naming it, and is left as it was"
                           Catch::EndsWith("; move it aside or delete it\n"));
     CHECK(ReadFile(manifest) == c.bytes);
     CHECK(root.Entries() == std::vector<std::string>{"D"});
-    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);  // nothing baked
+    CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) ==
+          1);  // nothing baked
   }
   // The scene bake refuses it too.
   WriteFile(manifest, "not json");
-  auto r = RunKilnFor(300, "bake --scene " + Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/lambert_only.kiln.json") +
-                               " --out " + Quote(dir));
+  auto r = RunKilnFor(
+      300, "bake --scene " +
+               Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/lambert_only.kiln.json") +
+               " --out " + Quote(dir));
   INFO(r.err);
   CHECK(IsCleanRefusal(r));
   CHECK_THAT(r.err, Catch::Contains(manifest + " is not valid JSON"));
@@ -76,8 +81,8 @@ TEST_CASE("A bake killed after its first table leaves a manifest describing the 
   bake.Signal(SIGKILL);
   REQUIRE(EndedBySignal(bake.Wait(), SIGKILL));
   std::string newFirst = kiln::StoredSpecHash(dir + "/" + first + ".exr");
-  CHECK(newFirst != oldFirst);                                  // table 1 replaced ...
-  CHECK(ManifestSpecHash(dir, first) == newFirst);              // ... and its entry with it
+  CHECK(newFirst != oldFirst);                      // table 1 replaced ...
+  CHECK(ManifestSpecHash(dir, first) == newFirst);  // ... and its entry with it
   CHECK(kiln::StoredSpecHash(dir + "/" + second + ".exr") == oldSecond);  // table 2 untouched
   CHECK(ManifestSpecHash(dir, second) == oldSecond);
 }

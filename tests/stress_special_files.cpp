@@ -55,7 +55,8 @@ TEST_CASE("A symlink at a table's own name is refused, its target untouched",
   auto r = RunKilnFor(120, "bake --only burley-albedo-avg --size 9 -j 1 --out " + Quote(dir));
   INFO(r.err);
   CHECK(IsCleanRefusal(r, true));
-  CHECK_THAT(r.err, Catch::Contains(dir + "/burley-albedo-avg.exr") && Catch::Contains("symbolic link"));
+  CHECK_THAT(r.err,
+             Catch::Contains(dir + "/burley-albedo-avg.exr") && Catch::Contains("symbolic link"));
   CHECK(ReadFile(victim) == "the victim's bytes");
   CHECK(fs::is_symlink(dir + "/burley-albedo-avg.exr"));
   CHECK(root.Entries() == std::vector<std::string>{"D", "victim"});
@@ -63,7 +64,8 @@ TEST_CASE("A symlink at a table's own name is refused, its target untouched",
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
 }
 
-TEST_CASE("A symlinked manifest is refused before anything is baked", "[stress][special-files][cli]") {
+TEST_CASE("A symlinked manifest is refused before anything is baked",
+          "[stress][special-files][cli]") {
   ScratchDir root("manifest_link");
   std::string dir = root / "D", victim = root / "victim.json";
   fs::create_directories(dir);

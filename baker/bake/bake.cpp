@@ -198,10 +198,12 @@ std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
       reason = reason.substr(reason.find("] ") + 2);
     for (char& c : reason)
       if (c == '\n' || c == '\r') c = ' ';
-    throw std::runtime_error(path + " is not valid JSON (" + reason + "); move it aside or delete it");
+    throw std::runtime_error(path + " is not valid JSON (" + reason +
+                             "); move it aside or delete it");
   }
   auto notOurs = [&](const std::string& why) {
-    return std::runtime_error(path + " is not a kiln manifest (" + why + "); move it aside or delete it");
+    return std::runtime_error(path + " is not a kiln manifest (" + why +
+                              "); move it aside or delete it");
   };
   if (!old.is_object() || !old.contains("tables") || !old["tables"].is_array())
     throw notOurs("no \"tables\" array");

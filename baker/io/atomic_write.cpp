@@ -128,7 +128,8 @@ bool ParseTemporaryName(const std::string& name, long& pid) {
     if (!std::isxdigit(static_cast<unsigned char>(name[i]))) return false;
   size_t pidEnd = hexStart - 1, pidStart = pidEnd;
   while (pidStart > 0 && std::isdigit(static_cast<unsigned char>(name[pidStart - 1]))) --pidStart;
-  if (pidStart == pidEnd || pidEnd - pidStart > 9 || pidStart < 2 || name[pidStart - 1] != '.') return false;
+  if (pidStart == pidEnd || pidEnd - pidStart > 9 || pidStart < 2 || name[pidStart - 1] != '.')
+    return false;
   pid = std::stol(name.substr(pidStart, pidEnd - pidStart));
   return pid > 0;
 }
@@ -137,10 +138,12 @@ bool ParseTemporaryName(const std::string& name, long& pid) {
 
 void CheckWritableTarget(const std::string& path) {
   struct stat st {};
-  if (lstat(path.c_str(), &st) != 0) return;  // missing (or unreachable: creating the file says why)
+  if (lstat(path.c_str(), &st) != 0)
+    return;  // missing (or unreachable: creating the file says why)
   if (S_ISREG(st.st_mode)) return;
-  Fail(path, std::string("it is ") + KindOf(st.st_mode) + ", not a regular file; kiln replaces only "
-             "regular files");
+  Fail(path, std::string("it is ") + KindOf(st.st_mode) +
+                 ", not a regular file; kiln replaces only "
+                 "regular files");
 }
 
 void InstallCleanupHandlers() {
@@ -173,7 +176,8 @@ PendingFile::PendingFile(std::string path) : path_(std::move(path)) {
     Unregister(slot_);
     slot_ = -1;
     if (error != EEXIST)
-      Fail(path_, "cannot create a temporary file in '" + FolderOf(path_) + "': " + std::strerror(error));
+      Fail(path_,
+           "cannot create a temporary file in '" + FolderOf(path_) + "': " + std::strerror(error));
   }
   Fail(path_, "cannot create a temporary file with a fresh name in '" + FolderOf(path_) + "'");
 }
@@ -190,7 +194,8 @@ void PendingFile::Write(const std::function<void(const std::string& writePath)>&
   // /proc/self/fd/N reopens this very file whatever the folder holds under its name now.
   std::string writePath = "/proc/self/fd/" + std::to_string(fd_);
   struct stat viaProc {};
-  if (stat(writePath.c_str(), &viaProc) != 0 || viaProc.st_ino != own.st_ino || viaProc.st_dev != own.st_dev)
+  if (stat(writePath.c_str(), &viaProc) != 0 || viaProc.st_ino != own.st_ino ||
+      viaProc.st_dev != own.st_dev)
     writePath = temporary_;
   std::string reason;
   try {
@@ -228,7 +233,8 @@ void PendingFile::CommitAll(const std::vector<PendingFile*>& files) {
   std::string failure;
   for (PendingFile* f : files) {
     if (std::rename(f->temporary_.c_str(), f->path_.c_str()) != 0) {
-      failure = f->path_ + "': cannot rename '" + f->temporary_ + "' into place: " + std::strerror(errno);
+      failure =
+          f->path_ + "': cannot rename '" + f->temporary_ + "' into place: " + std::strerror(errno);
       break;
     }
     f->committed_ = true;
@@ -243,7 +249,8 @@ void PendingFile::CommitAll(const std::vector<PendingFile*>& files) {
 FolderLock::FolderLock(const std::string& dir) {
   fd_ = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd_ < 0)
-    throw std::runtime_error("cannot open folder '" + dir + "' to lock it: " + std::strerror(errno));
+    throw std::runtime_error("cannot open folder '" + dir +
+                             "' to lock it: " + std::strerror(errno));
   int r = flock(fd_, LOCK_EX | LOCK_NB);
   if (r != 0 && errno == EWOULDBLOCK) {
     TestNote("waiting for the lock on '" + dir + "'");
@@ -270,7 +277,8 @@ int RemoveStaleTemporaries(const std::string& dir) {
   while (dirent* e = readdir(d)) {
     long pid = 0;
     if (!ParseTemporaryName(e->d_name, pid) || pid == self) continue;
-    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive (or not ours to judge)
+    if (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue;  // alive (or not ours to judge)
     if (unlinkat(dirfd(d), e->d_name, 0) == 0) ++removed;
   }
   closedir(d);
