@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "baker/io/atomic_write.h"
 #include "kiln/exr_loader.h"
 #include "stress_child.h"
 #include "stress_util.h"
@@ -177,4 +178,30 @@ TEST_CASE("The manifest, like every table, is replaced by a rename, never rewrit
   REQUIRE(ReadFile(manifest) != oldManifest);
   CHECK(ReadFile(dir / "table.link") == oldExr);          // the table: replaced by a rename
   CHECK(ReadFile(dir / "manifest.link") == oldManifest);  // the manifest: replaced by a rename too
+}
+
+// RemoveStaleTemporaries (baker/io/atomic_write.h), called by each bake under the folder lock:
+// a temporary file whose process is gone is removed; one of a living process (this one: a bake
+// in progress) and every name outside the pattern are kept. The dead pid is a reaped child's.
+TEST_CASE("Stale temporary files of dead processes are removed, those of living ones kept",
+          "[stress][interrupt]") {
+  ScratchDir dir("stale_temporaries");
+  pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) _exit(0);
+  int status = 0;
+  REQUIRE(waitpid(child, &status, 0) == child);
+  const std::string hex = ".0123456789abcdef.tmp";
+  const std::string dead = "a.exr." + std::to_string(child) + hex;
+  const std::string alive = "b.exr." + std::to_string(getpid()) + hex;
+  const std::vector<std::string> others = {
+      "c.exr.tmp", "d.exr." + std::to_string(child) + ".0123.tmp", "e.exr", "manifest.json"};
+  for (const std::string& name : others) WriteFile(dir / name, "x");
+  WriteFile(dir / dead, "x");
+  WriteFile(dir / alive, "x");
+  CHECK(kiln::RemoveStaleTemporaries(dir.path.string()) == 1);
+  std::vector<std::string> expected = others;
+  expected.push_back(alive);
+  std::sort(expected.begin(), expected.end());
+  CHECK(dir.Entries() == expected);
 }
