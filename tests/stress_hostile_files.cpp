@@ -349,6 +349,12 @@ TEST_CASE("A hostile file in the output folder is stale to kiln plan and replace
     INFO(Describe("plan", plan));
     CHECK(plan.exitCode == 0);
     CHECK(plan.out.find("stale") != std::string::npos);
+    // A broken manifest is refused, never silently replaced (#17 item 10); moved aside, the bake runs.
+    auto refused = RunKilnFor(60, "bake --scene " + Quote(scene) + " --size 5 --out " + Quote(dir.path.string()));
+    INFO(Describe("bake --scene, broken manifest", refused));
+    CHECK(IsCleanRefusal(refused));
+    CHECK(refused.err.find("manifest.json is not valid JSON") != std::string::npos);
+    std::filesystem::rename(dir / "manifest.json", dir / "manifest.json.bak");
     auto bake = RunKilnFor(60, "bake --scene " + Quote(scene) + " --size 5 --out " + Quote(dir.path.string()));
     INFO(Describe("bake --scene", bake));
     CHECK(bake.exitCode == 0);

@@ -3,13 +3,18 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
@@ -18,6 +23,7 @@
 #include "baker/io/atomic_write.h"
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
+#include "baker/io/test_hooks.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
@@ -92,6 +98,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   auto t0 = std::chrono::steady_clock::now();
   {
     ProgressBar bar(spec.name, n, opt.progress);
+    const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
     tbb::task_arena arena(Threads(opt.threads));
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
@@ -103,7 +110,9 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
           for (size_t c = 0; c < nc; ++c) t.data[i * nc + c] = static_cast<float>(v[c]);
           evals[i] = st.evals;
           errors[i] = st.errorEstimate;
-          ++bar.done;
+          if (++bar.done == pauseAfter)
+            TestPause(std::to_string(pauseAfter) + " of " + std::to_string(n) + " texels of " +
+                      spec.name);
         }
       });
     });
@@ -164,20 +173,52 @@ std::string StoredSpecHash(const std::string& exrPath) {
   return loadTable(exrPath, t, error) ? t.specHash : "";
 }
 
-void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
-                    const std::vector<long long>& evals) {
-  using nlohmann::ordered_json;
+namespace {
+
+using nlohmann::ordered_json;
+
+/// The entries of DIR/manifest.json by name ({} when it is missing); throws as CheckManifest.
+std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
   std::string path = dir + "/manifest.json";
   std::map<std::string, ordered_json> entries;
-  {
-    std::ifstream in(path);
-    if (in) {
-      ordered_json old = ordered_json::parse(in, nullptr, /*allow_exceptions=*/false);
-      if (old.is_object() && old["tables"].is_array())
-        for (auto& e : old["tables"])
-          if (e.is_object() && e["name"].is_string()) entries[e["name"].get<std::string>()] = e;
-    }
+  struct stat st {};
+  if (lstat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return entries;
+    throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
   }
+  CheckWritableTarget(path);  // a link, FIFO or device is refused before it is read
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  ordered_json old;
+  try {
+    old = ordered_json::parse(in);
+  } catch (const std::exception& e) {
+    std::string reason = e.what();
+    if (reason.rfind("[json.exception.", 0) == 0 && reason.find("] ") != std::string::npos)
+      reason = reason.substr(reason.find("] ") + 2);
+    for (char& c : reason)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw std::runtime_error(path + " is not valid JSON (" + reason +
+                             "); move it aside or delete it");
+  }
+  auto notOurs = [&](const std::string& why) {
+    return std::runtime_error(path + " is not a kiln manifest (" + why +
+                              "); move it aside or delete it");
+  };
+  if (!old.is_object() || !old.contains("tables") || !old["tables"].is_array())
+    throw notOurs("no \"tables\" array");
+  for (auto& e : old["tables"]) {
+    if (!e.is_object() || !e.contains("name") || !e["name"].is_string())
+      throw notOurs("an entry without a \"name\"");
+    entries[e["name"].get<std::string>()] = e;
+  }
+  return entries;
+}
+
+/// The text of DIR/manifest.json with the entries of `tables` added or replaced.
+std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
+                         const std::vector<long long>& evals) {
+  std::map<std::string, ordered_json> entries = ManifestEntries(dir);
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     ordered_json e;
@@ -210,9 +251,41 @@ void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
   doc["format"] = kFormatVersion;
   doc["tables"] = ordered_json::array();
   for (auto& [name, e] : entries) doc["tables"].push_back(e);
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace
+
+void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
+
+void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
+                    const std::vector<long long>& evals) {
+  FolderLock lock(dir);
   // Like every table: a killed bake leaves the old manifest or the new one, never a partial one.
-  std::string text = doc.dump(2) + "\n";
-  writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, text); });
+  PendingFile manifest(dir + "/manifest.json");
+  manifest.WriteBytes(ManifestText(dir, tables, evals));
+  PendingFile::CommitAll({&manifest});
+}
+
+void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
+                      bool header, int threads) {
+  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  // The long part (compressing, writing) outside the lock; then the short critical section.
+  PendingFile exr(dir + "/" + table.name + ".exr");
+  writeTable(exr, table, half, threads);
+  std::unique_ptr<PendingFile> h;
+  if (header) {
+    h = std::make_unique<PendingFile>(dir + "/" + table.name + ".h");
+    writeCppHeader(*h, table);
+  }
+  FolderLock lock(dir);
+  RemoveStaleTemporaries(dir);
+  PendingFile manifest(dir + "/manifest.json");
+  manifest.WriteBytes(ManifestText(dir, {table}, {evals}));
+  std::vector<PendingFile*> files = {&exr};
+  if (h) files.push_back(h.get());
+  files.push_back(&manifest);
+  PendingFile::CommitAll(files);
 }
 
 }  // namespace kiln

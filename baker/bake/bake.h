@@ -37,8 +37,27 @@ void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool
 /// The spec hash stored in DIR/<name>.exr, or "" when the file is missing or not a kiln table.
 std::string StoredSpecHash(const std::string& exrPath);
 
-/// Adds or replaces the entries of `tables` in DIR/manifest.json (sorted by name), atomically.
+/// Adds or replaces the entries of `tables` in DIR/manifest.json (sorted by name), atomically,
+/// holding DIR's FolderLock (baker/io/atomic_write.h) from the read to the rename, so that
+/// concurrent bakes into DIR never lose each other's entries. Throws (CheckManifest) instead of
+/// replacing a manifest that is not one.
 void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
                     const std::vector<long long>& evals);
+
+/// Throws std::runtime_error when DIR/manifest.json exists and cannot be updated: not a regular
+/// file, not valid JSON ("DIR/manifest.json is not valid JSON (<reason>); move it aside or
+/// delete it"), or not a kiln manifest (not an object with a "tables" array of entries with a
+/// "name"). A missing manifest passes. Never changes the file.
+void CheckManifest(const std::string& dir);
+
+/// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with `header`) to temporary files of their
+/// own, then, holding DIR's FolderLock: removes the temporary files of dead processes
+/// (RemoveStaleTemporaries), adds the table's entry (with `evals`) to DIR/manifest.json, and
+/// renames table, header and manifest into place together (PendingFile::CommitAll). A bake that
+/// commits each table so, when killed, leaves a manifest that describes the files in DIR, and
+/// two bakes into one DIR leave the files and the entries of whichever committed last. Throws
+/// std::runtime_error (one line); DIR's files are then unchanged.
+void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
+                      bool header, int threads = 1);
 
 }  // namespace kiln

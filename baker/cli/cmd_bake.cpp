@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "baker/bake/bake.h"
@@ -13,6 +14,23 @@
 #include <cstdlib>
 
 namespace kiln::cli {
+namespace {
+
+/// Creates the folder `dir` with its missing parents; throws std::runtime_error naming the folder
+/// and the reason when it cannot, or when `dir` exists and is not a folder. Then checks that its
+/// manifest can be updated (CheckManifest), before any table is baked.
+void PrepareOutputFolder(const std::string& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) {
+    if (std::filesystem::exists(std::filesystem::symlink_status(dir, ec)))
+      throw std::runtime_error("bake: --out '" + dir + "' exists and is not a folder");
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("bake: cannot create folder '" + dir + "': " + ec.message());
+  }
+  CheckManifest(dir);
+}
+
+}  // namespace
 
 void RegisterBake(CLI::App& app) {
   auto* sub = app.add_subcommand("bake", "bake the default catalogue (or --only some tables) into DIR");
@@ -45,9 +63,7 @@ void RegisterBake(CLI::App& app) {
     if (oScene->count() && args->scene.empty()) throw std::invalid_argument("bake: --scene '' names no file");
     if (oScene->count()) {
       if (oOnly->count()) throw std::invalid_argument("bake: give --scene or --only, not both");
-      struct stat st {};
-      if (stat(args->out.c_str(), &st) != 0 && mkdir(args->out.c_str(), 0755) != 0)
-        throw std::runtime_error("bake: cannot create folder '" + args->out + "'");
+      PrepareOutputFolder(args->out);
       BakeOptions bopt;
       bopt.threads = args->threads;
       bopt.progress = isatty(STDOUT_FILENO);
@@ -68,30 +84,27 @@ void RegisterBake(CLI::App& app) {
       for (const std::string& name : splitList(args->only, ','))
         specs.push_back(CatalogueTable(name, copt));
     }
-    struct stat st {};
-    if (stat(args->out.c_str(), &st) != 0 && mkdir(args->out.c_str(), 0755) != 0)
-      throw std::runtime_error("bake: cannot create folder '" + args->out + "'");
+    PrepareOutputFolder(args->out);
     bool tty = isatty(STDOUT_FILENO);
     BakeOptions bopt;
     bopt.threads = args->threads;
     bopt.progress = tty;
     bopt.measureLookupError = !args->noLookup;
-    std::vector<Table> baked;
-    std::vector<long long> evals;
+    size_t baked = 0;
     auto t0 = std::chrono::steady_clock::now();
     for (const TableSpec& spec : specs) {
       BakeStats stats;
       Table t = BakeTable(spec, bopt, &stats);
-      WriteBakedTable(args->out, t, args->half, args->header, args->threads);
+      // Table and manifest entry land together, table by table: a bake killed after table k
+      // leaves a manifest that describes tables 1..k (and the older files) correctly.
+      CommitBakedTable(args->out, t, stats.evals, args->half, args->header, args->threads);
       if (tty)
         std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n", t.name.c_str(),
                     stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError, t.lookupError.max);
-      evals.push_back(stats.evals);
-      baked.push_back(std::move(t));
+      ++baked;
     }
-    UpdateManifest(args->out, baked, evals);
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (tty) std::printf("baked %zu tables into %s in %.2f s\n", baked.size(), args->out.c_str(), seconds);
+    if (tty) std::printf("baked %zu tables into %s in %.2f s\n", baked, args->out.c_str(), seconds);
   });
 }
 

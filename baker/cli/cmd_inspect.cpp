@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "baker/cli/commands.h"
+#include "baker/io/atomic_write.h"
 #include "baker/io/png_writer.h"
 #include "kiln/exr_loader.h"
 
@@ -16,6 +17,8 @@ void RegisterInspect(CLI::App& app) {
   sub->add_option("file", args->file, "a kiln .exr table")->required();
   sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
   sub->callback([args] {
+    // A device, FIFO, link or folder at --png is refused before anything is printed.
+    if (!args->png.empty()) CheckWritableTarget(args->png);
     Table t = loadTable(args->file);
     std::printf("file            %s\n", args->file.c_str());
     std::printf("name            %s\n", t.name.c_str());

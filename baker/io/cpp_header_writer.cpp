@@ -194,13 +194,19 @@ std::string cppHeaderText(const Table& table) {
 }
 
 void writeCppHeader(const std::string& path, const Table& table) {
+    PendingFile file(path);
+    writeCppHeader(file, table);
+    PendingFile::CommitAll({&file});
+}
+
+void writeCppHeader(PendingFile& file, const Table& table) {
     std::string text;
     try {
         text = cppHeaderText(table);
     } catch (const std::exception& e) {
-        throw std::runtime_error("kiln: cannot write '" + path + "': " + e.what());
+        throw std::runtime_error("kiln: cannot write '" + file.Path() + "': " + e.what());
     }
-    writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, text); });
+    file.WriteBytes(text);
 }
 
 }  // namespace kiln

@@ -7,6 +7,8 @@
 
 namespace kiln {
 
+class PendingFile;
+
 /// The C++ identifier the header writer uses for a table name: every
 /// character outside [A-Za-z0-9_] becomes '_', runs of '_' collapse, a
 /// leading digit or '_' (or an empty name) gets the prefix "t_", and a C++
@@ -26,5 +28,10 @@ std::string cppHeaderText(const Table& table);
 /// rename (see writeAtomically); throws std::runtime_error with a one-line
 /// message on failure.
 void writeCppHeader(const std::string& path, const Table& table);
+
+/// Writes cppHeaderText(table) into `file`'s temporary file, without the
+/// rename (the caller commits it, PendingFile::CommitAll); throws like
+/// writeCppHeader.
+void writeCppHeader(PendingFile& file, const Table& table);
 
 }  // namespace kiln

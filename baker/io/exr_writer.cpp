@@ -1,4 +1,4 @@
-// Writes a kiln table as an OpenEXR file (temporary file + rename).
+// Writes a kiln table as an OpenEXR file (a temporary file of its own + rename).
 #include "baker/io/exr_writer.h"
 
 #include <OpenEXR/ImfChannelList.h>
@@ -107,6 +107,13 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
 }
 
 void writeTable(const std::string& path, const Table& table, bool half, int threads) {
+    PendingFile file(path);
+    writeTable(file, table, half, threads);
+    PendingFile::CommitAll({&file});
+}
+
+void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
+    const std::string& path = file.Path();
     std::string problem;
     if (!validateTable(table, problem))
         throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
@@ -118,7 +125,7 @@ void writeTable(const std::string& path, const Table& table, bool half, int thre
         }
     }
     if (threads > 1 && Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
-    writeAtomically(path, [&](const std::string& temporaryPath) {
+    file.Write([&](const std::string& temporaryPath) {
         writeExrFile(temporaryPath, table, half, threads);
         // OpenEXR writes the line offset table in a destructor that swallows
         // errors (e.g. a full disk), so reopen the file before the rename.

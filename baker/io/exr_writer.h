@@ -9,6 +9,8 @@
 
 namespace kiln {
 
+class PendingFile;
+
 /// Sets every kiln.* attribute of `table` on `header` (the contract in
 /// runtime/FORMAT.md): kiln.format = kFormatVersion, strings as
 /// StringAttribute, ints as IntAttribute, doubles as DoubleAttribute. Does not
@@ -19,10 +21,11 @@ void setKilnAttributes(Imf::Header& header, const Table& table);
 /// size0 and height size1 * size2 (data window origin (0, 0)), one channel per
 /// table channel named as in table.channels, ZIP compression, FLOAT pixels or
 /// HALF when `half` is true, and all kiln.* attributes. The same table always
-/// gives the same bytes. The file is written to "<path>.tmp" and renamed into
-/// place; on any error the temporary file is removed, an existing file at
-/// `path` is left intact, and std::runtime_error is thrown with a one-line
-/// message. Refuses a table that fails validateTable, and in half mode a
+/// gives the same bytes. The file is written to a temporary file of its own
+/// (PendingFile, baker/io/atomic_write.h) and renamed into place; on any error
+/// the temporary file is removed, an existing file at `path` is left intact,
+/// and std::runtime_error is thrown with a one-line message; `path` must be
+/// missing or a regular file (CheckWritableTarget). Refuses a table that fails validateTable, and in half mode a
 /// texel whose magnitude exceeds the largest half (65504). Before the rename the
 /// temporary file is reopened and must be complete (header and every line
 /// offset readable): OpenEXR writes the offsets in a destructor that swallows
@@ -30,5 +33,10 @@ void setKilnAttributes(Imf::Header& header, const Table& table);
 /// OpenEXR's global thread pool (grown to that size); the bytes do not depend
 /// on it.
 void writeTable(const std::string& path, const Table& table, bool half, int threads = 1);
+
+/// writeTable's checks and write into `file`'s temporary file, without the
+/// rename: the caller commits it (PendingFile::CommitAll), e.g. together with
+/// the manifest. Throws like writeTable.
+void writeTable(PendingFile& file, const Table& table, bool half, int threads = 1);
 
 }  // namespace kiln

@@ -18,9 +18,8 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOpt
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("bake: cannot create folder '" + dir + "': " + ec.message());
+  CheckManifest(dir);  // refuse a corrupt manifest before baking anything
   SceneBakeResult result;
-  std::vector<Table> baked;
-  std::vector<long long> evals;
   for (const PlannedTable& t : plan.tables) {
     const TableSpec& spec = t.spec;
     if (StateOf(spec, dir) == TableState::UpToDate) {
@@ -34,7 +33,8 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOpt
     }
     BakeStats stats;
     Table table = BakeTable(spec, opt, &stats);
-    WriteBakedTable(dir, table, half, header, opt.threads);
+    // Table and manifest entry land together (CommitBakedTable), table by table.
+    CommitBakedTable(dir, table, stats.evals, half, header, opt.threads);
     if (log) {
       std::fprintf(log, "baked   %-36s %8zu texels %8.2f s", spec.name.c_str(), spec.TexelCount(),
                    stats.seconds + stats.lookupSeconds);
@@ -42,10 +42,7 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOpt
       std::fprintf(log, "\n");
     }
     result.baked.push_back(spec.name);
-    evals.push_back(stats.evals);
-    baked.push_back(std::move(table));
   }
-  if (!baked.empty()) UpdateManifest(dir, baked, evals);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (log)
     std::fprintf(log, "scene %s: %zu baked, %zu skipped (up to date) in %.2f s -> %s\n", plan.scenePath.c_str(),
