@@ -1,5 +1,6 @@
 #include "baker/scene/scene_json.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -169,15 +170,16 @@ std::string ReadSceneFile(const std::string& path) {
       return glb;
     }
   }
-  // A bounded read, also for what stat cannot size (a device such as /dev/zero, a pipe).
+  // A bounded read, also for what stat cannot size (a device such as /dev/zero, a pipe): at most
+  // the cap, then one byte more says the file is larger.
   std::string bytes;
   char buffer[65536];
-  while (in) {
-    in.read(buffer, sizeof buffer);
+  while (in && bytes.size() < kMaxSceneBytes) {
+    in.read(buffer, static_cast<std::streamsize>(std::min(sizeof buffer, kMaxSceneBytes - bytes.size())));
     bytes.append(buffer, static_cast<size_t>(in.gcount()));
-    if (bytes.size() > kMaxSceneBytes) throw SceneError(path, "", tooLarge);
   }
   if (in.bad()) throw SceneError(path, "", "cannot read the file");
+  if (in && in.peek() != std::ifstream::traits_type::eof()) throw SceneError(path, "", tooLarge);
   return bytes;
 }
 
