@@ -202,7 +202,7 @@ TEST_CASE("kiln bake --only '' is refused, not the whole catalogue", "[stress][h
   CHECK((!std::filesystem::exists(dir / "out") || std::filesystem::is_empty(dir / "out")));
 }
 
-// kiln verify checks -j like kiln bake and kiln bench (0: all cores, else [1, 1024]): -j
+// kiln verify checks -j like kiln bake and kiln bench ([1, 1024] when given; not given: all cores): -j
 // 1000000000 would make tbb::task_arena crash the process, and -j -3 is no thread count.
 TEST_CASE("kiln verify refuses absurd thread counts", "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_verify");
@@ -242,7 +242,7 @@ TEST_CASE("Options that size the work are refused outside their ranges, -j 0 and
 
 // oneTBB printed "TBB Warning: The number of workers is currently limited to 1" for any -j above
 // the number of cores (issue #17 saw it at -j 256); main() raises oneTBB's limit to 1024.
-TEST_CASE("-j above the number of cores runs without a oneTBB warning", "[stress][hostile][cli]") {
+TEST_CASE("A thread count above the number of cores runs without a oneTBB warning", "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_threads");
   for (const std::string j : {"256", "1024"}) {
     auto r = RunKilnFor(120, "bake --only lambert-albedo --size 3 -j " + j + " --out " + Quote(dir.path.string()));
