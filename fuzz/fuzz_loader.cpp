@@ -1,7 +1,8 @@
 // libFuzzer target for the kiln runtime's EXR loader (runtime/src/exr_loader.cpp).
 //
 // Every input is written to an anonymous memory file (memfd, nothing on disk) and loaded with
-// kiln::loadTable through its /proc/self/fd path. The contract checked (a violation aborts, which libFuzzer reports as a crash):
+// kiln::loadTable through its /proc/self/fd path. The contract checked (a violation aborts, which
+// libFuzzer reports as a crash):
 // - loadTable never throws and never crashes (ASan/UBSan watch the memory and arithmetic);
 // - on failure the error is one non-empty line starting "kiln: cannot load table '";
 // - on success the table passes validateTable, and sampling it anywhere (corners, NaN and

@@ -236,9 +236,11 @@ HeaderFacts checkHeader(const std::string& path) {
     const std::string corrupt = "cannot read the OpenEXR header (truncated or corrupt file): ";
     unsigned char start[8];
     if (!in.read(reinterpret_cast<char*>(start), 8)) throw Refusal(corrupt + "no version word");
-    if ((start[5] & 0x02) != 0) throw Refusal("a tiled OpenEXR file; kiln tables are scanline files");
+    if ((start[5] & 0x02) != 0)
+        throw Refusal("a tiled OpenEXR file; kiln tables are scanline files");
     if ((start[5] & 0x18) != 0)
-        throw Refusal("a multi-part or deep OpenEXR file; kiln tables are single-part scanline files");
+        throw Refusal(
+            "a multi-part or deep OpenEXR file; kiln tables are single-part scanline files");
     const std::size_t maxName = (start[5] & 0x04) != 0 ? 255 : 31;  // bit 10: long names
     auto position = [&] { return static_cast<std::int64_t>(in.tellg()); };
     // Reads a \0-terminated string of at most maxName characters, within `limit` bytes of the
@@ -309,26 +311,29 @@ HeaderFacts checkHeader(const std::string& path) {
             // int32 length, then the characters, until the declared size is used up exactly.
             while (position() < valueEnd) {
                 if (valueEnd - position() < 4)
-                    throw Refusal(corrupt + where + ": a string length runs past the declared size");
+                    throw Refusal(corrupt + where +
+                                  ": a string length runs past the declared size");
                 readBytes(b, 4, where);
                 const std::int32_t length = int32At(b);
                 if (length < 0 || length > valueEnd - position())
-                    throw Refusal(corrupt + where + ": a string declares " + std::to_string(length) +
-                                  " bytes, the attribute has " + std::to_string(valueEnd - position()) +
-                                  " left");
+                    throw Refusal(corrupt + where + ": a string declares " +
+                                  std::to_string(length) + " bytes, the attribute has " +
+                                  std::to_string(valueEnd - position()) + " left");
                 in.seekg(length, std::ios::cur);
             }
         } else if (type == "preview") {
-            if (size < 8) throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes");
+            if (size < 8)
+                throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes");
             readBytes(b, 8, where);
             const std::uint32_t width = static_cast<std::uint32_t>(int32At(b));
             const std::uint32_t height = static_cast<std::uint32_t>(int32At(b + 4));
             const std::uint64_t pixels = std::uint64_t{width} * height;  // < 2^64
-            const std::uint64_t needs = pixels < (std::uint64_t{1} << 61) ? 8 + 4 * pixels : ~std::uint64_t{0};
+            const std::uint64_t needs =
+                pixels < (std::uint64_t{1} << 61) ? 8 + 4 * pixels : ~std::uint64_t{0};
             if (needs != std::uint64_t(size))
-                throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes, its " +
-                              std::to_string(width) + " x " + std::to_string(height) + " pixels need " +
-                              std::to_string(needs));
+                throw Refusal(corrupt + where + " declares " + std::to_string(size) +
+                              " bytes, its " + std::to_string(width) + " x " +
+                              std::to_string(height) + " pixels need " + std::to_string(needs));
         } else if (type == "idmanifest") {
             throw Refusal(corrupt + where + ": ID manifests are not read by kiln");
         } else if (name == "dataWindow" && type == "box2i") {
@@ -347,8 +352,8 @@ HeaderFacts checkHeader(const std::string& path) {
     }
     facts.headerEnd = position();
     if (facts.headerEnd > kMaxHeaderBytes)
-        throw Refusal(corrupt + "the header is larger than " + std::to_string(kMaxHeaderBytes >> 20) +
-                      " MiB");
+        throw Refusal(corrupt + "the header is larger than " +
+                      std::to_string(kMaxHeaderBytes >> 20) + " MiB");
     return facts;
 }
 
@@ -361,7 +366,8 @@ void checkDataWindow(const HeaderFacts& facts) {
     const std::int64_t width = facts.maxX - facts.minX + 1;
     const std::int64_t height = facts.maxY - facts.minY + 1;
     if (width < 1 || height < 1)
-        throw Refusal("the data window is " + std::to_string(width) + " x " + std::to_string(height));
+        throw Refusal("the data window is " + std::to_string(width) + " x " +
+                      std::to_string(height));
     // Scan lines per block and the largest compression ratio of each OpenEXR compression: RLE
     // packs 128 equal bytes into 2, zlib (ZIPS, ZIP, PXR24) at most ~1032:1; PIZ, B44 and DWA
     // are given a wide margin.
