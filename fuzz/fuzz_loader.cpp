@@ -1,7 +1,8 @@
 // libFuzzer target for the kiln runtime's EXR loader (runtime/src/exr_loader.cpp).
 //
-// Every input is written to a private temporary file and loaded with kiln::loadTable. The
-// contract checked (a violation aborts, which libFuzzer reports as a crash):
+// Every input is written to an anonymous memory file (memfd, nothing on disk) and loaded with
+// kiln::loadTable through its /proc/self/fd path. The contract checked (a violation aborts, which
+// libFuzzer reports as a crash):
 // - loadTable never throws and never crashes (ASan/UBSan watch the memory and arithmetic);
 // - on failure the error is one non-empty line starting "kiln: cannot load table '";
 // - on success the table passes validateTable, and sampling it anywhere (corners, NaN and
@@ -12,6 +13,7 @@
 //   sizes first (the regression files are tests/fuzz_corpus/oom-*.exr).
 // See docs/stress.md for how to build and run it; the corpus to start from is
 // tests/fuzz_corpus/ (small valid kiln tables and the crashers found so far).
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -30,13 +32,30 @@ namespace {
   std::abort();
 }
 
-/// A temporary file of this process (libFuzzer may run several processes with -jobs).
-const std::string& TempPath() {
-  static const std::string path = [] {
-    const char* dir = std::getenv("TMPDIR");
-    return std::string(dir ? dir : "/tmp") + "/kiln_fuzz_loader_" + std::to_string(getpid()) + ".exr";
-  }();
+/// The file the inputs are written to: an anonymous memory file (memfd), reached by path through
+/// /proc/self/fd, so that nothing is left in /tmp however a -fork job ends (a file per job was
+/// left behind when it was a named temporary file). Empty when memfd_create is not available.
+int InputFd() {
+  static const int fd = memfd_create("kiln_fuzz_loader", 0);
+  return fd;
+}
+
+const std::string& InputPath() {
+  static const std::string path = "/proc/self/fd/" + std::to_string(InputFd());
   return path;
+}
+
+/// Replaces the memory file's contents with the input; false when it cannot.
+bool WriteInput(const uint8_t* data, size_t size) {
+  const int fd = InputFd();
+  if (fd < 0 || ftruncate(fd, 0) != 0) return false;
+  size_t done = 0;
+  while (done < size) {
+    ssize_t n = pwrite(fd, data + done, size - done, static_cast<off_t>(done));
+    if (n <= 0) return false;
+    done += static_cast<size_t>(n);
+  }
+  return true;
 }
 
 void CheckSampling(const kiln::Table& table) {
@@ -84,11 +103,11 @@ bool DeclaresOversizedAttribute(const uint8_t* data, size_t size) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const bool oversized = DeclaresOversizedAttribute(data, size);
-  const std::string& path = TempPath();
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) return 0;
-  if (size > 0) std::fwrite(data, 1, size, f);
-  std::fclose(f);
+  if (!WriteInput(data, size)) {
+    std::fprintf(stderr, "fuzz_loader: cannot write the input to a memory file\n");
+    std::abort();
+  }
+  const std::string& path = InputPath();
 
   kiln::Table table;
   std::string error;

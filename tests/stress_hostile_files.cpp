@@ -128,6 +128,9 @@ struct Fixture {
         edited("dims 1000", [](Imf::Header& h) { h.insert("kiln.dims", Imf::IntAttribute(1000)); }),
         withTable("NaN texel", [](Table& t) { t.data[3] = std::numeric_limits<float>::quiet_NaN(); }),
         withTable("infinite texel", [](Table& t) { t.data[0] = std::numeric_limits<float>::infinity(); }),
+        // Issue #17: these loaded, and verify reported its worst point at mu = inf.
+        withTable("axis lo -1e308, hi 1e308", [](Table& t) { t.axes[0].axis = {-1e308, 1e308, 5, Warp::Linear}; }),
+        withTable("axis hi 1e7", [](Table& t) { t.axes[1].axis.hi = 1e7; }),
     };
     absurd = {
         withTable("unknown quantity", [](Table& t) { t.quantity = "volume"; }),
@@ -379,4 +382,51 @@ TEST_CASE("A scene number that overflows a double is refused naming the file",
   CHECK(r.err.find(path) != std::string::npos);
   CHECK(r.err.find("line 1, column 84") != std::string::npos);
   CHECK(r.err.find("1e999") != std::string::npos);
+}
+
+// Issue #17: a table whose mu axis ends at 1e-320 made `kiln verify` hang like `kiln integrate
+// --mu 5e-324` (the masking panels of baker/integrate/hemisphere.h started at a step that rounds
+// to 0). Killed after 120 s; it must report the table (its texels are not the integrals at those
+// mu, so it may exceed its bound) and end.
+TEST_CASE("kiln verify of a table whose mu axis ends at a subnormal terminates", "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_subnormal_axis");
+  REQUIRE(RunKilnFor(120, "bake --only ggx-albedo --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  Table t = loadTable(dir / "ggx-albedo.exr");
+  REQUIRE(t.axes[0].name == "mu");
+  t.axes[0].axis.lo = 0;
+  t.axes[0].axis.hi = 1e-320;
+  WriteRaw(dir / "subnormal.exr", KilnHeader(t), t);
+  std::string args = "verify " + Quote(dir / "subnormal.exr") + " --points 20 -j 2";
+  auto r = RunKilnFor(120, args);
+  INFO(Describe(args, r));
+  CHECK((r.exitCode == 0 || IsCleanRefusal(r, true)));
+  CHECK(r.out.find("1 tables") != std::string::npos);
+}
+
+// Issue #17: the EXR loader allocated before it knew the data existed (a 9.8 KB file declaring a
+// 32768 x 16384 x 2 data window cost 4 GiB and 22 s), and OpenEXR's header reading could be
+// talked past the attribute-size check (a channel list or a box whose declared size disagrees
+// with what OpenEXR reads, then a 1.77 GB string; a string vector or a preview declaring
+// gigabytes inside a small attribute). The files are in tests/fuzz_corpus/ (oom-*, loaded by
+// every test run, and by kiln inspect with 1 GB of memory in stress_fuzz_loader.cpp); here each
+// is refused for its own reason.
+TEST_CASE("Crafted headers and data windows are refused from the header, each for its reason",
+          "[stress][hostile][io]") {
+  const std::string corpus = std::string(KILN_SOURCE_DIR) + "/tests/fuzz_corpus/";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"oom-scanline-window-32768x16384.exr", "the data window (32768 x 16384) needs 1024 blocks of scan lines"},
+      {"oom-chlist-size-disagrees.exr", "attribute 'channels' (chlist) declares 37 bytes but its list ends after 19"},
+      {"oom-box2i-size-disagrees.exr", "attribute 'dataWindow' (box2i) declares 34 bytes, a box2i has 16"},
+      {"fuzz-stringvector-2gb.exr", "a string declares 2000000000 bytes"},
+      {"fuzz-preview-40000x40000.exr", "declares 8 bytes, its 40000 x 40000 pixels need 6400000008"},
+      {"fuzz-axis-1e308.exr", "beyond +-1e6"},
+  };
+  for (const auto& [file, reason] : cases) {
+    Table t;
+    std::string error;
+    CHECK_FALSE(loadTable(corpus + file, t, error));
+    INFO(file << ": " << error);
+    CHECK(error.find(reason) != std::string::npos);
+    CHECK(error.find('\n') == std::string::npos);
+  }
 }

@@ -59,8 +59,10 @@ void RegisterIntegrate(CLI::App& app) {
     for (const QuantityInfo* i : Integrable())
       if (q == i->integrateName) info = i;
     if (!info) throw std::invalid_argument("integrate: unknown quantity '" + q + "'");
-    if (!(args->tol > 0 && args->tol < 1))
-      throw std::invalid_argument("integrate: --tol must be in (0, 1)");
+    // Below 1e-13 the error estimates are rounding noise: the work grows without bound.
+    if (!(args->tol >= 1e-13 && args->tol <= 0.1))
+      throw std::invalid_argument("integrate: --tol " + FullPrecision(args->tol) +
+                                  " must be in [1e-13, 0.1]");
     bool needsMu = info->integrateNeedsMu;
     if (needsMu && !args->oMu->count()) throw std::invalid_argument("integrate " + q + ": needs --mu");
     if (!needsMu && args->oMu->count())

@@ -18,9 +18,10 @@ void RegisterPlan(CLI::App& app) {
   auto args = std::make_shared<Args>();
   sub->add_option("scene", args->scene, "glTF 2.0 (.gltf, .glb) or kiln scene (.json) file")->required();
   sub->add_option("--out,-o", args->out, "folder the tables are baked into")->capture_default_str();
-  sub->add_option("--size", args->size, "nodes on every catalogue axis before narrowing (default: the catalogue's)");
-  sub->callback([args] {
-    if (args->size != 0 && (args->size < 2 || args->size > 4096))
+  CLI::Option* oSize =
+      sub->add_option("--size", args->size, "nodes on every catalogue axis before narrowing (default: the catalogue's)");
+  sub->callback([args, oSize] {
+    if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("plan: --size " + std::to_string(args->size) + " must be in [2, 4096]");
     PlanOptions opt;
     opt.size = args->size;

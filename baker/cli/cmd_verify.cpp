@@ -3,6 +3,8 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <stdexcept>
 
@@ -13,9 +15,16 @@
 namespace kiln::cli {
 namespace {
 
+/// The most cell centres and the most random points verify takes per table.
+constexpr long long kMaxVerifyPoints = 10000000;
+
 std::vector<std::string> ExrFiles(const std::string& path) {
   struct stat st {};
-  if (stat(path.c_str(), &st) != 0) throw std::invalid_argument("verify: no such file or folder '" + path + "'");
+  if (stat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT || errno == ENOTDIR)
+      throw std::invalid_argument("verify: no such file or folder '" + path + "'");
+    throw std::invalid_argument("verify: cannot access '" + path + "' (" + std::strerror(errno) + ")");
+  }
   if (!S_ISDIR(st.st_mode)) return {path};
   std::vector<std::string> out;
   if (DIR* d = opendir(path.c_str())) {
@@ -55,9 +64,13 @@ void RegisterVerify(CLI::App& app) {
                   "not checked against the bound)")
       ->check(CLI::IsMember({"linear", "cubic"}));
   sub->callback([args] {
-    if (args->cells < 0) throw std::invalid_argument("verify: --cells must be >= 0");
-    if (args->points < 0) throw std::invalid_argument("verify: --points must be >= 0");
-    if (!(args->tol > 0 && args->tol <= 1e-4)) throw std::invalid_argument("verify: --tol must be in (0, 1e-4]");
+    // Caps on the work (each point is one integral, and 17 bytes of bookkeeping).
+    if (args->cells < 0 || args->cells > kMaxVerifyPoints)
+      throw std::invalid_argument("verify: --cells " + std::to_string(args->cells) + " must be in [0, 1e7]");
+    if (args->points < 0 || args->points > kMaxVerifyPoints)
+      throw std::invalid_argument("verify: --points " + std::to_string(args->points) + " must be in [0, 1e7]");
+    if (!(args->tol >= 1e-12 && args->tol <= 1e-4))
+      throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) + " must be in [1e-12, 1e-4]");
     CheckThreads("verify", args->threads);
     std::vector<std::string> files;
     for (const std::string& p : args->paths)

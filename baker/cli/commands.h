@@ -24,9 +24,21 @@ std::string FullPrecision(double x);
 /// would read '' as 0. main() calls it once, after every subcommand is registered.
 void RefuseNonNumbers(CLI::App& app);
 
-/// The -j/--threads check of every command that takes it: 0 (all cores) or [1, 1024]; throws
-/// std::invalid_argument "COMMAND: -j N must be in [1, 1024]" otherwise.
+/// The most threads -j takes; main() raises oneTBB's limit to it (by default oneTBB allows the
+/// cores' count and warns on stderr at any larger arena).
+constexpr int kMaxThreads = 1024;
+
+/// The -j/--threads check of every command that takes it: 0 (all cores) or [1, kMaxThreads];
+/// throws std::invalid_argument "COMMAND: -j N must be in [1, 1024]" otherwise.
 void CheckThreads(const std::string& command, int threads);
+
+/// Makes every --threads option of every subcommand of `app` refuse a value outside
+/// [1, kMaxThreads] when given (-j 0 included; 0 stays the default meaning all cores).
+void CheckThreadOptions(CLI::App& app);
+
+/// argv[1..] for CLI11, with the numbers CLI11 2.1 would take for options ("-inf", "-nan", "-.5")
+/// kept as values: each gets a leading space, which strtod skips.
+std::vector<std::string> NumbersAsPositionals(int argc, char** argv);
 
 void RegisterList(CLI::App& app);
 void RegisterEval(CLI::App& app);

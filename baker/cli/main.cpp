@@ -1,7 +1,11 @@
 // kiln: bakes BRDFs and their hemispherical integrals into OpenEXR lookup tables.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
+
+#include <tbb/global_control.h>
 
 #include "baker/cli/bench_commands.h"
 #include "baker/cli/commands.h"
@@ -22,8 +26,14 @@ int main(int argc, char** argv) {
   kiln::cli::RegisterPlan(app);
   kiln::cli::RegisterBench(app);
   kiln::cli::RefuseNonNumbers(app);
+  kiln::cli::CheckThreadOptions(app);
+  // -j above the number of cores is allowed (up to kMaxThreads): without this oneTBB would print
+  // a warning and run fewer threads.
+  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, kiln::cli::kMaxThreads);
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = kiln::cli::NumbersAsPositionals(argc, argv);
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    app.parse(args);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {

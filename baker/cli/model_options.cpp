@@ -1,6 +1,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "baker/cli/commands.h"
 
@@ -68,8 +70,42 @@ void RefuseNonNumbers(CLI::App& app) {
 }
 
 void CheckThreads(const std::string& command, int threads) {
-  if (threads < 0 || threads > 1024)
-    throw std::invalid_argument(command + ": -j " + std::to_string(threads) + " must be in [1, 1024]");
+  if (threads < 0 || threads > kMaxThreads)
+    throw std::invalid_argument(command + ": -j " + std::to_string(threads) + " must be in [1, " +
+                                std::to_string(kMaxThreads) + "]");
+}
+
+void CheckThreadOptions(CLI::App& app) {
+  for (CLI::Option* o : app.get_options()) {
+    if (o->get_name() != "--threads") continue;
+    // Only a -j the user gave is checked: the commands' own default 0 means all cores.
+    o->check(CLI::Validator(
+        [](std::string& text) -> std::string {
+          char* end = nullptr;
+          long long n = std::strtoll(text.c_str(), &end, 0);
+          if (n >= 1 && n <= kMaxThreads) return "";
+          return "-j " + text + " must be in [1, " + std::to_string(kMaxThreads) + "]";
+        },
+        ""));
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) CheckThreadOptions(*sub);
+}
+
+std::vector<std::string> NumbersAsPositionals(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    // "-inf", "-nan", "-.5": CLI11 2.1 takes them for the short options -i, -n, -. (it only
+    // knows numbers that start "-DIGIT"). A leading space keeps them numbers (strtod and CLI11's
+    // conversions skip it) and out of CLI11's option syntax.
+    if (a.size() > 1 && a[0] == '-' && !(a[1] >= '0' && a[1] <= '9') && a[1] != '-') {
+      char* end = nullptr;
+      std::strtod(a.c_str(), &end);
+      if (end == a.c_str() + a.size()) a = " " + a;
+    }
+    args.push_back(a);
+  }
+  return args;
 }
 
 }  // namespace kiln::cli

@@ -140,8 +140,9 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
     // panels in mu_l resolve that scale. mu_l = 2 cos_h (sin_o sin_h cos(phi) + mu_o cos_h) - mu_o.
     double den = 2 * h.cosTheta * sinTheta_o * h.sinTheta;
     double scale = std::min(mu_o, model.MaskingScale());
+    // m > 0: at the smallest subnormals scale / 4 rounds to 0, and 0 * 4 would loop forever.
     if (den > 0 && scale > 0)
-      for (double m = scale / 4; m < 0.25 && np < 16; m *= 4) {
+      for (double m = scale / 4; m > 0 && m < 0.25 && np < 16; m *= 4) {
         double cphi = (m + mu_o - 2 * mu_o * Sqr(h.cosTheta)) / den;
         if (cphi > std::max(c, -1.0) && cphi < 1) phis[np++] = std::acos(cphi);
       }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <vector>
 
 #include "baker/scene/glb.h"
 #include "baker/scene/gltf_materials.h"
@@ -38,24 +39,59 @@ void CheckVersion(const Json& doc, const JsonReader& r) {
 }
 
 /// Every textureInfo (an object under a key ending in "Texture", outside "extras") in `v` must
-/// name a texture.
+/// name a texture. Iterative, depth first in document order: the stack holds one frame per level
+/// (the parser bounds the depth), and a frame's JSON pointer is only built for a message.
 void CheckTextureInfos(const Json& v, const std::string& at, size_t textures, const JsonReader& r) {
-  if (v.is_object()) {
-    for (auto it = v.begin(); it != v.end(); ++it) {
-      std::string p = PointerChild(at, it.key());
-      const std::string& key = it.key();
-      if (key == "extras") continue;  // application data: not glTF's to check
+  struct Frame {
+    const Json* value;
+    Json::const_iterator next;  ///< the next child to visit
+    size_t index = 0;           ///< its index, for an array
+  };
+  std::vector<Frame> stack;
+  auto push = [&](const Json& value) {
+    if (value.is_object() || value.is_array()) stack.push_back({&value, value.cbegin(), 0});
+  };
+  // The pointer of the child the top frame is visiting.
+  auto pointer = [&]() {
+    std::string p = at;
+    for (const Frame& f : stack)
+      p = f.value->is_object() ? PointerChild(p, f.next.key()) : PointerChild(p, f.index);
+    return p;
+  };
+  push(v);
+  while (!stack.empty()) {
+    Frame& top = stack.back();
+    if (top.next == top.value->cend()) {
+      stack.pop_back();
+      if (!stack.empty()) {
+        ++stack.back().next;
+        ++stack.back().index;
+      }
+      continue;
+    }
+    const Json& child = *top.next;
+    if (top.value->is_object()) {
+      const std::string& key = top.next.key();
+      if (key == "extras") {  // application data: not glTF's to check
+        ++top.next;
+        continue;
+      }
       bool textureInfo = key.size() > 7 && key.compare(key.size() - 7, 7, "Texture") == 0;
       if (textureInfo) {
-        r.Object(*it, p);
-        const Json* index = JsonReader::Find(*it, "index");
-        if (!index) r.Fail(p, "textureInfo without \"index\"");
-        r.Index(*index, PointerChild(p, "index"), textures, "texture");
+        if (!child.is_object()) r.Object(child, pointer());
+        const Json* index = JsonReader::Find(child, "index");
+        if (!index) r.Fail(pointer(), "textureInfo without \"index\"");
+        if ((!index->is_number_integer() && !index->is_number_unsigned()) ||
+            index->get<long long>() < 0 || index->get<unsigned long long>() >= textures)
+          r.Index(*index, PointerChild(pointer(), "index"), textures, "texture");
       }
-      CheckTextureInfos(*it, p, textures, r);
     }
-  } else if (v.is_array()) {
-    for (size_t i = 0; i < v.size(); ++i) CheckTextureInfos(v[i], PointerChild(at, i), textures, r);
+    if (child.is_object() || child.is_array()) {
+      push(child);
+    } else {
+      ++top.next;
+      ++top.index;
+    }
   }
 }
 

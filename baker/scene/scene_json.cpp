@@ -1,6 +1,8 @@
 #include "baker/scene/scene_json.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -65,9 +67,35 @@ std::string JsonErrorDetail(const std::string& what) {
   return detail;
 }
 
+/// The offset of the first '[' or '{' (outside strings) that opens level kMaxSceneDepth + 1, or
+/// npos. A pre-scan, so that a deep document costs neither the parser's memory nor the
+/// recursion of whoever walks it.
+size_t TooDeepAt(const std::string& text) {
+  size_t depth = 0;
+  bool inString = false;
+  for (size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxSceneDepth) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix) {
+  size_t deep = TooDeepAt(text);
+  if (deep != std::string::npos)
+    throw SceneError(file, prefix + LineColumn(text, deep),
+                     "nested deeper than " + std::to_string(kMaxSceneDepth) + " levels");
   Json doc;
   PlacedDomParser parser(doc);
   try {
@@ -92,15 +120,67 @@ Json ParseSceneJson(const std::string& text, const std::string& file, const std:
   }
 }
 
+namespace {
+
+constexpr uint32_t kGlbMagic = 0x46546C67;  // "glTF"
+
+uint32_t LittleU32(const char* b) {
+  return static_cast<uint32_t>(static_cast<unsigned char>(b[0])) |
+         static_cast<uint32_t>(static_cast<unsigned char>(b[1])) << 8 |
+         static_cast<uint32_t>(static_cast<unsigned char>(b[2])) << 16 |
+         static_cast<uint32_t>(static_cast<unsigned char>(b[3])) << 24;
+}
+
+/// A glb larger than the cap (its binary chunk holds meshes and images): its 12-byte header and
+/// JSON chunk, with the header's length set to what is returned, so that GlbJsonChunk reads it
+/// as it would the whole file. Empty when the file is no such glb or its JSON chunk is too large.
+std::string LargeGlbJson(std::ifstream& in, uint64_t fileSize) {
+  char head[20];
+  in.clear();
+  in.seekg(0);
+  if (!in.read(head, 20) || LittleU32(head) != kGlbMagic || LittleU32(head + 8) != fileSize) return "";
+  uint32_t chunkLength = LittleU32(head + 12);
+  if (chunkLength > kMaxSceneBytes || chunkLength > fileSize - 20) return "";
+  std::string out(head, 20);
+  out.resize(20 + size_t{chunkLength});
+  if (!in.read(&out[20], chunkLength)) return "";
+  uint32_t length = 20 + chunkLength;
+  for (int i = 0; i < 4; ++i) out[8 + i] = static_cast<char>((length >> (8 * i)) & 0xFF);
+  return out;
+}
+
+}  // namespace
+
 std::string ReadSceneFile(const std::string& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw SceneError(path, "", "is a folder, not a scene file");
+  std::filesystem::file_status status = std::filesystem::status(path, ec);
+  // A folder on the way that cannot be searched, a loop of links: said as it is, not "missing".
+  if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+    throw SceneError(path, "", "cannot access the file (" + ec.message() + ")");
+  if (std::filesystem::is_directory(status)) throw SceneError(path, "", "is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "", "cannot open the file");
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string tooLarge =
+      "larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, the most kiln reads of a scene";
+  if (std::filesystem::is_regular_file(status)) {
+    uint64_t size = std::filesystem::file_size(path, ec);
+    if (!ec && size > kMaxSceneBytes) {
+      std::string glb = LargeGlbJson(in, size);
+      if (glb.empty()) throw SceneError(path, "", tooLarge);
+      return glb;
+    }
+  }
+  // A bounded read, also for what stat cannot size (a device such as /dev/zero, a pipe): at most
+  // the cap, then one byte more says the file is larger.
+  std::string bytes;
+  char buffer[65536];
+  while (in && bytes.size() < kMaxSceneBytes) {
+    in.read(buffer, static_cast<std::streamsize>(std::min(sizeof buffer, kMaxSceneBytes - bytes.size())));
+    bytes.append(buffer, static_cast<size_t>(in.gcount()));
+  }
   if (in.bad()) throw SceneError(path, "", "cannot read the file");
-  return ss.str();
+  if (in && in.peek() != std::ifstream::traits_type::eof()) throw SceneError(path, "", tooLarge);
+  return bytes;
 }
 
 std::string JsonKind(const Json& v) {

@@ -14,11 +14,17 @@ using Json = nlohmann::json;
 std::string PointerChild(const std::string& parent, const std::string& token);
 std::string PointerChild(const std::string& parent, size_t index);
 
+/// The largest scene file ReadSceneFile reads (a larger glb: its JSON chunk, up to this size).
+constexpr size_t kMaxSceneBytes = size_t{64} << 20;
+/// The deepest nesting of arrays and objects ParseSceneJson accepts (glTF needs about 8).
+constexpr size_t kMaxSceneDepth = 64;
+
 /// Parses `text` as JSON; a syntax error throws SceneError at "line L, column C" (`prefix` goes
-/// before it, e.g. "JSON chunk, " for a glb).
+/// before it, e.g. "JSON chunk, " for a glb), and so does nesting deeper than kMaxSceneDepth.
 Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix = "");
 
-/// Reads the whole file; throws SceneError when it cannot.
+/// Reads the whole file, at most kMaxSceneBytes (a bounded read: a device or a pipe that never
+/// ends is refused at the cap); throws SceneError when it cannot.
 std::string ReadSceneFile(const std::string& path);
 
 /// Accessors for one file. `at` is always the pointer of the value passed in.

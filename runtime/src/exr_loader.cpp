@@ -10,7 +10,9 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -81,11 +83,36 @@ double optionalDouble(const Imf::Header& h, const std::string& name, double fall
 void checkReadableFile(const std::string& path) {
     std::error_code ec;
     const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    // An error other than "no such file" (a folder on the way that cannot be searched, a loop of
+    // symbolic links, a name too long) is reported as it is.
+    if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
+        throw Refusal("cannot access the file (" + ec.message() + ")");
     if (!std::filesystem::exists(status)) throw Refusal("no such file");
     if (!std::filesystem::is_regular_file(status)) throw Refusal("not a regular file");
     std::ifstream stream(path, std::ios::binary);
     if (!stream) throw Refusal("cannot open the file for reading");
     if (stream.peek() == std::ifstream::traits_type::eof()) throw Refusal("the file is empty");
+}
+
+/// x with %.17g.
+std::string numberText(double x) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return text;
+}
+
+/// The largest |lo| and |hi| of an axis: every kiln axis is a cosine, a roughness, an index of
+/// refraction or an extinction coefficient, far below it.
+constexpr double kMaxAxisMagnitude = 1e6;
+
+/// Why a valid axis is still absurd (lo or hi beyond kMaxAxisMagnitude, or hi - lo not finite,
+/// which would make every lookup and every verification point overflow); "" when it is not.
+std::string axisRangeProblem(const Axis& axis) {
+    if (!(std::fabs(axis.lo) <= kMaxAxisMagnitude && std::fabs(axis.hi) <= kMaxAxisMagnitude))
+        return "lo " + numberText(axis.lo) + " or hi " + numberText(axis.hi) +
+               " is beyond +-1e6, where no kiln axis reaches";
+    if (!std::isfinite(axis.hi - axis.lo)) return "hi - lo is not finite";
+    return "";
 }
 
 /// Fills every metadata field of `table` from the kiln.* attributes.
@@ -119,7 +146,8 @@ void readAttributes(const Imf::Header& h, Table& table) {
         if (!warpFromName(warp.c_str(), a.axis.warp))
             throw Refusal(prefix + "warp is '" + warp +
                           "', not one of linear, sqrt, square, log, root4, root4-layer, angle");
-        const std::string axisIssue = axisProblem(a.axis);
+        std::string axisIssue = axisProblem(a.axis);
+        if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
         if (!axisIssue.empty())
             throw Refusal("axis " + std::to_string(d) + " ('" + a.name + "'): " + axisIssue);
     }
@@ -160,65 +188,216 @@ void checkChannels(const Imf::ChannelList& list, const std::vector<std::string>&
     }
 }
 
-/// Walks the attribute list of every header (OpenEXR file layout: magic, version word, then per
-/// part a list of name\0 type\0 int32-size value, ended by an empty name; a multi-part file
-/// ends its list of headers with one more empty name) and refuses an attribute whose declared
-/// size does not fit in the rest of the file. OpenEXR 3.1 allocates (and for strings fills) the
-/// declared size before it reads the value, so a 1 KB file declaring a 2 GB attribute would cost
-/// 2 GB before it fails: this check answers from the bytes that are there.
-void checkAttributeSizes(const std::string& path) {
+/// Little-endian int32 at `p`.
+std::int32_t int32At(const unsigned char* p) {
+    return static_cast<std::int32_t>(std::uint32_t{p[0]} | std::uint32_t{p[1]} << 8 |
+                                     std::uint32_t{p[2]} << 16 | std::uint32_t{p[3]} << 24);
+}
+
+/// The largest header the loader reads (kiln headers are a few KB).
+constexpr std::int64_t kMaxHeaderBytes = std::int64_t{4} << 20;
+
+/// What the header walk learns for the bounds checked before OpenEXR allocates anything.
+struct HeaderFacts {
+    bool haveWindow = false;
+    std::int64_t minX = 0, minY = 0, maxX = 0, maxY = 0;  ///< dataWindow
+    int compression = 0;                                   ///< NO_COMPRESSION when absent
+    std::int64_t bytesPerPixel = 0;                        ///< sum over the channels
+    std::int64_t headerEnd = 0;                            ///< offset just past the header
+    std::int64_t fileSize = 0;
+};
+
+/// The exact value size of OpenEXR's fixed-size attribute types; -1 for the others.
+std::int64_t fixedAttributeSize(const std::string& type) {
+    static const std::pair<const char*, std::int64_t> sizes[] = {
+        {"box2i", 16},    {"box2f", 16},       {"chromaticities", 32}, {"compression", 1},
+        {"double", 8},    {"envmap", 1},       {"float", 4},           {"int", 4},
+        {"keycode", 28},  {"lineOrder", 1},    {"m33f", 36},           {"m33d", 72},
+        {"m44f", 64},     {"m44d", 128},       {"rational", 8},        {"tiledesc", 9},
+        {"timecode", 8},  {"v2i", 8},          {"v2f", 8},             {"v2d", 16},
+        {"v3i", 12},      {"v3f", 12},         {"v3d", 24},            {"deepImageState", 1}};
+    for (const auto& entry : sizes)
+        if (type == entry.first) return entry.second;
+    return -1;
+}
+
+/// Walks the header (OpenEXR file layout: magic, version word, then a list of name\0 type\0
+/// int32-size value, ended by an empty name) and refuses, from the bytes that are there, every
+/// header OpenEXR 3.1 would allocate for before failing: it allocates an attribute's declared
+/// size (up to 2 GB, strings filled), reads a channel list or a fixed-size value regardless of the
+/// declared size (so that the next attribute it reads is not the one this walk sees), allocates
+/// each string of a string vector and a preview's pixels by their own declared sizes, and sizes
+/// the line-offset table by the data window. Only single-part scanline files are kiln tables.
+HeaderFacts checkHeader(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     in.seekg(0, std::ios::end);
     const std::int64_t fileSize = static_cast<std::int64_t>(in.tellg());
     in.seekg(0, std::ios::beg);
+    const std::string corrupt = "cannot read the OpenEXR header (truncated or corrupt file): ";
     unsigned char start[8];
-    if (!in.read(reinterpret_cast<char*>(start), 8)) throw Refusal("truncated OpenEXR header");
-    const bool multiPart = (start[5] & 0x10) != 0;  // bit 12 of the version word
+    if (!in.read(reinterpret_cast<char*>(start), 8)) throw Refusal(corrupt + "no version word");
+    if ((start[5] & 0x02) != 0)
+        throw Refusal("a tiled OpenEXR file; kiln tables are scanline files");
+    if ((start[5] & 0x18) != 0)
+        throw Refusal(
+            "a multi-part or deep OpenEXR file; kiln tables are single-part scanline files");
     const std::size_t maxName = (start[5] & 0x04) != 0 ? 255 : 31;  // bit 10: long names
-    // Reads a \0-terminated string of at most maxName characters; false at an empty one.
-    auto readName = [&](std::string& name, const char* what) {
+    auto position = [&] { return static_cast<std::int64_t>(in.tellg()); };
+    // Reads a \0-terminated string of at most maxName characters, within `limit` bytes of the
+    // file; false at an empty one.
+    auto readName = [&](std::string& name, const char* what, std::int64_t limit) {
         name.clear();
         for (;;) {
+            if (position() >= limit)
+                throw Refusal(corrupt + "inside an attribute " + what);
             const int ch = in.get();
             if (ch == std::ifstream::traits_type::eof())
-                throw Refusal(std::string("truncated OpenEXR header (inside an attribute ") + what + ")");
+                throw Refusal(corrupt + "inside an attribute " + what);
             if (ch == 0) return !name.empty();
             if (name.size() >= maxName)
-                throw Refusal(std::string("corrupt OpenEXR header (an attribute ") + what +
-                              " longer than " + std::to_string(maxName) + " characters)");
+                throw Refusal(corrupt + "an attribute " + what + " longer than " +
+                              std::to_string(maxName) + " characters");
             name.push_back(static_cast<char>(ch));
         }
     };
+    auto readBytes = [&](unsigned char* out, std::int64_t n, const std::string& where) {
+        if (!in.read(reinterpret_cast<char*>(out), n)) throw Refusal(corrupt + "inside " + where);
+    };
+
+    HeaderFacts facts;
+    facts.fileSize = fileSize;
     std::string name, type;
-    for (int part = 0;; ++part) {
-        int attributes = 0;
-        while (readName(name, "name")) {
-            if (!readName(type, "type name"))
-                throw Refusal("corrupt OpenEXR header (attribute '" + name + "' has no type)");
-            unsigned char b[4];
-            if (!in.read(reinterpret_cast<char*>(b), 4)) throw Refusal("truncated OpenEXR header");
-            const std::int32_t size = static_cast<std::int32_t>(
-                std::uint32_t{b[0]} | std::uint32_t{b[1]} << 8 | std::uint32_t{b[2]} << 16 |
-                std::uint32_t{b[3]} << 24);
-            const std::int64_t left = fileSize - static_cast<std::int64_t>(in.tellg());
-            if (size < 0 || size > left)
-                throw Refusal("cannot read the OpenEXR header (truncated or corrupt file): attribute '" +
-                              name + "' declares " +
-                              std::to_string(size) + " bytes, the file has " + std::to_string(left) +
-                              " left");
-            in.seekg(size, std::ios::cur);
-            ++attributes;
+    while (readName(name, "name", fileSize)) {
+        if (position() > kMaxHeaderBytes)
+            throw Refusal(corrupt + "the header is larger than " +
+                          std::to_string(kMaxHeaderBytes >> 20) + " MiB");
+        if (!readName(type, "type name", fileSize))
+            throw Refusal(corrupt + "attribute '" + name + "' has no type");
+        unsigned char b[16];
+        readBytes(b, 4, "attribute '" + name + "'");
+        const std::int32_t size = int32At(b);
+        const std::int64_t valueStart = position();
+        const std::int64_t left = fileSize - valueStart;
+        if (size < 0 || size > left)
+            throw Refusal(corrupt + "attribute '" + name + "' declares " + std::to_string(size) +
+                          " bytes, the file has " + std::to_string(left) + " left");
+        const std::int64_t valueEnd = valueStart + size;
+        const std::string where = "attribute '" + name + "' (" + type + ")";
+        const std::int64_t fixed = fixedAttributeSize(type);
+        if (fixed >= 0 && size != fixed)
+            throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes, a " +
+                          type + " has " + std::to_string(fixed));
+        if (type == "chlist") {
+            // name\0, int32 pixel type, uchar pLinear, 3 reserved, int32 x and y sampling; an
+            // empty name ends the list, which must end exactly where the declared size does.
+            std::string channel;
+            facts.bytesPerPixel = 0;
+            while (readName(channel, "channel name", valueEnd)) {
+                if (valueEnd - position() < 16)
+                    throw Refusal(corrupt + where + ": channel '" + channel +
+                                  "' runs past the declared size");
+                readBytes(b, 16, where);
+                const std::int32_t pixelType = int32At(b);
+                if (pixelType < 0 || pixelType > 2)
+                    throw Refusal(corrupt + where + ": channel '" + channel + "' has pixel type " +
+                                  std::to_string(pixelType));
+                facts.bytesPerPixel += pixelType == 1 ? 2 : 4;  // HALF : UINT, FLOAT
+            }
+            if (position() != valueEnd)
+                throw Refusal(corrupt + where + " declares " + std::to_string(size) +
+                              " bytes but its list ends after " +
+                              std::to_string(position() - valueStart));
+        } else if (type == "stringvector") {
+            // int32 length, then the characters, until the declared size is used up exactly.
+            while (position() < valueEnd) {
+                if (valueEnd - position() < 4)
+                    throw Refusal(corrupt + where +
+                                  ": a string length runs past the declared size");
+                readBytes(b, 4, where);
+                const std::int32_t length = int32At(b);
+                if (length < 0 || length > valueEnd - position())
+                    throw Refusal(corrupt + where + ": a string declares " +
+                                  std::to_string(length) + " bytes, the attribute has " +
+                                  std::to_string(valueEnd - position()) + " left");
+                in.seekg(length, std::ios::cur);
+            }
+        } else if (type == "preview") {
+            if (size < 8)
+                throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes");
+            readBytes(b, 8, where);
+            const std::uint32_t width = static_cast<std::uint32_t>(int32At(b));
+            const std::uint32_t height = static_cast<std::uint32_t>(int32At(b + 4));
+            const std::uint64_t pixels = std::uint64_t{width} * height;  // < 2^64
+            const std::uint64_t needs =
+                pixels < (std::uint64_t{1} << 61) ? 8 + 4 * pixels : ~std::uint64_t{0};
+            if (needs != std::uint64_t(size))
+                throw Refusal(corrupt + where + " declares " + std::to_string(size) +
+                              " bytes, its " + std::to_string(width) + " x " +
+                              std::to_string(height) + " pixels need " + std::to_string(needs));
+        } else if (type == "idmanifest") {
+            throw Refusal(corrupt + where + ": ID manifests are not read by kiln");
+        } else if (name == "dataWindow" && type == "box2i") {
+            readBytes(b, 16, where);
+            facts.haveWindow = true;
+            facts.minX = int32At(b);
+            facts.minY = int32At(b + 4);
+            facts.maxX = int32At(b + 8);
+            facts.maxY = int32At(b + 12);
+        } else if (name == "compression" && type == "compression") {
+            readBytes(b, 1, where);
+            facts.compression = b[0];
         }
-        if (!multiPart || attributes == 0) return;  // single part: one list; multi-part: empty header ends
-        if (part > 1024) throw Refusal("corrupt OpenEXR header (too many parts)");
+        in.clear();
+        in.seekg(valueEnd, std::ios::beg);
     }
+    facts.headerEnd = position();
+    if (facts.headerEnd > kMaxHeaderBytes)
+        throw Refusal(corrupt + "the header is larger than " +
+                      std::to_string(kMaxHeaderBytes >> 20) + " MiB");
+    return facts;
+}
+
+/// Refuses a data window the file cannot hold, before OpenEXR sizes its line-offset table and
+/// line buffers by it and the loader its texels: every block of scan lines needs 8 bytes in the
+/// offset table and at least 8 in its own header, and the pixels cannot be larger than the bytes
+/// after the header times the best ratio of the compression in use.
+void checkDataWindow(const HeaderFacts& facts) {
+    if (!facts.haveWindow) return;  // OpenEXR refuses a header without one
+    const std::int64_t width = facts.maxX - facts.minX + 1;
+    const std::int64_t height = facts.maxY - facts.minY + 1;
+    if (width < 1 || height < 1)
+        throw Refusal("the data window is " + std::to_string(width) + " x " +
+                      std::to_string(height));
+    // Scan lines per block and the largest compression ratio of each OpenEXR compression: RLE
+    // packs 128 equal bytes into 2, zlib (ZIPS, ZIP, PXR24) at most ~1032:1; PIZ, B44 and DWA
+    // are given a wide margin.
+    struct Scheme {
+        std::int64_t lines, ratio;
+    };
+    static const Scheme schemes[] = {{1, 1},     {1, 64},     {1, 1100},  {16, 1100}, {32, 4096},
+                                     {16, 1100}, {32, 4096},  {32, 4096}, {32, 4096}, {256, 4096}};
+    if (facts.compression < 0 || facts.compression > 9)
+        throw Refusal("unknown OpenEXR compression " + std::to_string(facts.compression));
+    const Scheme scheme = schemes[facts.compression];
+    const std::int64_t after = facts.fileSize - facts.headerEnd;
+    const std::int64_t blocks = (height + scheme.lines - 1) / scheme.lines;
+    if (blocks > after / 16)
+        throw Refusal("the data window (" + std::to_string(width) + " x " + std::to_string(height) +
+                      ") needs " + std::to_string(blocks) + " blocks of scan lines, the file has " +
+                      std::to_string(after) + " bytes after its header");
+    const double pixelBytes = double(width) * double(height) * double(facts.bytesPerPixel);
+    if (pixelBytes > double(after) * double(scheme.ratio))
+        throw Refusal("the data window (" + std::to_string(width) + " x " + std::to_string(height) +
+                      ") holds " + std::to_string(static_cast<long long>(pixelBytes)) +
+                      " bytes of pixels, more than the file's " + std::to_string(after) +
+                      " bytes can hold with its compression");
 }
 
 /// Reads the whole table or throws.
 Table readTable(const std::string& path) {
     checkReadableFile(path);
     if (!Imf::isOpenExrFile(path.c_str())) throw Refusal("not an OpenEXR file");
-    checkAttributeSizes(path);
+    checkDataWindow(checkHeader(path));
 
     std::unique_ptr<Imf::InputFile> file;
     try {
