@@ -7,7 +7,8 @@
 // - on failure the error is one non-empty line starting "kiln: cannot load table '";
 // - on success the table passes validateTable, and sampling it anywhere (corners, NaN and
 //   out-of-range coordinates) gives finite channels, with the linear and the cubic filter
-//   (a cubic that overshoots the largest float saturates: tests/fuzz_corpus/known-cubic-overflow.exr);
+//   (a cubic that overshoots the largest float saturates:
+//   tests/fuzz_corpus/known-cubic-overflow.exr);
 // - an input whose header declares an attribute larger than the input is refused: OpenEXR 3.1
 //   would allocate the declared size (up to 2 GB) before reading it, so the loader checks the
 //   sizes first (the regression files are tests/fuzz_corpus/oom-*.exr).
@@ -90,8 +91,8 @@ bool DeclaresOversizedAttribute(const uint8_t* data, size_t size) {
     size_t nameStart = p, nameEnd = cstring(p);
     if (nameEnd == size || nameEnd == nameStart) return false;  // truncated, or end of header
     if (cstring(p) == size || p + 4 > size) return false;       // type
-    uint32_t declared = uint32_t(data[p]) | uint32_t(data[p + 1]) << 8 | uint32_t(data[p + 2]) << 16 |
-                        uint32_t(data[p + 3]) << 24;
+    uint32_t declared = uint32_t(data[p]) | uint32_t(data[p + 1]) << 8 |
+                        uint32_t(data[p + 2]) << 16 | uint32_t(data[p + 3]) << 24;
     p += 4;
     if (declared > size) return true;
     p += declared;
@@ -120,7 +121,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } else {
     if (error.empty()) Violation("failure without a message", "");
     if (error.find('\n') != std::string::npos) Violation("message on several lines", error);
-    if (error.rfind("kiln: cannot load table '", 0) != 0) Violation("message without the prefix", error);
+    if (error.rfind("kiln: cannot load table '", 0) != 0)
+      Violation("message without the prefix", error);
   }
   return 0;
 }

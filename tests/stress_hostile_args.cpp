@@ -11,7 +11,6 @@
 
 using namespace kiln::stress;
 
-
 namespace {
 
 struct Case {
@@ -22,7 +21,8 @@ struct Case {
 void CheckRefused(const std::vector<Case>& cases) {
   for (const Case& c : cases) {
     auto r = RunKilnFor(60, c.args);
-    INFO("kiln " << c.args << "\n  exit " << r.exitCode << "\n  stdout: " << r.out << "\n  stderr: " << r.err);
+    INFO("kiln " << c.args << "\n  exit " << r.exitCode << "\n  stdout: " << r.out
+                 << "\n  stderr: " << r.err);
     CHECK(IsCleanRefusal(r));
     CHECK(r.err.find(c.expected) != std::string::npos);
   }
@@ -89,9 +89,10 @@ TEST_CASE("kiln integrate refuses NaN, infinite and absurd tolerances, indices a
   });
 }
 
-TEST_CASE("kiln bake refuses unknown tables, absurd sizes and thread counts, NaN roughness, and an "
-          "output folder it cannot write",
-          "[stress][hostile][cli][bake]") {
+TEST_CASE(
+    "kiln bake refuses unknown tables, absurd sizes and thread counts, NaN roughness, and an "
+    "output folder it cannot write",
+    "[stress][hostile][cli][bake]") {
   ScratchDir dir("hostile_args");
   std::string out = " --out " + Quote(dir / "out");
   WriteFile(dir / "a-file", "not a folder");
@@ -114,7 +115,8 @@ TEST_CASE("kiln bake refuses unknown tables, absurd sizes and thread counts, NaN
       {"bake --only oren-nayar-brdf --roughness -0.0001" + out, "--roughness"},
       {"bake --only lambert-albedo --size 3 --out " + Quote(dir / "a-file"), "a-file"},
       {"bake --only lambert-albedo --size 3 --out " + Quote(dir / "a-file/below"), "a-file/below"},
-      {"bake --only lambert-albedo --size 3 --out /proc/kiln-cannot-write-here", "/proc/kiln-cannot-write-here"},
+      {"bake --only lambert-albedo --size 3 --out /proc/kiln-cannot-write-here",
+       "/proc/kiln-cannot-write-here"},
       {"bake --scene" + out, "not expected"},
       {"bake --scene x.gltf --only lambert-albedo" + out, "not both"},
   });
@@ -124,9 +126,12 @@ TEST_CASE("kiln bake refuses unknown tables, absurd sizes and thread counts, NaN
 
 TEST_CASE("kiln sample, verify and plan refuse absurd numbers", "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_tables");
-  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  REQUIRE(
+      RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string()))
+          .exitCode == 0);
   std::string table = Quote(dir / "fresnel-dielectric.exr");
-  std::string scene = Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
+  std::string scene =
+      Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
   CheckRefused({
       {"sample " + table, "coords"},
       {"sample " + table + " 0.5 nan", "finite"},
@@ -155,9 +160,12 @@ TEST_CASE("kiln sample, verify and plan refuse absurd numbers", "[stress][hostil
 // baker/cli/model_options.cpp).
 TEST_CASE("An empty numeric argument is refused, not read as 0", "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_empty");
-  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  REQUIRE(
+      RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string()))
+          .exitCode == 0);
   std::string table = Quote(dir / "fresnel-dielectric.exr");
-  std::string scene = Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
+  std::string scene =
+      Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
   std::string out = " --out " + Quote(dir / "out");
   CheckRefused({
       {"eval --model ggx --mu-o '' --mu-l 0.5", "--mu-o"},
@@ -202,13 +210,16 @@ TEST_CASE("kiln bake --only '' is refused, not the whole catalogue", "[stress][h
   CHECK((!std::filesystem::exists(dir / "out") || std::filesystem::is_empty(dir / "out")));
 }
 
-// kiln verify checks -j like kiln bake and kiln bench ([1, 1024] when given; not given: all cores): -j
-// 1000000000 would make tbb::task_arena crash the process, and -j -3 is no thread count.
+// kiln verify checks -j like kiln bake and kiln bench ([1, 1024] when given; not given: all cores):
+// -j 1000000000 would make tbb::task_arena crash the process, and -j -3 is no thread count.
 TEST_CASE("kiln verify refuses absurd thread counts", "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_verify");
-  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  REQUIRE(
+      RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string()))
+          .exitCode == 0);
   std::string table = Quote(dir / "fresnel-dielectric.exr");
-  CheckRefused({{"verify " + table + " --points 1 -j 1000000000", "-j"}, {"verify " + table + " --points 1 -j -3", "-j"}});
+  CheckRefused({{"verify " + table + " --points 1 -j 1000000000", "-j"},
+                {"verify " + table + " --points 1 -j -3", "-j"}});
 }
 
 // Issue #17: work without caps. Each option that sizes the work has a range, refused with one
@@ -218,16 +229,21 @@ TEST_CASE("kiln verify refuses absurd thread counts", "[stress][hostile][cli]") 
 TEST_CASE("Options that size the work are refused outside their ranges, -j 0 and --size 0 included",
           "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_ranges");
-  REQUIRE(RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  REQUIRE(
+      RunKilnFor(60, "bake --only fresnel-dielectric --size 5 --out " + Quote(dir.path.string()))
+          .exitCode == 0);
   std::string table = Quote(dir / "fresnel-dielectric.exr");
-  std::string scene = Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
+  std::string scene =
+      Quote(std::string(KILN_SOURCE_DIR) + "/tests/scenes/metal_rough_factors.gltf");
   std::string out = " --out " + Quote(dir / "out");
   CheckRefused({
-      {"integrate albedo --model ggx --mu 0.5 --roughness 0.5 --tol 1e-300", "--tol 1e-300 must be in [1e-13, 0.1]"},
+      {"integrate albedo --model ggx --mu 0.5 --roughness 0.5 --tol 1e-300",
+       "--tol 1e-300 must be in [1e-13, 0.1]"},
       {"integrate albedo --model ggx --mu 0.5 --tol 1e-14", "[1e-13, 0.1]"},
       {"integrate albedo --model ggx --mu 0.5 --tol 0.5", "[1e-13, 0.1]"},
       {"verify " + table + " --points 1e18", "--points"},
-      {"verify " + table + " --points 1000000000000000000", "--points 1000000000000000000 must be in [0, 1e7]"},
+      {"verify " + table + " --points 1000000000000000000",
+       "--points 1000000000000000000 must be in [0, 1e7]"},
       {"verify " + table + " --points 10000001", "[0, 1e7]"},
       {"verify " + table + " --cells 1000000000000", "--cells 1000000000000 must be in [0, 1e7]"},
       {"verify " + table + " --tol 1e-300", "--tol 1e-300 must be in [1e-12, 1e-4]"},
@@ -242,10 +258,12 @@ TEST_CASE("Options that size the work are refused outside their ranges, -j 0 and
 
 // oneTBB printed "TBB Warning: The number of workers is currently limited to 1" for any -j above
 // the number of cores (issue #17 saw it at -j 256); main() raises oneTBB's limit to 1024.
-TEST_CASE("A thread count above the number of cores runs without a oneTBB warning", "[stress][hostile][cli]") {
+TEST_CASE("A thread count above the number of cores runs without a oneTBB warning",
+          "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_threads");
   for (const std::string j : {"256", "1024"}) {
-    auto r = RunKilnFor(120, "bake --only lambert-albedo --size 3 -j " + j + " --out " + Quote(dir.path.string()));
+    auto r = RunKilnFor(
+        120, "bake --only lambert-albedo --size 3 -j " + j + " --out " + Quote(dir.path.string()));
     INFO("bake -j " << j << ": exit " << r.exitCode << ", stderr: " << r.err);
     CHECK(r.exitCode == 0);
     CHECK(r.err.empty());
@@ -261,7 +279,9 @@ TEST_CASE("A thread count above the number of cores runs without a oneTBB warnin
 TEST_CASE("Negative numbers that do not start with a digit are taken as numbers",
           "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_negative");
-  REQUIRE(RunKilnFor(60, "bake --only ggx-dfg --size 5 --out " + Quote(dir.path.string())).exitCode == 0);
+  REQUIRE(
+      RunKilnFor(60, "bake --only ggx-dfg --size 5 --out " + Quote(dir.path.string())).exitCode ==
+      0);
   std::string table = Quote(dir / "ggx-dfg.exr");
   CheckRefused({
       {"sample " + table + " -inf 0.3", "coordinates must be finite"},
@@ -283,13 +303,15 @@ TEST_CASE("Negative numbers that do not start with a digit are taken as numbers"
 // `kiln integrate albedo --model ggx --mu 5e-324 --roughness 0.5` never returned: in
 // baker/integrate/hemisphere.h the masking panels start at m = scale / 4 with scale = mu, which
 // rounds to 0 at the smallest subnormals, and 0 * 4 never reaches the end. Killed after 60 s.
-TEST_CASE("Integrals at the smallest subnormal mu return the mu = 0 value", "[stress][hostile][cli]") {
+TEST_CASE("Integrals at the smallest subnormal mu return the mu = 0 value",
+          "[stress][hostile][cli]") {
   for (const std::string q : {"albedo", "dfg"}) {
     auto zero = RunKilnFor(60, "integrate " + q + " --model ggx --mu 0 --roughness 0.5");
     REQUIRE(zero.exitCode == 0);
     for (const std::string mu : {"5e-324", "1e-320", "2.2250738585072014e-308", "1e-300"}) {
       auto r = RunKilnFor(60, "integrate " + q + " --model ggx --mu " + mu + " --roughness 0.5");
-      INFO(q << " at mu " << mu << ": exit " << r.exitCode << ", stdout: " << r.out << ", stderr: " << r.err);
+      INFO(q << " at mu " << mu << ": exit " << r.exitCode << ", stdout: " << r.out
+             << ", stderr: " << r.err);
       REQUIRE(r.exitCode == 0);
       // Within 1e-8 of the mu = 0 value (the tolerance is 1e-9 per integral).
       double a0 = 0, b0 = 0, a = 0, b = 0;

@@ -70,7 +70,8 @@ TEST_CASE("Deeply nested glTF: kiln plan refuses 30,000 levels with one line ins
   // the document, "materials" and the material are levels 1 to 3, the nested arrays 4 onwards.
   std::string message = SceneErrorOf(dir / "deep.gltf");
   size_t column = deep.find("[[") + 61 + 1;
-  CHECK(message.find("line 1, column " + std::to_string(column) + ": nested deeper") != std::string::npos);
+  CHECK(message.find("line 1, column " + std::to_string(column) + ": nested deeper") !=
+        std::string::npos);
   CHECK(SceneErrorOf(dir / "deep.glb").find("JSON chunk, line 1") != std::string::npos);
 }
 
@@ -102,17 +103,21 @@ TEST_CASE("A bad textureInfo deep in a material is named by its exact JSON point
   WriteFile(dir / "texinfo.gltf", GltfWithMaterialValue(inner));
   std::string message = SceneErrorOf(dir / "texinfo.gltf");
   INFO(message);
-  CHECK(message.find(": /materials/0/deep" + pointer + ": textureInfo without \"index\"") != std::string::npos);
+  CHECK(message.find(": /materials/0/deep" + pointer + ": textureInfo without \"index\"") !=
+        std::string::npos);
   // The same textureInfo with a texture that exists: read.
   std::string good = inner;
   good.replace(good.find(R"({"texCoord":0})"), 14, R"({"index":0})");
-  WriteFile(dir / "good.gltf", R"({"asset":{"version":"2.0"},"textures":[{}],"materials":[{"deep":)" + good + "}]}");
+  WriteFile(dir / "good.gltf",
+            R"({"asset":{"version":"2.0"},"textures":[{}],"materials":[{"deep":)" + good + "}]}");
   CHECK(SceneErrorOf(dir / "good.gltf").empty());
   std::string bad = inner;
   bad.replace(bad.find(R"({"texCoord":0})"), 14, R"({"index":3})");
-  WriteFile(dir / "bad.gltf", R"({"asset":{"version":"2.0"},"textures":[{}],"materials":[{"deep":)" + bad + "}]}");
-  CHECK(SceneErrorOf(dir / "bad.gltf").find("deep" + pointer + "/index: texture 3 does not exist") !=
-        std::string::npos);
+  WriteFile(dir / "bad.gltf",
+            R"({"asset":{"version":"2.0"},"textures":[{}],"materials":[{"deep":)" + bad + "}]}");
+  CHECK(
+      SceneErrorOf(dir / "bad.gltf").find("deep" + pointer + "/index: texture 3 does not exist") !=
+      std::string::npos);
 }
 
 TEST_CASE("kiln plan /dev/zero and an endless pipe are refused at 64 MiB with one line",
@@ -123,8 +128,9 @@ TEST_CASE("kiln plan /dev/zero and an endless pipe are refused at 64 MiB with on
   CHECK(IsCleanRefusal(r));
   CHECK(r.err.find("/dev/zero: larger than 64 MiB") != std::string::npos);
   std::string fifo = dir / "endless.gltf";
-  auto p = RunKilnFor(60, "plan " + Quote(fifo),
-                      "mkfifo " + Quote(fifo) + " && (cat /dev/zero > " + Quote(fifo) + " 2>/dev/null &);");
+  auto p = RunKilnFor(
+      60, "plan " + Quote(fifo),
+      "mkfifo " + Quote(fifo) + " && (cat /dev/zero > " + Quote(fifo) + " 2>/dev/null &);");
   INFO("plan FIFO: exit " << p.exitCode << ", stderr: " << p.err);
   CHECK(IsCleanRefusal(p));
   CHECK(p.err.find("larger than 64 MiB") != std::string::npos);
@@ -153,8 +159,9 @@ TEST_CASE("A path that cannot be resolved is reported with its reason, not as a 
   ScratchDir dir("hostile_scenes_loop");
   std::filesystem::create_symlink(dir / "loop.exr", dir / "loop.exr");
   std::filesystem::create_symlink(dir / "loop.gltf", dir / "loop.gltf");
-  for (const std::string& args : {"inspect " + Quote(dir / "loop.exr"), "verify " + Quote(dir / "loop.exr"),
-                                 "sample " + Quote(dir / "loop.exr") + " 0.5", "plan " + Quote(dir / "loop.gltf")}) {
+  for (const std::string& args :
+       {"inspect " + Quote(dir / "loop.exr"), "verify " + Quote(dir / "loop.exr"),
+        "sample " + Quote(dir / "loop.exr") + " 0.5", "plan " + Quote(dir / "loop.gltf")}) {
     auto r = RunKilnFor(60, args);
     INFO("kiln " << args << ": exit " << r.exitCode << ", stderr: " << r.err);
     CHECK(IsCleanRefusal(r));
@@ -168,7 +175,8 @@ namespace {
 /// The committed scenes: the seeds of the mutation loop.
 std::vector<std::string> SceneSeeds() {
   std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(KILN_SOURCE_DIR) + "/tests/scenes"))
+  for (const auto& e :
+       std::filesystem::directory_iterator(std::string(KILN_SOURCE_DIR) + "/tests/scenes"))
     if (e.is_regular_file()) files.push_back(e.path().string());
   std::sort(files.begin(), files.end());
   return files;
@@ -177,19 +185,32 @@ std::vector<std::string> SceneSeeds() {
 /// One random mutation of a scene's bytes: byte-level ones and JSON-aware ones (brackets, deep
 /// nesting, absurd numbers, duplicated and removed spans).
 void MutateScene(std::string& b, test::Rng& rng) {
-  auto below = [&](size_t n) { return n == 0 ? size_t(0) : static_cast<size_t>(rng.Uniform() * n) % n; };
+  auto below = [&](size_t n) {
+    return n == 0 ? size_t(0) : static_cast<size_t>(rng.Uniform() * n) % n;
+  };
   if (b.empty()) {
     b = "{";
     return;
   }
-  static const char* kTokens[] = {"[", "]", "{", "}", ",", ":", "\"", "\\", "null", "true", "-0", "1e999",
-                                  "-1e308", "4294967296", "18446744073709551616", "-1", "0.5", "1e-320",
-                                  "\"\\u0000\"", "\"index\":", "\"Texture\":{", "\"extras\":", "\"asset\":{"};
+  static const char* kTokens[] = {"[",           "]",          "{",
+                                  "}",           ",",          ":",
+                                  "\"",          "\\",         "null",
+                                  "true",        "-0",         "1e999",
+                                  "-1e308",      "4294967296", "18446744073709551616",
+                                  "-1",          "0.5",        "1e-320",
+                                  "\"\\u0000\"", "\"index\":", "\"Texture\":{",
+                                  "\"extras\":", "\"asset\":{"};
   switch (below(10)) {
-    case 0: b[below(b.size())] ^= static_cast<char>(1 << below(8)); break;
-    case 1: b[below(b.size())] = static_cast<char>(below(256)); break;
+    case 0:
+      b[below(b.size())] ^= static_cast<char>(1 << below(8));
+      break;
+    case 1:
+      b[below(b.size())] = static_cast<char>(below(256));
+      break;
     case 2:
-    case 3: b.insert(below(b.size() + 1), kTokens[below(sizeof kTokens / sizeof kTokens[0])]); break;
+    case 3:
+      b.insert(below(b.size() + 1), kTokens[below(sizeof kTokens / sizeof kTokens[0])]);
+      break;
     case 4: {  // a deep or a nearly too deep run of brackets
       size_t n = rng.Uniform() < 0.5 ? 50 + below(30) : 1 + below(5000);
       b.insert(below(b.size() + 1), std::string(n, rng.Uniform() < 0.5 ? '[' : '{'));
@@ -212,9 +233,12 @@ void MutateScene(std::string& b, test::Rng& rng) {
       b.erase(p, std::min(b.size() - p, 1 + below(64)));
       break;
     }
-    case 8: b.resize(below(b.size())); break;
+    case 8:
+      b.resize(below(b.size()));
+      break;
     default: {  // an int32 in the glb header and chunk headers
-      static const uint32_t kInts[] = {0, 1, 0xFFFFFFFFu, 0x7FFFFFFF, 0x80000000u, 12, 20, 0x4E4F534A};
+      static const uint32_t kInts[] = {0,           1,  0xFFFFFFFFu, 0x7FFFFFFF,
+                                       0x80000000u, 12, 20,          0x4E4F534A};
       size_t p = below(std::min<size_t>(b.size(), 28));
       uint32_t v = kInts[below(8)];
       for (int k = 0; k < 4 && p + k < b.size(); ++k) b[p + k] = static_cast<char>(v >> (8 * k));
@@ -246,18 +270,24 @@ void SceneMutationLoop(int count, uint64_t seed) {
       ++planned;
     } catch (const std::exception& e) {
       std::string what = e.what();
-      if (what.empty() || what.find('\n') != std::string::npos) problem = "bad message: " + what;
-      else ++refused;
+      if (what.empty() || what.find('\n') != std::string::npos)
+        problem = "bad message: " + what;
+      else
+        ++refused;
     }
     if (!problem.empty()) {
-      WriteFile("/tmp/kiln-scene-fuzz-failure-" + std::to_string(seed) + "-" + std::to_string(i) + ext, bytes);
+      WriteFile(
+          "/tmp/kiln-scene-fuzz-failure-" + std::to_string(seed) + "-" + std::to_string(i) + ext,
+          bytes);
       if (failures++ < 5) FAIL_CHECK("mutation " << i << " of " << seeds[k] << ": " << problem);
     }
   }
   double rssAfter = PeakRssMiB();
-  std::printf("stress fuzz: %d scene mutants planned (seed %llu): %d planned, %d refused with one line, "
-              "%d failures; peak RSS %.0f MiB (%.0f before)\n",
-              count, static_cast<unsigned long long>(seed), planned, refused, failures, rssAfter, rssBefore);
+  std::printf(
+      "stress fuzz: %d scene mutants planned (seed %llu): %d planned, %d refused with one line, "
+      "%d failures; peak RSS %.0f MiB (%.0f before)\n",
+      count, static_cast<unsigned long long>(seed), planned, refused, failures, rssAfter,
+      rssBefore);
   CHECK(failures == 0);
   // No mutant may cost more than 256 MB (a bound on the growth of this process's peak).
   CHECK(rssAfter - rssBefore < 256);

@@ -101,20 +101,22 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
     const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
     tbb::task_arena arena(Threads(opt.threads));
     arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t i = r.begin(); i != r.end(); ++i) {
-          double x[3];
-          NodeCoordinates(spec, i, x);
-          IntegrationStats st;
-          std::vector<double> v = EvaluateSpec(spec, x, st);
-          for (size_t c = 0; c < nc; ++c) t.data[i * nc + c] = static_cast<float>(v[c]);
-          evals[i] = st.evals;
-          errors[i] = st.errorEstimate;
-          if (++bar.done == pauseAfter)
-            TestPause(std::to_string(pauseAfter) + " of " + std::to_string(n) + " texels of " +
-                      spec.name);
-        }
-      });
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i != r.end(); ++i) {
+                            double x[3];
+                            NodeCoordinates(spec, i, x);
+                            IntegrationStats st;
+                            std::vector<double> v = EvaluateSpec(spec, x, st);
+                            for (size_t c = 0; c < nc; ++c)
+                              t.data[i * nc + c] = static_cast<float>(v[c]);
+                            evals[i] = st.evals;
+                            errors[i] = st.errorEstimate;
+                            if (++bar.done == pauseAfter)
+                              TestPause(std::to_string(pauseAfter) + " of " + std::to_string(n) +
+                                        " texels of " + spec.name);
+                          }
+                        });
     });
   }
   auto t1 = std::chrono::steady_clock::now();
@@ -125,8 +127,10 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   for (size_t i = 0; i < n; ++i) estimate = std::max(estimate, errors[i]);
   // A fixed-rule table declares the rule's bound (spec.h, kFixedRuleBound).
   bool integrated = spec.Method().rfind("closed form", 0) != 0;
-  if (UsesFixedRule(spec)) t.bakeError = kFixedRuleBound + 0x1p-24;
-  else t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
+  if (UsesFixedRule(spec))
+    t.bakeError = kFixedRuleBound + 0x1p-24;
+  else
+    t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
   if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupRandomPoints, opt.threads);
   auto t2 = std::chrono::steady_clock::now();
   if (stats) {
@@ -143,19 +147,21 @@ void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, i
   // most randomPoints; `kiln verify` re-measures with every cell centre and 100,000 points.
   size_t cells = 1;
   for (const AxisSpec& a : spec.axes) cells *= static_cast<size_t>(std::max(1, a.size - 1));
-  long long random = static_cast<long long>(std::min<size_t>(static_cast<size_t>(std::max(0, randomPoints)), cells));
-  LookupErrorReport rep =
-      MeasureLookupError(spec, table.view(), random, 0, threads, Filter::Linear, 4096, /*alsoCubic=*/true);
+  long long random = static_cast<long long>(
+      std::min<size_t>(static_cast<size_t>(std::max(0, randomPoints)), cells));
+  LookupErrorReport rep = MeasureLookupError(spec, table.view(), random, 0, threads, Filter::Linear,
+                                             4096, /*alsoCubic=*/true);
   table.lookupError.max = rep.max * kDeclaredBoundMargin;
   table.lookupError.rms = rep.rms;
   table.lookupError.filter = "linear";
   table.lookupError.cubicMax = rep.cubicMax;
   table.lookupError.cubicRms = rep.cubicRms;
   char buf[256];
-  std::snprintf(buf, sizeof buf,
-                "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max over %lld points "
-                "(cell centres + random)",
-                rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin, rep.points);
+  std::snprintf(
+      buf, sizeof buf,
+      "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max over %lld points "
+      "(cell centres + random)",
+      rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin, rep.points);
   table.lookupError.where = buf;
 }
 
@@ -230,15 +236,20 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
     e["channel_meanings"] = t.channelMeanings;
     ordered_json axes = ordered_json::array();
     for (const TableAxis& a : t.axes)
-      axes.push_back({{"name", a.name}, {"lo", a.axis.lo}, {"hi", a.axis.hi}, {"size", a.axis.size},
+      axes.push_back({{"name", a.name},
+                      {"lo", a.axis.lo},
+                      {"hi", a.axis.hi},
+                      {"size", a.axis.size},
                       {"warp", warpName(a.axis.warp)}});
     e["axes"] = axes;
     e["params"] = t.params;
     e["method"] = t.method;
     e["tolerance"] = t.tolerance;
     e["bake_error"] = t.bakeError;
-    e["lookup_error"] = {{"max", t.lookupError.max}, {"rms", t.lookupError.rms},
-                         {"filter", t.lookupError.filter}, {"where", t.lookupError.where}};
+    e["lookup_error"] = {{"max", t.lookupError.max},
+                         {"rms", t.lookupError.rms},
+                         {"filter", t.lookupError.filter},
+                         {"where", t.lookupError.where}};
     if (t.lookupError.cubicMax >= 0)
       e["lookup_error_cubic"] = {{"max", t.lookupError.cubicMax}, {"rms", t.lookupError.cubicRms}};
     e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;

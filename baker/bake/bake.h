@@ -9,16 +9,16 @@
 namespace kiln {
 
 struct BakeOptions {
-  int threads = 0;            ///< 0: all cores
-  bool progress = false;      ///< draw a progress bar on stderr
+  int threads = 0;                 ///< 0: all cores
+  bool progress = false;           ///< draw a progress bar on stderr
   bool measureLookupError = true;  ///< measure the interpolation error at cell centres
   int lookupRandomPoints = 1000;   ///< extra random points for that measurement
 };
 
 struct BakeStats {
-  long long evals = 0;        ///< integrand evaluations of the texels
-  double seconds = 0;         ///< wall time of the texels (without the lookup-error check)
-  double lookupSeconds = 0;   ///< wall time of the lookup-error check
+  long long evals = 0;       ///< integrand evaluations of the texels
+  double seconds = 0;        ///< wall time of the texels (without the lookup-error check)
+  double lookupSeconds = 0;  ///< wall time of the lookup-error check
 };
 
 /// Bakes `spec` into a table (metadata and texels). Bit-identical for any thread count.

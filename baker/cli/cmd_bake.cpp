@@ -33,7 +33,8 @@ void PrepareOutputFolder(const std::string& dir) {
 }  // namespace
 
 void RegisterBake(CLI::App& app) {
-  auto* sub = app.add_subcommand("bake", "bake the default catalogue (or --only some tables) into DIR");
+  auto* sub =
+      app.add_subcommand("bake", "bake the default catalogue (or --only some tables) into DIR");
   struct Args {
     std::string out = "luts", only, scene;
     int size = 0, threads = 0;
@@ -43,24 +44,29 @@ void RegisterBake(CLI::App& app) {
   auto args = std::make_shared<Args>();
   sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
   auto* oOnly = sub->add_option("--only", args->only, "comma-separated table names (default: all)");
-  auto* oSize = sub->add_option("--size", args->size, "nodes on every axis (default: each table's own)");
+  auto* oSize =
+      sub->add_option("--size", args->size, "nodes on every axis (default: each table's own)");
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_flag("--half", args->half, "store half floats instead of float32");
   sub->add_flag("--header", args->header, "also write a C++ header per table");
-  sub->add_option("--roughness", args->roughness, "roughness of the *-brdf tables")->capture_default_str();
-  auto* oScene = sub->add_option("--scene", args->scene,
-                                 "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
+  sub->add_option("--roughness", args->roughness, "roughness of the *-brdf tables")
+      ->capture_default_str();
+  auto* oScene = sub->add_option(
+      "--scene", args->scene, "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
   sub->add_flag("--no-lookup-error", args->noLookup,
                 "skip measuring the lookup error (the file then declares none)");
   sub->callback([args, oSize, oOnly, oScene] {
     if (oSize->count() && (args->size < 2 || args->size > 4096))
-      throw std::invalid_argument("bake: --size " + std::to_string(args->size) + " must be in [2, 4096]");
+      throw std::invalid_argument("bake: --size " + std::to_string(args->size) +
+                                  " must be in [2, 4096]");
     CheckThreads("bake", args->threads);
     if (!(args->roughness >= 0 && args->roughness <= 1))
       throw std::invalid_argument("bake: --roughness must be in [0, 1]");
     // Given but empty is an error, never "not given": --only '' would bake the whole catalogue.
-    if (oOnly->count() && args->only.empty()) throw std::invalid_argument("bake: --only '' names no table");
-    if (oScene->count() && args->scene.empty()) throw std::invalid_argument("bake: --scene '' names no file");
+    if (oOnly->count() && args->only.empty())
+      throw std::invalid_argument("bake: --only '' names no table");
+    if (oScene->count() && args->scene.empty())
+      throw std::invalid_argument("bake: --scene '' names no file");
     if (oScene->count()) {
       if (oOnly->count()) throw std::invalid_argument("bake: give --scene or --only, not both");
       PrepareOutputFolder(args->out);
@@ -99,8 +105,9 @@ void RegisterBake(CLI::App& app) {
       // leaves a manifest that describes tables 1..k (and the older files) correctly.
       CommitBakedTable(args->out, t, stats.evals, args->half, args->header, args->threads);
       if (tty)
-        std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n", t.name.c_str(),
-                    stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError, t.lookupError.max);
+        std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n",
+                    t.name.c_str(), stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError,
+                    t.lookupError.max);
       ++baked;
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -28,14 +28,14 @@ void RegisterInspect(CLI::App& app) {
     std::printf("params          %s\n", t.params.empty() ? "(none)" : t.params.c_str());
     for (int d = 0; d < t.dims(); ++d) {
       const TableAxis& a = t.axes[d];
-      std::printf("axis %d          %s [%.17g, %.17g] %d nodes, %s warp\n", d, a.name.c_str(), a.axis.lo,
-                  a.axis.hi, a.axis.size, warpName(a.axis.warp));
+      std::printf("axis %d          %s [%.17g, %.17g] %d nodes, %s warp\n", d, a.name.c_str(),
+                  a.axis.lo, a.axis.hi, a.axis.size, warpName(a.axis.warp));
     }
     std::printf("method          %s\n", t.method.c_str());
     std::printf("tolerance       %.3g\n", t.tolerance);
     std::printf("bake error      %.3g\n", t.bakeError);
-    std::printf("lookup error    max %.3g rms %.3g (%s) at %s\n", t.lookupError.max, t.lookupError.rms,
-                t.lookupError.filter.c_str(), t.lookupError.where.c_str());
+    std::printf("lookup error    max %.3g rms %.3g (%s) at %s\n", t.lookupError.max,
+                t.lookupError.rms, t.lookupError.filter.c_str(), t.lookupError.where.c_str());
     if (t.lookupError.cubicMax >= 0)
       std::printf("lookup cubic    max %.3g rms %.3g (same points)\n", t.lookupError.cubicMax,
                   t.lookupError.cubicRms);

@@ -36,7 +36,8 @@ void RegisterIntegrate(CLI::App& app) {
     for (const std::string& i : items) s += (s.empty() ? "" : sep) + i;
     return s;
   };
-  auto* sub = app.add_subcommand("integrate", "print a hemispherical integral: " + join(help, ", "));
+  auto* sub =
+      app.add_subcommand("integrate", "print a hemispherical integral: " + join(help, ", "));
   struct Args {
     std::string quantity, model;
     double mu = 1, tol = 1e-9;
@@ -64,7 +65,8 @@ void RegisterIntegrate(CLI::App& app) {
       throw std::invalid_argument("integrate: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-13, 0.1]");
     bool needsMu = info->integrateNeedsMu;
-    if (needsMu && !args->oMu->count()) throw std::invalid_argument("integrate " + q + ": needs --mu");
+    if (needsMu && !args->oMu->count())
+      throw std::invalid_argument("integrate " + q + ": needs --mu");
     if (!needsMu && args->oMu->count())
       throw std::invalid_argument("integrate " + q + ": takes no --mu");
     if (needsMu && !(args->mu >= 0 && args->mu <= 1))

@@ -23,7 +23,8 @@ std::vector<std::string> ExrFiles(const std::string& path) {
   if (stat(path.c_str(), &st) != 0) {
     if (errno == ENOENT || errno == ENOTDIR)
       throw std::invalid_argument("verify: no such file or folder '" + path + "'");
-    throw std::invalid_argument("verify: cannot access '" + path + "' (" + std::strerror(errno) + ")");
+    throw std::invalid_argument("verify: cannot access '" + path + "' (" + std::strerror(errno) +
+                                ")");
   }
   if (!S_ISDIR(st.st_mode)) return {path};
   std::vector<std::string> out;
@@ -42,8 +43,9 @@ std::vector<std::string> ExrFiles(const std::string& path) {
 
 void RegisterVerify(CLI::App& app) {
   auto* sub = app.add_subcommand(
-      "verify", "re-measure each table's lookup error at every cell centre and random points; "
-                "exit 1 when one exceeds its declared bound");
+      "verify",
+      "re-measure each table's lookup error at every cell centre and random points; "
+      "exit 1 when one exceeds its declared bound");
   struct Args {
     std::vector<std::string> paths;
     long long points = 100000, cells = 0;
@@ -66,11 +68,14 @@ void RegisterVerify(CLI::App& app) {
   sub->callback([args] {
     // Caps on the work (each point is one integral, and 17 bytes of bookkeeping).
     if (args->cells < 0 || args->cells > kMaxVerifyPoints)
-      throw std::invalid_argument("verify: --cells " + std::to_string(args->cells) + " must be in [0, 1e7]");
+      throw std::invalid_argument("verify: --cells " + std::to_string(args->cells) +
+                                  " must be in [0, 1e7]");
     if (args->points < 0 || args->points > kMaxVerifyPoints)
-      throw std::invalid_argument("verify: --points " + std::to_string(args->points) + " must be in [0, 1e7]");
+      throw std::invalid_argument("verify: --points " + std::to_string(args->points) +
+                                  " must be in [0, 1e7]");
     if (!(args->tol >= 1e-12 && args->tol <= 1e-4))
-      throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) + " must be in [1e-12, 1e-4]");
+      throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
+                                  " must be in [1e-12, 1e-4]");
     CheckThreads("verify", args->threads);
     std::vector<std::string> files;
     for (const std::string& p : args->paths)
@@ -109,8 +114,8 @@ void RegisterVerify(CLI::App& app) {
         IntegrationStats stats;
         size_t channels = EvaluateSpec(spec, lo, args->tol, stats).size();
         if (channels != t.channels.size()) {
-          fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity + "' has " +
-               std::to_string(channels));
+          fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity +
+               "' has " + std::to_string(channels));
           continue;
         }
         rep = MeasureLookupError(spec, t.view(), args->points, args->tol, args->threads,
@@ -120,7 +125,8 @@ void RegisterVerify(CLI::App& app) {
         continue;
       }
       // The direct evaluation itself is only good to tol: allow that much on top of the bound.
-      bool ok = !checked || (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError);
+      bool ok = !checked ||
+                (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError);
       std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
                   t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
                   ok ? "" : "  EXCEEDS BOUND");

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   kiln::cli::CheckThreadOptions(app);
   // -j above the number of cores is allowed (up to kMaxThreads): without this oneTBB would print
   // a warning and run fewer threads.
-  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism, kiln::cli::kMaxThreads);
+  tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
+                                  kiln::cli::kMaxThreads);
   try {
     std::vector<std::string> args = kiln::cli::NumbersAsPositionals(argc, argv);
     std::reverse(args.begin(), args.end());  // CLI11 takes them last first

@@ -50,8 +50,10 @@ std::string NumberProblem(const std::string& text, bool integer) {
   std::string wanted = integer ? "an integer" : "a number";
   if (text.empty()) return "needs " + wanted + ", got ''";
   char* end = nullptr;
-  if (integer) std::strtoll(text.c_str(), &end, 0);
-  else std::strtod(text.c_str(), &end);
+  if (integer)
+    std::strtoll(text.c_str(), &end, 0);
+  else
+    std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size()) return "needs " + wanted + ", got '" + text + "'";
   return "";
 }
@@ -64,7 +66,8 @@ void RefuseNonNumbers(CLI::App& app) {
     type = type.substr(0, type.find(':'));  // validators append ":DESCRIPTION"
     bool integer = type == "INT" || type == "UINT";
     if (!integer && type != "FLOAT") continue;
-    o->check(CLI::Validator([integer](std::string& text) { return NumberProblem(text, integer); }, ""));
+    o->check(
+        CLI::Validator([integer](std::string& text) { return NumberProblem(text, integer); }, ""));
   }
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) RefuseNonNumbers(*sub);
 }
@@ -88,7 +91,8 @@ void CheckThreadOptions(CLI::App& app) {
         },
         ""));
   }
-  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) CheckThreadOptions(*sub);
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
+    CheckThreadOptions(*sub);
 }
 
 std::vector<std::string> NumbersAsPositionals(int argc, char** argv) {

@@ -28,11 +28,11 @@ namespace kiln {
 
 /// Tolerance and panel budget of an integral; stats collect what it cost.
 struct IntegrationOptions {
-  double tol = 1e-9;     ///< absolute tolerance on every channel
-  int maxPanels = 400;   ///< per adaptive level
+  double tol = 1e-9;    ///< absolute tolerance on every channel
+  int maxPanels = 400;  ///< per adaptive level
 };
 struct IntegrationStats {
-  long long evals = 0;   ///< integrand evaluations
+  long long evals = 0;  ///< integrand evaluations
   double errorEstimate = 0;
 };
 
@@ -60,8 +60,9 @@ Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& op
     return (2 * sinT * cosT) * r;
   };
   double err = 0;
-  Channels<N> r = split ? IntegrateAdaptive<N>(outer, thetaBreaks, 3, opt.tol / 2, opt.maxPanels, &err)
-                        : IntegrateAdaptive<N>(outer, thetaOnly, 2, opt.tol / 2, opt.maxPanels, &err);
+  Channels<N> r =
+      split ? IntegrateAdaptive<N>(outer, thetaBreaks, 3, opt.tol / 2, opt.maxPanels, &err)
+            : IntegrateAdaptive<N>(outer, thetaOnly, 2, opt.tol / 2, opt.maxPanels, &err);
   stats.errorEstimate = err;
   return r;
 }

@@ -27,117 +27,117 @@ namespace {
 constexpr float kHalfMax = 65504.0f;
 
 void setString(Imf::Header& h, const std::string& name, const std::string& value) {
-    h.insert(name, Imf::StringAttribute(value));
+  h.insert(name, Imf::StringAttribute(value));
 }
 
 void setInt(Imf::Header& h, const std::string& name, int value) {
-    h.insert(name, Imf::IntAttribute(value));
+  h.insert(name, Imf::IntAttribute(value));
 }
 
 void setDouble(Imf::Header& h, const std::string& name, double value) {
-    h.insert(name, Imf::DoubleAttribute(value));
+  h.insert(name, Imf::DoubleAttribute(value));
 }
 
 /// Writes the image (no temporary-file handling) to `filePath`.
 void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, int threads) {
-    Imf::Header header(table.imageWidth(), table.imageHeight());
-    header.compression() = Imf::ZIP_COMPRESSION;
-    setKilnAttributes(header, table);
-    const Imf::PixelType fileType = asHalf ? Imf::HALF : Imf::FLOAT;
-    for (const std::string& channel : table.channels)
-        header.channels().insert(channel, Imf::Channel(fileType));
+  Imf::Header header(table.imageWidth(), table.imageHeight());
+  header.compression() = Imf::ZIP_COMPRESSION;
+  setKilnAttributes(header, table);
+  const Imf::PixelType fileType = asHalf ? Imf::HALF : Imf::FLOAT;
+  for (const std::string& channel : table.channels)
+    header.channels().insert(channel, Imf::Channel(fileType));
 
-    const std::size_t channelCount = table.channels.size();
-    const Imath::Box2i window = header.dataWindow();
-    Imf::FrameBuffer frameBuffer;
-    std::vector<::half> halves;  // OpenEXR does not convert FLOAT to HALF on output
-    if (asHalf) {
-        halves.reserve(table.data.size());
-        for (float v : table.data) halves.push_back(::half(v));  // round to nearest even
-        const std::size_t xStride = sizeof(::half) * channelCount;
-        const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
-        for (std::size_t c = 0; c < channelCount; ++c)
-            frameBuffer.insert(table.channels[c], Imf::Slice::Make(Imf::HALF, halves.data() + c,
-                                                                   window, xStride, yStride));
-    } else {
-        const std::size_t xStride = sizeof(float) * channelCount;
-        const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
-        for (std::size_t c = 0; c < channelCount; ++c)
-            frameBuffer.insert(table.channels[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c,
-                                                                   window, xStride, yStride));
-    }
-    Imf::OutputFile file(filePath.c_str(), header, threads > 1 ? threads : 0);
-    file.setFrameBuffer(frameBuffer);
-    file.writePixels(table.imageHeight());
+  const std::size_t channelCount = table.channels.size();
+  const Imath::Box2i window = header.dataWindow();
+  Imf::FrameBuffer frameBuffer;
+  std::vector<::half> halves;  // OpenEXR does not convert FLOAT to HALF on output
+  if (asHalf) {
+    halves.reserve(table.data.size());
+    for (float v : table.data) halves.push_back(::half(v));  // round to nearest even
+    const std::size_t xStride = sizeof(::half) * channelCount;
+    const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
+    for (std::size_t c = 0; c < channelCount; ++c)
+      frameBuffer.insert(table.channels[c],
+                         Imf::Slice::Make(Imf::HALF, halves.data() + c, window, xStride, yStride));
+  } else {
+    const std::size_t xStride = sizeof(float) * channelCount;
+    const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
+    for (std::size_t c = 0; c < channelCount; ++c)
+      frameBuffer.insert(table.channels[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c,
+                                                             window, xStride, yStride));
+  }
+  Imf::OutputFile file(filePath.c_str(), header, threads > 1 ? threads : 0);
+  file.setFrameBuffer(frameBuffer);
+  file.writePixels(table.imageHeight());
 }
 
 }  // namespace
 
 void setKilnAttributes(Imf::Header& h, const Table& t) {
-    setInt(h, "kiln.format", kFormatVersion);
-    setString(h, "kiln.generator", t.generator);
-    setString(h, "kiln.name", t.name);
-    setString(h, "kiln.model", t.model);
-    setString(h, "kiln.quantity", t.quantity);
-    setString(h, "kiln.channels", joinList(t.channels, ','));
-    setString(h, "kiln.channel_meanings", joinList(t.channelMeanings, ';'));
-    setInt(h, "kiln.dims", t.dims());
-    for (int d = 0; d < t.dims(); ++d) {
-        const TableAxis& a = t.axes[static_cast<std::size_t>(d)];
-        const std::string prefix = "kiln.axis" + std::to_string(d) + ".";
-        setString(h, prefix + "name", a.name);
-        setDouble(h, prefix + "lo", a.axis.lo);
-        setDouble(h, prefix + "hi", a.axis.hi);
-        setInt(h, prefix + "size", a.axis.size);
-        setString(h, prefix + "warp", warpName(a.axis.warp));
-    }
-    setString(h, "kiln.params", t.params);
-    setString(h, "kiln.method", t.method);
-    setDouble(h, "kiln.tolerance", t.tolerance);
-    setDouble(h, "kiln.bake_error", t.bakeError);
-    setDouble(h, "kiln.lookup_error.max", t.lookupError.max);
-    setDouble(h, "kiln.lookup_error.rms", t.lookupError.rms);
-    setString(h, "kiln.lookup_error.where", t.lookupError.where);
-    setString(h, "kiln.lookup_error.filter", t.lookupError.filter);
-    if (t.lookupError.cubicMax >= 0) {
-        setDouble(h, "kiln.lookup_error.cubic_max", t.lookupError.cubicMax);
-        setDouble(h, "kiln.lookup_error.cubic_rms", t.lookupError.cubicRms);
-    }
-    setString(h, "kiln.spec_hash", t.specHash);
+  setInt(h, "kiln.format", kFormatVersion);
+  setString(h, "kiln.generator", t.generator);
+  setString(h, "kiln.name", t.name);
+  setString(h, "kiln.model", t.model);
+  setString(h, "kiln.quantity", t.quantity);
+  setString(h, "kiln.channels", joinList(t.channels, ','));
+  setString(h, "kiln.channel_meanings", joinList(t.channelMeanings, ';'));
+  setInt(h, "kiln.dims", t.dims());
+  for (int d = 0; d < t.dims(); ++d) {
+    const TableAxis& a = t.axes[static_cast<std::size_t>(d)];
+    const std::string prefix = "kiln.axis" + std::to_string(d) + ".";
+    setString(h, prefix + "name", a.name);
+    setDouble(h, prefix + "lo", a.axis.lo);
+    setDouble(h, prefix + "hi", a.axis.hi);
+    setInt(h, prefix + "size", a.axis.size);
+    setString(h, prefix + "warp", warpName(a.axis.warp));
+  }
+  setString(h, "kiln.params", t.params);
+  setString(h, "kiln.method", t.method);
+  setDouble(h, "kiln.tolerance", t.tolerance);
+  setDouble(h, "kiln.bake_error", t.bakeError);
+  setDouble(h, "kiln.lookup_error.max", t.lookupError.max);
+  setDouble(h, "kiln.lookup_error.rms", t.lookupError.rms);
+  setString(h, "kiln.lookup_error.where", t.lookupError.where);
+  setString(h, "kiln.lookup_error.filter", t.lookupError.filter);
+  if (t.lookupError.cubicMax >= 0) {
+    setDouble(h, "kiln.lookup_error.cubic_max", t.lookupError.cubicMax);
+    setDouble(h, "kiln.lookup_error.cubic_rms", t.lookupError.cubicRms);
+  }
+  setString(h, "kiln.spec_hash", t.specHash);
 }
 
 void writeTable(const std::string& path, const Table& table, bool half, int threads) {
-    PendingFile file(path);
-    writeTable(file, table, half, threads);
-    PendingFile::CommitAll({&file});
+  PendingFile file(path);
+  writeTable(file, table, half, threads);
+  PendingFile::CommitAll({&file});
 }
 
 void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
-    const std::string& path = file.Path();
-    std::string problem;
-    if (!validateTable(table, problem))
-        throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
-    if (half) {
-        for (float v : table.data) {
-            if (std::fabs(v) > kHalfMax)
-                throw std::runtime_error("kiln: cannot write '" + path + "': value " +
-                                         std::to_string(v) + " does not fit in half precision");
-        }
+  const std::string& path = file.Path();
+  std::string problem;
+  if (!validateTable(table, problem))
+    throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
+  if (half) {
+    for (float v : table.data) {
+      if (std::fabs(v) > kHalfMax)
+        throw std::runtime_error("kiln: cannot write '" + path + "': value " + std::to_string(v) +
+                                 " does not fit in half precision");
     }
-    if (threads > 1 && Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
-    file.Write([&](const std::string& temporaryPath) {
-        writeExrFile(temporaryPath, table, half, threads);
-        // OpenEXR writes the line offset table in a destructor that swallows
-        // errors (e.g. a full disk), so reopen the file before the rename.
-        bool complete = false;
-        std::string error = "line offsets missing";
-        try {
-            complete = Imf::InputFile(temporaryPath.c_str(), 0).isComplete();
-        } catch (const std::exception& e) {
-            error = e.what();
-        }
-        if (!complete) throw std::runtime_error("the written file is incomplete: " + error);
-    });
+  }
+  if (threads > 1 && Imf::globalThreadCount() < threads) Imf::setGlobalThreadCount(threads);
+  file.Write([&](const std::string& temporaryPath) {
+    writeExrFile(temporaryPath, table, half, threads);
+    // OpenEXR writes the line offset table in a destructor that swallows
+    // errors (e.g. a full disk), so reopen the file before the rename.
+    bool complete = false;
+    std::string error = "line offsets missing";
+    try {
+      complete = Imf::InputFile(temporaryPath.c_str(), 0).isComplete();
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    if (!complete) throw std::runtime_error("the written file is incomplete: " + error);
+  });
 }
 
 }  // namespace kiln

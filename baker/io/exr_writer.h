@@ -25,8 +25,8 @@ void setKilnAttributes(Imf::Header& header, const Table& table);
 /// (PendingFile, baker/io/atomic_write.h) and renamed into place; on any error
 /// the temporary file is removed, an existing file at `path` is left intact,
 /// and std::runtime_error is thrown with a one-line message; `path` must be
-/// missing or a regular file (CheckWritableTarget). Refuses a table that fails validateTable, and in half mode a
-/// texel whose magnitude exceeds the largest half (65504). Before the rename the
+/// missing or a regular file (CheckWritableTarget). Refuses a table that fails validateTable, and
+/// in half mode a texel whose magnitude exceeds the largest half (65504). Before the rename the
 /// temporary file is reopened and must be complete (header and every line
 /// offset readable): OpenEXR writes the offsets in a destructor that swallows
 /// errors such as a full disk. `threads` > 1 compresses the line blocks on

@@ -25,7 +25,8 @@ void CheckVersion(const Json& doc, const JsonReader& r) {
     std::string text = r.String(*v, at);
     size_t dot = text.find('.');
     bool ok = dot != std::string::npos && dot > 0 && dot + 1 < text.size() &&
-              std::all_of(text.begin(), text.end(), [](char c) { return (c >= '0' && c <= '9') || c == '.'; }) &&
+              std::all_of(text.begin(), text.end(),
+                          [](char c) { return (c >= '0' && c <= '9') || c == '.'; }) &&
               text.find('.', dot + 1) == std::string::npos && text.size() <= 12;
     if (!ok) r.Fail(at, "\"" + text + "\" is not a glTF version (MAJOR.MINOR)");
     int m = std::stoi(text.substr(0, dot)), minor = std::stoi(text.substr(dot + 1));
@@ -103,14 +104,17 @@ void CheckTextures(const Json& doc, const JsonReader& r) {
   for (size_t i = 0; i < textures.size(); ++i) {
     std::string at = PointerChild("/textures", i);
     const Json& t = r.Object(textures[i], at);
-    if (const Json* s = JsonReader::Find(t, "source")) r.Index(*s, PointerChild(at, "source"), images, "image");
+    if (const Json* s = JsonReader::Find(t, "source"))
+      r.Index(*s, PointerChild(at, "source"), images, "image");
     if (const Json* s = JsonReader::Find(t, "sampler"))
       r.Index(*s, PointerChild(at, "sampler"), samplers, "sampler");
     if (const Json* ext = JsonReader::Find(t, "extensions")) {
       r.Object(*ext, PointerChild(at, "extensions"));
       for (auto it = ext->begin(); it != ext->end(); ++it)
         if (const Json* s = JsonReader::Find(*it, "source"))
-          r.Index(*s, PointerChild(PointerChild(PointerChild(at, "extensions"), it.key()), "source"), images, "image");
+          r.Index(*s,
+                  PointerChild(PointerChild(PointerChild(at, "extensions"), it.key()), "source"),
+                  images, "image");
     }
   }
 }
@@ -180,7 +184,9 @@ Scene ReadGltfDocument(const Json& doc, const std::string& path, const std::stri
         for (size_t k = 0; k < mappings.size(); ++k) {
           std::string mat = PointerChild(PointerChild(vat, "mappings"), k);
           const Json* index = JsonReader::Find(r.Object(mappings[k], mat), "material");
-          if (index) used[r.Index(*index, PointerChild(mat, "material"), materials.size(), "material")] = true;
+          if (index)
+            used[r.Index(*index, PointerChild(mat, "material"), materials.size(), "material")] =
+                true;
         }
       }
     }
@@ -191,7 +197,8 @@ Scene ReadGltfDocument(const Json& doc, const std::string& path, const std::stri
     std::string at = PointerChild("/materials", i);
     std::string label = MaterialLabel(materials[i], at);
     if (!used[i]) {
-      scene.notes.push_back({SceneNote::Kind::Unused, "unused material", "no mesh primitive uses it", label});
+      scene.notes.push_back(
+          {SceneNote::Kind::Unused, "unused material", "no mesh primitive uses it", label});
       continue;
     }
     ++scene.materialCount;
@@ -199,7 +206,8 @@ Scene ReadGltfDocument(const Json& doc, const std::string& path, const std::stri
   }
   if (!defaultUser.empty()) {
     ++scene.materialCount;
-    AddGltfMaterial(Json::object(), "", "default material (" + defaultUser + " has none)", animated, r, scene);
+    AddGltfMaterial(Json::object(), "", "default material (" + defaultUser + " has none)", animated,
+                    r, scene);
   }
 
   // Extensions: the file-level ones that are not about materials, and unknown ones.
@@ -218,16 +226,19 @@ Scene ReadGltfDocument(const Json& doc, const std::string& path, const std::stri
   for (size_t i = 0; i < required.size(); ++i) {
     std::string name = r.String(required[i], PointerChild("/extensionsRequired", i));
     if (!IsKnownMaterialExtension(name) && !IsNonMaterialExtension(name))
-      scene.warnings.push_back(path + ": /extensionsRequired/" + std::to_string(i) + ": '" + name +
-                               "' is required but unknown to kiln: the plan covers what kiln understands "
-                               "and may miss tables this extension needs");
+      scene.warnings.push_back(
+          path + ": /extensionsRequired/" + std::to_string(i) + ": '" + name +
+          "' is required but unknown to kiln: the plan covers what kiln understands "
+          "and may miss tables this extension needs");
   }
   return scene;
 }
 
 Scene ReadGltf(const std::string& path, const std::string& bytes) {
   bool glbName = path.size() >= 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-  if (IsGlb(bytes) || glbName) return ReadGltfDocument(ParseSceneJson(GlbJsonChunk(bytes, path), path, "JSON chunk, "), path, "glb");
+  if (IsGlb(bytes) || glbName)
+    return ReadGltfDocument(ParseSceneJson(GlbJsonChunk(bytes, path), path, "JSON chunk, "), path,
+                            "glb");
   return ReadGltfDocument(ParseSceneJson(bytes, path), path, "glTF");
 }
 

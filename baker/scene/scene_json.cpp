@@ -14,9 +14,12 @@ namespace kiln {
 std::string PointerChild(const std::string& parent, const std::string& token) {
   std::string escaped;
   for (char c : token) {
-    if (c == '~') escaped += "~0";
-    else if (c == '/') escaped += "~1";
-    else escaped += c;
+    if (c == '~')
+      escaped += "~0";
+    else if (c == '/')
+      escaped += "~1";
+    else
+      escaped += c;
   }
   return parent + "/" + escaped;
 }
@@ -76,8 +79,10 @@ size_t TooDeepAt(const std::string& text) {
   for (size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (inString) {
-      if (c == '\\') ++i;
-      else if (c == '"') inString = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        inString = false;
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
@@ -115,7 +120,8 @@ Json ParseSceneJson(const std::string& text, const std::string& file, const std:
     // parsing '1e999'": placed at the start of the token when the parser said where it stopped.
     std::string place;
     if (parser.position > 0)
-      place = prefix + LineColumn(text, parser.position - std::min(parser.position, parser.token.size()));
+      place = prefix +
+              LineColumn(text, parser.position - std::min(parser.position, parser.token.size()));
     throw SceneError(file, place, "cannot be read (" + JsonErrorDetail(e.what()) + ")");
   }
 }
@@ -138,7 +144,8 @@ std::string LargeGlbJson(std::ifstream& in, uint64_t fileSize) {
   char head[20];
   in.clear();
   in.seekg(0);
-  if (!in.read(head, 20) || LittleU32(head) != kGlbMagic || LittleU32(head + 8) != fileSize) return "";
+  if (!in.read(head, 20) || LittleU32(head) != kGlbMagic || LittleU32(head + 8) != fileSize)
+    return "";
   uint32_t chunkLength = LittleU32(head + 12);
   if (chunkLength > kMaxSceneBytes || chunkLength > fileSize - 20) return "";
   std::string out(head, 20);
@@ -157,11 +164,12 @@ std::string ReadSceneFile(const std::string& path) {
   // A folder on the way that cannot be searched, a loop of links: said as it is, not "missing".
   if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory)
     throw SceneError(path, "", "cannot access the file (" + ec.message() + ")");
-  if (std::filesystem::is_directory(status)) throw SceneError(path, "", "is a folder, not a scene file");
+  if (std::filesystem::is_directory(status))
+    throw SceneError(path, "", "is a folder, not a scene file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path, "", "cannot open the file");
-  const std::string tooLarge =
-      "larger than " + std::to_string(kMaxSceneBytes >> 20) + " MiB, the most kiln reads of a scene";
+  const std::string tooLarge = "larger than " + std::to_string(kMaxSceneBytes >> 20) +
+                               " MiB, the most kiln reads of a scene";
   if (std::filesystem::is_regular_file(status)) {
     uint64_t size = std::filesystem::file_size(path, ec);
     if (!ec && size > kMaxSceneBytes) {
@@ -175,7 +183,8 @@ std::string ReadSceneFile(const std::string& path) {
   std::string bytes;
   char buffer[65536];
   while (in && bytes.size() < kMaxSceneBytes) {
-    in.read(buffer, static_cast<std::streamsize>(std::min(sizeof buffer, kMaxSceneBytes - bytes.size())));
+    in.read(buffer,
+            static_cast<std::streamsize>(std::min(sizeof buffer, kMaxSceneBytes - bytes.size())));
     bytes.append(buffer, static_cast<size_t>(in.gcount()));
   }
   if (in.bad()) throw SceneError(path, "", "cannot read the file");
@@ -185,15 +194,22 @@ std::string ReadSceneFile(const std::string& path) {
 
 std::string JsonKind(const Json& v) {
   switch (v.type()) {
-    case Json::value_t::null: return "null";
-    case Json::value_t::object: return "an object";
-    case Json::value_t::array: return "an array";
-    case Json::value_t::string: return "a string";
-    case Json::value_t::boolean: return "a boolean";
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::object:
+      return "an object";
+    case Json::value_t::array:
+      return "an array";
+    case Json::value_t::string:
+      return "a string";
+    case Json::value_t::boolean:
+      return "a boolean";
     case Json::value_t::number_integer:
     case Json::value_t::number_unsigned:
-    case Json::value_t::number_float: return "a number";
-    default: return "an unsupported value";
+    case Json::value_t::number_float:
+      return "a number";
+    default:
+      return "an unsupported value";
   }
 }
 
@@ -246,8 +262,8 @@ size_t JsonReader::Index(const Json& v, const std::string& at, size_t count,
                                        : v.get<long long>();
   if (i < 0) Fail(at, "index " + std::to_string(i) + " is negative");
   if (static_cast<unsigned long long>(i) >= count)
-    Fail(at, what + " " + std::to_string(i) + " does not exist (the file has " + std::to_string(count) +
-                 " " + what + (count == 1 ? "" : "s") + ")");
+    Fail(at, what + " " + std::to_string(i) + " does not exist (the file has " +
+                 std::to_string(count) + " " + what + (count == 1 ? "" : "s") + ")");
   return static_cast<size_t>(i);
 }
 
@@ -257,8 +273,8 @@ const Json* JsonReader::Find(const Json& obj, const std::string& key) {
   return it == obj.end() ? nullptr : &*it;
 }
 
-double JsonReader::NumberIn(const Json& obj, const std::string& at, const std::string& key, double def,
-                            double lo, double hi) const {
+double JsonReader::NumberIn(const Json& obj, const std::string& at, const std::string& key,
+                            double def, double lo, double hi) const {
   const Json* v = Find(obj, key);
   if (!v) return def;
   std::string p = PointerChild(at, key);
@@ -268,7 +284,8 @@ double JsonReader::NumberIn(const Json& obj, const std::string& at, const std::s
   return x;
 }
 
-const Json& JsonReader::ArrayOrEmpty(const Json& obj, const std::string& at, const std::string& key) const {
+const Json& JsonReader::ArrayOrEmpty(const Json& obj, const std::string& at,
+                                     const std::string& key) const {
   static const Json empty = Json::array();
   const Json* v = Find(obj, key);
   return v ? Array(*v, PointerChild(at, key)) : empty;

@@ -21,7 +21,8 @@ constexpr size_t kMaxSceneDepth = 64;
 
 /// Parses `text` as JSON; a syntax error throws SceneError at "line L, column C" (`prefix` goes
 /// before it, e.g. "JSON chunk, " for a glb), and so does nesting deeper than kMaxSceneDepth.
-Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix = "");
+Json ParseSceneJson(const std::string& text, const std::string& file,
+                    const std::string& prefix = "");
 
 /// Reads the whole file, at most kMaxSceneBytes (a bounded read: a device or a pipe that never
 /// ends is refused at the cap); throws SceneError when it cannot.
