@@ -161,7 +161,7 @@ TEST_CASE("SIGXFSZ (a file size limit) removes the temporary file", "[stress][in
   CHECK(Names(f.dir) == std::vector<std::string>{kTable + ".exr", "manifest.json"});
 }
 
-// UpdateManifest (baker/bake/bake.cpp) writes manifest.json through writeAtomically like the
+// CommitBakedTable (baker/bake/bake.cpp) writes manifest.json through a temporary file like the
 // tables, so a bake killed while it writes the manifest leaves the old one, never a truncated
 // one. Renamed into place, the file gets a new inode: a hard link made beforehand keeps the old
 // bytes, which shows it deterministically.

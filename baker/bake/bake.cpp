@@ -269,15 +269,6 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
 
 void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
 
-void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
-                    const std::vector<long long>& evals) {
-  FolderLock lock(dir);
-  // Like every table: a killed bake leaves the old manifest or the new one, never a partial one.
-  PendingFile manifest(dir + "/manifest.json");
-  manifest.WriteBytes(ManifestText(dir, tables, evals));
-  PendingFile::CommitAll({&manifest});
-}
-
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
                       bool header, int threads) {
   if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());

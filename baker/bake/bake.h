@@ -37,13 +37,6 @@ void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool
 /// The spec hash stored in DIR/<name>.exr, or "" when the file is missing or not a kiln table.
 std::string StoredSpecHash(const std::string& exrPath);
 
-/// Adds or replaces the entries of `tables` in DIR/manifest.json (sorted by name), atomically,
-/// holding DIR's FolderLock (baker/io/atomic_write.h) from the read to the rename, so that
-/// concurrent bakes into DIR never lose each other's entries. Throws (CheckManifest) instead of
-/// replacing a manifest that is not one.
-void UpdateManifest(const std::string& dir, const std::vector<Table>& tables,
-                    const std::vector<long long>& evals);
-
 /// Throws std::runtime_error when DIR/manifest.json exists and cannot be updated: not a regular
 /// file, not valid JSON ("DIR/manifest.json is not valid JSON (<reason>); move it aside or
 /// delete it"), or not a kiln manifest (not an object with a "tables" array of entries with a

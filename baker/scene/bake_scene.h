@@ -19,7 +19,7 @@ struct SceneBakeResult {
 /// holds its spec (StoredSpecHash == spec.Hash()): those files are left untouched (same bytes,
 /// same mtime; with `header`, a missing DIR/<name>.h is written from the file). Adds the baked
 /// tables to DIR/manifest.json. Prints one line per table and a summary to `log` (nullptr:
-/// silent). Throws what BakeTable and WriteBakedTable throw.
+/// silent). Throws what BakeTable and CommitBakedTable throw.
 SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOptions& opt,
                          bool half, bool header, std::FILE* log);
 
