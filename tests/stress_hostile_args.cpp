@@ -262,8 +262,8 @@ TEST_CASE("A thread count above the number of cores runs without a oneTBB warnin
           "[stress][hostile][cli]") {
   ScratchDir dir("hostile_args_threads");
   for (const std::string j : {"256", "1024"}) {
-    auto r = RunKilnFor(
-        120, "bake --only lambert-albedo --size 3 -j " + j + " --out " + Quote(dir.path.string()));
+    auto r = RunKilnFor(120, "bake --quiet --only lambert-albedo --size 3 -j " + j + " --out " +
+                                 Quote(dir.path.string()));
     INFO("bake -j " << j << ": exit " << r.exitCode << ", stderr: " << r.err);
     CHECK(r.exitCode == 0);
     CHECK(r.err.empty());

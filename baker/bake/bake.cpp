@@ -1,5 +1,8 @@
 #include "baker/bake/bake.h"
 
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -8,6 +11,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -15,6 +19,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <thread>
@@ -31,41 +36,53 @@ namespace {
 
 constexpr const char* kGenerator = "kiln 0.1.0";
 
-/// Redraws a one-line progress bar on stderr every 100 ms while `done` < `total`.
+/// Redraws a one-line progress bar on stderr every 100 ms while the bake runs; Stop() (or the
+/// destructor) wakes the drawing thread at once, joins it and clears the line.
 class ProgressBar {
  public:
   ProgressBar(const std::string& label, size_t total, bool enabled)
       : label_(label), total_(total), enabled_(enabled) {
     if (enabled_) thread_ = std::thread([this] { Run(); });
   }
-  ~ProgressBar() {
-    stop_ = true;
+  ~ProgressBar() { Stop(); }
+  void Stop() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (stopped_) return;
+      stopped_ = true;
+    }
+    wake_.notify_all();
     if (thread_.joinable()) thread_.join();
     if (enabled_) {
-      Draw();
-      std::fprintf(stderr, "\n");
+      std::fprintf(stderr, "\r%*s\r", Width(), "");  // the per-table line takes its place
+      std::fflush(stderr);
     }
   }
   std::atomic<size_t> done{0};
 
  private:
+  static constexpr int kBar = 30;
+  int Width() const { return 32 + 3 + kBar + 2 + 2 * 20 + 1; }
   void Run() {
-    while (!stop_) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!stopped_) {
       Draw();
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stopped_; });
     }
   }
   void Draw() {
     size_t d = done.load();
-    int width = 30, filled = total_ ? static_cast<int>(width * d / total_) : width;
+    int filled = total_ ? static_cast<int>(kBar * d / total_) : kBar;
     std::fprintf(stderr, "\r%-32s [%s%s] %zu/%zu", label_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), d, total_);
+                 std::string(kBar - filled, '.').c_str(), d, total_);
     std::fflush(stderr);
   }
   std::string label_;
   size_t total_;
   bool enabled_;
-  std::atomic<bool> stop_{false};
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopped_ = false;
   std::thread thread_;
 };
 
@@ -95,9 +112,10 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   size_t n = spec.TexelCount(), nc = spec.channels.size();
   std::vector<long long> evals(n, 0);
   std::vector<double> errors(n, 0);
-  auto t0 = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point t0, t1;
   {
     ProgressBar bar(spec.name, n, opt.progress);
+    t0 = std::chrono::steady_clock::now();             // after the bar's thread started
     const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
     tbb::task_arena arena(Threads(opt.threads));
     arena.execute([&] {
@@ -118,8 +136,9 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
                           }
                         });
     });
+    t1 = std::chrono::steady_clock::now();  // the texels only: not the bar's thread
+    bar.Stop();
   }
-  auto t1 = std::chrono::steady_clock::now();
   // Bake error, relative to max(1, |value|): ten times the integrator's own estimate (QUADPACK's
   // estimate of the nested rule can be low by a few times; tests/bake_tables.cpp checks the
   // bound by re-integrating texels), never below the tolerance, plus float32 rounding (2^-24).
@@ -288,6 +307,72 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
   PendingFile::CommitAll(files);
+}
+
+namespace {
+
+/// Whether every channel of the EXR file at `path` (a loadable kiln table) is HALF.
+bool StoredAsHalf(const std::string& path) {
+  Imf::InputFile in(path.c_str(), 1);
+  const Imf::ChannelList& channels = in.header().channels();
+  for (auto it = channels.begin(); it != channels.end(); ++it)
+    if (it.channel().type != Imf::HALF) return false;
+  return channels.begin() != channels.end();
+}
+
+}  // namespace
+
+bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError) {
+  std::string path = dir + "/" + spec.name + ".exr", hash = spec.Hash();
+  Table stored;
+  std::string error;
+  if (access(path.c_str(), R_OK) != 0 || !loadTable(path, stored, error)) return false;
+  if (stored.specHash != hash || (lookupError && stored.lookupError.max < 0)) return false;
+  try {
+    if (StoredAsHalf(path) != half) return false;
+  } catch (const std::exception&) {
+    return false;
+  }
+  auto entries = ManifestEntries(dir);
+  auto it = entries.find(spec.name);
+  return it != entries.end() && it->second.contains("spec_hash") && it->second["spec_hash"] == hash;
+}
+
+BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& dir,
+                        const BakeRunOptions& opt) {
+  auto t0 = std::chrono::steady_clock::now();
+  BakeRunResult result;
+  for (const TableSpec& spec : specs) {
+    if (!opt.force && IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError)) {
+      result.skipped.push_back(spec.name);
+      std::string h = dir + "/" + spec.name + ".h";
+      bool wroteHeader = opt.header && access(h.c_str(), F_OK) != 0;
+      if (wroteHeader) writeCppHeader(h, loadTable(dir + "/" + spec.name + ".exr"));
+      if (opt.log) {
+        std::fprintf(opt.log, "skipped %-36s up to date%s\n", spec.name.c_str(),
+                     wroteHeader ? " (header written)" : "");
+        std::fflush(opt.log);
+      }
+      continue;
+    }
+    BakeStats stats;
+    Table table = BakeTable(spec, opt.bake, &stats);
+    // Table and manifest entry land together, table by table: a bake killed after table k
+    // leaves a manifest that describes tables 1..k (and the older files) correctly.
+    CommitBakedTable(dir, table, stats.evals, opt.half, opt.header, opt.bake.threads);
+    if (opt.log) {
+      std::fprintf(opt.log, "baked   %-36s %8zu texels %8.2f s  bake error %.1e", spec.name.c_str(),
+                   spec.TexelCount(), stats.seconds, table.bakeError);
+      if (table.lookupError.max >= 0)
+        std::fprintf(opt.log, "  lookup error %.1e (checked in %.2f s)", table.lookupError.max,
+                     stats.lookupSeconds);
+      std::fprintf(opt.log, "\n");
+      std::fflush(opt.log);
+    }
+    result.baked.push_back(spec.name);
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
 }
 
 }  // namespace kiln

@@ -1,5 +1,6 @@
 // The bake: evaluate a table spec at every node with oneTBB, measure its errors, write it.
 #pragma once
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -10,14 +11,14 @@ namespace kiln {
 
 struct BakeOptions {
   int threads = 0;                 ///< 0: all cores
-  bool progress = false;           ///< draw a progress bar on stderr
+  bool progress = false;           ///< redraw a progress bar on stderr (meant for a terminal)
   bool measureLookupError = true;  ///< measure the interpolation error at cell centres
   int lookupRandomPoints = 1000;   ///< extra random points for that measurement
 };
 
 struct BakeStats {
   long long evals = 0;       ///< integrand evaluations of the texels
-  double seconds = 0;        ///< wall time of the texels (without the lookup-error check)
+  double seconds = 0;        ///< wall time of the texels only (no lookup check, no progress bar)
   double lookupSeconds = 0;  ///< wall time of the lookup-error check
 };
 
@@ -52,5 +53,38 @@ void CheckManifest(const std::string& dir);
 /// std::runtime_error (one line); DIR's files are then unchanged.
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
                       bool header, int threads = 1);
+
+/// Whether DIR/<spec.name>.exr already is what a bake of `spec` would write, so that the bake can
+/// leave it alone: the file's stored spec hash is spec.Hash(), its pixels are half exactly when
+/// `half`, it declares a lookup error when `lookupError` (a bake with --no-lookup-error writes
+/// none), and DIR/manifest.json has an entry of that name with the same spec hash (a skipped
+/// table keeps its manifest entry; without one the table is baked again so the entry is whole).
+/// Throws as CheckManifest for a manifest that is not one.
+bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError);
+
+/// How BakeSpecs bakes.
+struct BakeRunOptions {
+  BakeOptions bake;          ///< threads, progress bar, lookup-error measurement
+  bool half = false;         ///< store half floats
+  bool header = false;       ///< also write DIR/<name>.h
+  bool force = false;        ///< bake every table, even when up to date
+  std::FILE* log = nullptr;  ///< one line per table (nullptr: silent)
+};
+
+/// What BakeSpecs did.
+struct BakeRunResult {
+  std::vector<std::string> baked, skipped;  ///< table names, in order
+  double seconds = 0;                       ///< wall time of the whole run
+};
+
+/// Bakes each of `specs` into `dir` (which must exist; CheckManifest first) and commits it with
+/// its manifest entry (CommitBakedTable), table by table, except those IsUpToDate finds (unless
+/// opt.force): they are left untouched (same bytes, same mtime; with opt.header a missing
+/// DIR/<name>.h is written from the file). Logs, per table, either
+///   "baked   NAME  TEXELS texels  S s  bake error E  lookup error L" (S: the texels only) or
+///   "skipped NAME  up to date".
+/// Throws what BakeTable and CommitBakedTable throw; the tables committed before stay.
+BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& dir,
+                        const BakeRunOptions& opt);
 
 }  // namespace kiln

@@ -2,8 +2,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
 
@@ -11,7 +11,6 @@
 #include "baker/cli/commands.h"
 #include "baker/scene/bake_scene.h"
 #include "baker/tables/catalogue.h"
-#include <cstdlib>
 
 namespace kiln::cli {
 namespace {
@@ -38,7 +37,7 @@ void RegisterBake(CLI::App& app) {
   struct Args {
     std::string out = "luts", only, scene;
     int size = 0, threads = 0;
-    bool half = false, header = false, noLookup = false;
+    bool half = false, header = false, noLookup = false, force = false, quiet = false;
     double roughness = 0.5;
   };
   auto args = std::make_shared<Args>();
@@ -55,6 +54,10 @@ void RegisterBake(CLI::App& app) {
       "--scene", args->scene, "bake only what this glTF/.glb or kiln scene needs (see kiln plan)");
   sub->add_flag("--no-lookup-error", args->noLookup,
                 "skip measuring the lookup error (the file then declares none)");
+  sub->add_flag("--force", args->force,
+                "bake every table, also those whose file in DIR is up to date (same spec hash)");
+  sub->add_flag("-q,--quiet", args->quiet,
+                "print nothing but errors (no line per table on stderr, no progress bar)");
   sub->callback([args, oSize, oOnly, oScene] {
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("bake: --size " + std::to_string(args->size) +
@@ -67,16 +70,22 @@ void RegisterBake(CLI::App& app) {
       throw std::invalid_argument("bake: --only '' names no table");
     if (oScene->count() && args->scene.empty())
       throw std::invalid_argument("bake: --scene '' names no file");
+    // A line per table and a summary on stderr, terminal or not (build logs, CI); the redrawn
+    // bar only on a terminal. --quiet: neither.
+    BakeRunOptions run;
+    run.bake.threads = args->threads;
+    run.bake.progress = !args->quiet && isatty(STDERR_FILENO);
+    run.bake.measureLookupError = !args->noLookup;
+    run.half = args->half;
+    run.header = args->header;
+    run.force = args->force;
+    run.log = args->quiet ? nullptr : stderr;
     if (oScene->count()) {
       if (oOnly->count()) throw std::invalid_argument("bake: give --scene or --only, not both");
       PrepareOutputFolder(args->out);
-      BakeOptions bopt;
-      bopt.threads = args->threads;
-      bopt.progress = isatty(STDOUT_FILENO);
-      bopt.measureLookupError = !args->noLookup;
       PlanOptions popt;
       popt.size = args->size;
-      int code = BakeScene(args->scene, args->out, bopt, args->half, args->header, popt);
+      int code = BakeScene(args->scene, args->out, run, popt);
       if (code != 0) std::exit(code);
       return;
     }
@@ -91,27 +100,10 @@ void RegisterBake(CLI::App& app) {
         specs.push_back(CatalogueTable(name, copt));
     }
     PrepareOutputFolder(args->out);
-    bool tty = isatty(STDOUT_FILENO);
-    BakeOptions bopt;
-    bopt.threads = args->threads;
-    bopt.progress = tty;
-    bopt.measureLookupError = !args->noLookup;
-    size_t baked = 0;
-    auto t0 = std::chrono::steady_clock::now();
-    for (const TableSpec& spec : specs) {
-      BakeStats stats;
-      Table t = BakeTable(spec, bopt, &stats);
-      // Table and manifest entry land together, table by table: a bake killed after table k
-      // leaves a manifest that describes tables 1..k (and the older files) correctly.
-      CommitBakedTable(args->out, t, stats.evals, args->half, args->header, args->threads);
-      if (tty)
-        std::printf("%-34s %8.2f s  %12lld evals  bake error %.1e  lookup error %.1e\n",
-                    t.name.c_str(), stats.seconds + stats.lookupSeconds, stats.evals, t.bakeError,
-                    t.lookupError.max);
-      ++baked;
-    }
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (tty) std::printf("baked %zu tables into %s in %.2f s\n", baked, args->out.c_str(), seconds);
+    BakeRunResult done = BakeSpecs(specs, args->out, run);
+    if (run.log)
+      std::fprintf(run.log, "%zu baked, %zu skipped (up to date) in %.2f s -> %s\n",
+                   done.baked.size(), done.skipped.size(), done.seconds, args->out.c_str());
   });
 }
 

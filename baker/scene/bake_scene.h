@@ -15,23 +15,28 @@ struct SceneBakeResult {
   double seconds = 0;                       ///< wall time of the whole run
 };
 
-/// Bakes every table of `plan` into `dir` (created when missing) unless DIR/<name>.exr already
-/// holds its spec (StoredSpecHash == spec.Hash()): those files are left untouched (same bytes,
-/// same mtime; with `header`, a missing DIR/<name>.h is written from the file). Adds the baked
-/// tables to DIR/manifest.json. Prints one line per table and a summary to `log` (nullptr:
-/// silent). Throws what BakeTable and CommitBakedTable throw.
+/// Bakes every table of `plan` into `dir` (created when missing) with BakeSpecs: a table whose
+/// file is up to date (IsUpToDate: the stored spec hash is spec.Hash(), and its manifest entry
+/// too) is left untouched (same bytes, same mtime; with `header`, a missing DIR/<name>.h is
+/// written from the file) unless `force`. Adds the baked tables to DIR/manifest.json. Prints
+/// one line per table and a summary to `log` (nullptr: silent). Throws what BakeTable and
+/// CommitBakedTable throw.
 SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOptions& opt,
-                         bool half, bool header, std::FILE* log);
+                         bool half, bool header, std::FILE* log, bool force = false);
 
-/// `kiln bake --scene SCENE --out DIR`: reads and plans the scene, bakes it (BakePlan, report on
-/// stdout). Returns the process exit code: 0, or 1 after printing "kiln: error: ..." on stderr
-/// for a bad scene file or a failed bake. Warnings (e.g. an unknown required extension) go to
-/// stderr and do not fail the run.
-int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt,
-              bool half, bool header);
+/// `kiln bake --scene SCENE --out DIR`: reads and plans the scene, bakes it (BakePlan; its
+/// report goes to run.log, nullptr for --quiet). Returns the process exit code: 0, or 1 after
+/// printing "kiln: error: ..." on stderr for a bad scene file or a failed bake. Warnings (e.g. an
+/// unknown required extension) go to stderr and do not fail the run.
+int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeRunOptions& run,
+              const PlanOptions& planOpt);
 
-/// Same, with plan options (the axis size override of tests and previews).
+/// Same, reporting on stderr, not forced, with plan options (the axis size override of tests).
 int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt,
               bool half, bool header, const PlanOptions& planOpt);
+
+/// Same, with the catalogue's sizes.
+int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeOptions& opt,
+              bool half, bool header);
 
 }  // namespace kiln
