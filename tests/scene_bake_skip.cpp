@@ -108,7 +108,7 @@ TEST_CASE("The scene bake reports baked, skipped and the time", "[scene][bake]")
   std::string second = report();
   CHECK(second.find("skipped ggx-dfg-r0.3 ") == 0);
   CHECK(second.find(": 0 baked, 3 skipped (up to date) in ") != std::string::npos);
-  // BakeScene (what `kiln bake --scene` calls) prints the same report on stdout and returns 0.
+  // BakeScene (what `kiln bake --scene` calls) prints the same report on stderr and returns 0.
   std::fflush(stdout);
   CHECK(BakeScene(scene, dir, Fast(), false, false, popt) == 0);
   std::system(("rm -rf " + dir).c_str());

@@ -1,5 +1,7 @@
 // kiln inspect: a table's attributes and channel ranges, optionally a false-colour picture.
+#include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 
 #include "baker/cli/commands.h"
 #include "baker/io/atomic_write.h"
@@ -7,19 +9,76 @@
 #include "kiln/exr_loader.h"
 
 namespace kiln::cli {
+namespace {
+
+/// `kiln inspect --json`: the file's attributes and per-channel ranges as one JSON object.
+std::string InspectJson(const std::string& file, const Table& t, const std::string& png) {
+  using nlohmann::ordered_json;
+  ordered_json doc;
+  doc["file"] = file;
+  doc["name"] = t.name;
+  doc["generator"] = t.generator;
+  doc["format"] = kFormatVersion;
+  doc["model"] = t.model;
+  doc["quantity"] = t.quantity;
+  doc["params"] = t.params;
+  doc["axes"] = ordered_json::array();
+  for (const TableAxis& a : t.axes)
+    doc["axes"].push_back({{"name", a.name},
+                           {"lo", a.axis.lo},
+                           {"hi", a.axis.hi},
+                           {"size", a.axis.size},
+                           {"warp", warpName(a.axis.warp)}});
+  doc["method"] = t.method;
+  doc["tolerance"] = t.tolerance;
+  doc["bake_error"] = t.bakeError;
+  doc["lookup_error"] = {{"max", t.lookupError.max},
+                         {"rms", t.lookupError.rms},
+                         {"filter", t.lookupError.filter},
+                         {"where", t.lookupError.where},
+                         {"cubic_max", t.lookupError.cubicMax},
+                         {"cubic_rms", t.lookupError.cubicRms}};
+  doc["spec_hash"] = t.specHash;
+  doc["channels"] = ordered_json::array();
+  size_t nc = t.channels.size();
+  for (size_t c = 0; c < nc; ++c) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (size_t i = c; i < t.data.size(); i += nc) {
+      lo = std::min(lo, static_cast<double>(t.data[i]));
+      hi = std::max(hi, static_cast<double>(t.data[i]));
+    }
+    doc["channels"].push_back(
+        {{"name", t.channels[c]},
+         {"meaning", c < t.channelMeanings.size() ? t.channelMeanings[c] : ""},
+         {"min", lo},
+         {"max", hi}});
+  }
+  if (!png.empty()) doc["png"] = png;
+  return doc.dump(2) + "\n";
+}
+
+}  // namespace
 
 void RegisterInspect(CLI::App& app) {
   auto* sub = app.add_subcommand("inspect", "print a table's attributes and per-channel ranges");
   struct Args {
     std::string file, png;
+    bool json = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("file", args->file, "a kiln .exr table")->required();
   sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
+  sub->add_flag("--json", args->json,
+                "print the attributes as one JSON object on stdout (keys: README, Command line)");
   sub->callback([args] {
     // A device, FIFO, link or folder at --png is refused before anything is printed.
     if (!args->png.empty()) CheckWritableTarget(args->png);
     Table t = loadTable(args->file);
+    if (args->json) {
+      if (!args->png.empty()) writeFalseColourPng(args->png, t);
+      std::fputs(InspectJson(args->file, t, args->png).c_str(), stdout);
+      return;
+    }
     std::printf("file            %s\n", args->file.c_str());
     std::printf("name            %s\n", t.name.c_str());
     std::printf("generator       %s (format %d)\n", t.generator.c_str(), kFormatVersion);

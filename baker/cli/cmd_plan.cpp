@@ -15,6 +15,7 @@ void RegisterPlan(CLI::App& app) {
   struct Args {
     std::string scene, out = "luts";
     int size = 0;
+    bool check = false, json = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("scene", args->scene, "glTF 2.0 (.gltf, .glb) or kiln scene (.json) file")
@@ -23,6 +24,10 @@ void RegisterPlan(CLI::App& app) {
   CLI::Option* oSize =
       sub->add_option("--size", args->size,
                       "nodes on every catalogue axis before narrowing (default: the catalogue's)");
+  sub->add_flag("--check", args->check,
+                "exit 1 when a table is missing or stale in DIR (0 when all are up to date)");
+  sub->add_flag("--json", args->json,
+                "print the plan as one JSON object on stdout (keys: README, Command line)");
   sub->callback([args, oSize] {
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("plan: --size " + std::to_string(args->size) +
@@ -32,7 +37,18 @@ void RegisterPlan(CLI::App& app) {
     Plan plan = PlanSceneFile(args->scene, opt);
     for (const std::string& w : plan.warnings)
       std::fprintf(stderr, "kiln: warning: %s\n", w.c_str());
-    std::fputs(FormatPlan(plan, args->out).c_str(), stdout);
+    std::fputs((args->json ? FormatPlanJson(plan, args->out) : FormatPlan(plan, args->out)).c_str(),
+               stdout);
+    if (args->check) {
+      size_t notReady = 0;
+      for (TableState s : PlanStates(plan, args->out)) notReady += s != TableState::UpToDate;
+      if (notReady) {
+        std::fflush(stdout);
+        throw std::runtime_error("plan --check: " + std::to_string(notReady) + " of " +
+                                 std::to_string(plan.tables.size()) +
+                                 " table(s) missing or stale in " + args->out);
+      }
+    }
   });
 }
 

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstring>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
 #include "baker/bake/lookup_error.h"
@@ -52,6 +53,7 @@ void RegisterVerify(CLI::App& app) {
     double tol = 1e-7;
     int threads = 0;
     std::string filter;
+    bool json = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("paths", args->paths, "tables or folders of tables")->required();
@@ -65,6 +67,8 @@ void RegisterVerify(CLI::App& app) {
                   "measure with this filter instead of the declared one (then only reported, "
                   "not checked against the bound)")
       ->check(CLI::IsMember({"linear", "cubic"}));
+  sub->add_flag("--json", args->json,
+                "print the results as one JSON object on stdout (keys: README, Command line)");
   sub->callback([args] {
     // Caps on the work (each point is one integral, and 17 bytes of bookkeeping).
     if (args->cells < 0 || args->cells > kMaxVerifyPoints)
@@ -82,14 +86,19 @@ void RegisterVerify(CLI::App& app) {
       for (const std::string& f : ExrFiles(p)) files.push_back(f);
     if (files.empty()) throw std::invalid_argument("verify: no .exr files found");
     int failed = 0;
-    std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
-                "where (max)");
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    if (!args->json)
+      std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
+                  "where (max)");
     for (const std::string& f : files) {
       // A file that does not load, or whose metadata cannot be evaluated (unreadable params,
       // unknown model or quantity, channels the quantity does not have), fails on its own line;
       // the other files are still checked.
       auto fail = [&](const std::string& why) {
-        std::printf("%-40s FAILED: %s\n", f.c_str(), why.c_str());
+        if (args->json)
+          rows.push_back({{"file", f}, {"ok", false}, {"error", why}});
+        else
+          std::printf("%-40s FAILED: %s\n", f.c_str(), why.c_str());
         ++failed;
       };
       Table t;
@@ -127,12 +136,34 @@ void RegisterVerify(CLI::App& app) {
       // The direct evaluation itself is only good to tol: allow that much on top of the bound.
       bool ok = !checked ||
                 (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError);
-      std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
-                  t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
-                  ok ? "" : "  EXCEEDS BOUND");
+      if (args->json)
+        rows.push_back({{"file", f},
+                        {"ok", ok},
+                        {"name", t.name},
+                        {"filter", filter},
+                        {"checked", checked},
+                        {"max", rep.max},
+                        {"rms", rep.rms},
+                        {"declared", t.lookupError.max},
+                        {"off_corner", rep.maxOutsideCorner},
+                        {"where", rep.WhereText(spec)},
+                        {"points", rep.points}});
+      else
+        std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
+                    t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
+                    ok ? "" : "  EXCEEDS BOUND");
       if (!ok) ++failed;
     }
-    std::printf("%zu tables, %d over their bound\n", files.size(), failed);
+    if (args->json) {
+      nlohmann::ordered_json doc;
+      doc["tables"] = rows;
+      doc["count"] = files.size();
+      doc["failed"] = failed;
+      std::fputs((doc.dump(2) + "\n").c_str(), stdout);
+      std::fflush(stdout);
+    } else {
+      std::printf("%zu tables, %d over their bound\n", files.size(), failed);
+    }
     if (failed) throw std::runtime_error("verify: " + std::to_string(failed) + " table(s) failed");
   });
 }

@@ -5,10 +5,12 @@
 
 namespace kiln::cli {
 
-/// kiln plan SCENE [--out DIR] [--size N]: prints the tables a glTF 2.0 asset (.gltf, .glb) or a
-/// kiln scene manifest needs, why, their ranges and sizes, whether DIR (default luts/) holds them
-/// up to date, and what needs no table. A bad scene file is an error naming the file and the
-/// JSON pointer (exit 1); warnings go to stderr.
+/// kiln plan SCENE [--out DIR] [--size N] [--check] [--json]: prints the tables a glTF 2.0 asset
+/// (.gltf, .glb) or a kiln scene manifest needs, why, their ranges and sizes, whether DIR
+/// (default luts/) holds them up to date, and what needs no table (--json: as one JSON object,
+/// FormatPlanJson). With --check, exits 1 after the report when a table is missing or stale. A
+/// bad scene file is an error naming the file and the JSON pointer (exit 1); warnings go to
+/// stderr.
 void RegisterPlan(CLI::App& app);
 
 }  // namespace kiln::cli

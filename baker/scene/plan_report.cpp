@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include <nlohmann/json.hpp>
+
 #include "baker/bake/bake.h"
 #include "baker/scene/scene_json.h"
 
@@ -107,6 +109,83 @@ std::string FormatPlan(const Plan& plan, const std::string& dir) {
     }
   }
   return out;
+}
+
+std::vector<TableState> PlanStates(const Plan& plan, const std::string& dir) {
+  std::vector<TableState> states;
+  for (const PlannedTable& t : plan.tables) states.push_back(StateOf(t.spec, dir));
+  return states;
+}
+
+namespace {
+
+const char* NoteKind(SceneNote::Kind kind) {
+  switch (kind) {
+    case SceneNote::Kind::NoTable:
+      return "no table";
+    case SceneNote::Kind::NoEffect:
+      return "no effect";
+    case SceneNote::Kind::NotYet:
+      return "not yet";
+    case SceneNote::Kind::Unknown:
+      return "unknown";
+    case SceneNote::Kind::Unused:
+      return "unused";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string FormatPlanJson(const Plan& plan, const std::string& dir) {
+  using nlohmann::ordered_json;
+  std::vector<TableState> states = PlanStates(plan, dir);
+  ordered_json doc;
+  doc["scene"] = plan.scenePath;
+  doc["format"] = plan.format;
+  doc["materials"] = plan.materialCount;
+  doc["dir"] = dir;
+  doc["tables"] = ordered_json::array();
+  size_t counts[3] = {0, 0, 0};
+  for (size_t i = 0; i < plan.tables.size(); ++i) {
+    const PlannedTable& t = plan.tables[i];
+    const TableSpec& s = t.spec;
+    ++counts[static_cast<int>(states[i])];
+    ordered_json e;
+    e["name"] = s.name;
+    e["state"] = StateName(states[i]);
+    e["file"] = dir + "/" + s.name + ".exr";
+    e["quantity"] = Describe(s.quantity).name;
+    e["model"] = s.model;
+    e["channels"] = s.channels;
+    e["axes"] = ordered_json::array();
+    for (const AxisSpec& a : s.axes)
+      e["axes"].push_back({{"name", a.name},
+                           {"lo", a.lo},
+                           {"hi", a.hi},
+                           {"size", a.size},
+                           {"warp", warpName(a.warp)}});
+    e["params"] = ordered_json::object();
+    for (const auto& [k, v] : s.params) e["params"][k] = v;
+    e["texels"] = s.TexelCount();
+    e["bytes_float32"] = s.TexelCount() * s.channels.size() * 4;
+    e["scene_uses"] = ordered_json::object();
+    for (const auto& [axis, v] : t.ranges) e["scene_uses"][axis] = v.Text();
+    e["needed_by"] = t.reasons;
+    e["spec_hash"] = s.Hash();
+    doc["tables"].push_back(e);
+  }
+  doc["up_to_date"] = counts[static_cast<int>(TableState::UpToDate)];
+  doc["stale"] = counts[static_cast<int>(TableState::Stale)];
+  doc["missing"] = counts[static_cast<int>(TableState::Missing)];
+  doc["notes"] = ordered_json::array();
+  for (const PlanNote& n : plan.notes)
+    doc["notes"].push_back({{"kind", NoteKind(n.kind)},
+                            {"topic", n.topic},
+                            {"why", n.why},
+                            {"materials", n.materials}});
+  doc["warnings"] = plan.warnings;
+  return doc.dump(2) + "\n";
 }
 
 }  // namespace kiln
