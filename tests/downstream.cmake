@@ -5,7 +5,10 @@
 #  3. the whole kiln project added with add_subdirectory: configures, with kiln::kiln too (not
 #     built here: that is the whole baker; kiln's own build is that build).
 # Each way builds tests/downstream, runs its in-memory sample, and samples luts/ggx-dfg.exr,
-# which must print exactly what `kiln sample` prints.
+# which must print exactly what `kiln sample` prints. The package way also bakes a table with
+# kiln_bake() as a build step, samples it, and builds twice more: with nothing changed nothing
+# runs; with the stamp removed kiln runs and says the table is up to date, which stays the same
+# file (inode and mtime).
 # Run by CTest: cmake -DKILN_BUILD_DIR=... -DKILN_SOURCE_DIR=... -DKILN=... -P downstream.cmake
 foreach(var KILN_BUILD_DIR KILN_SOURCE_DIR KILN)
   if(NOT ${var})
@@ -22,6 +25,41 @@ function(run)
     message(FATAL_ERROR "failed (${rc}): ${ARGV}\n${out}\n${err}")
   endif()
   set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+# kiln_bake() in the package build at `dir`: the first build baked luts/fresnel-dielectric-avg.exr.
+function(check_kiln_bake dir)
+  set(baked "${dir}/luts/fresnel-dielectric-avg.exr")
+  if(NOT EXISTS "${baked}")
+    message(FATAL_ERROR "kiln_bake: ${baked} was not baked")
+  endif()
+  run(${KILN} sample ${baked} 1.5)
+  set(want "${out}")
+  run(${dir}/sample_file ${baked} 1.5)
+  if(NOT out STREQUAL want OR out STREQUAL "")
+    message(FATAL_ERROR "kiln_bake: sample_file printed '${out}', kiln sample '${want}'")
+  endif()
+  run(stat -c "%i %.9Y" ${baked})
+  set(identity "${out}")
+  # Nothing changed: the stamp is up to date, kiln does not run.
+  run(${CMAKE_COMMAND} --build ${dir} -j 2)
+  if(out MATCHES "kiln_bake\\(downstream_luts\\)")
+    message(FATAL_ERROR "kiln_bake: a second build with nothing changed ran kiln again:\n${out}")
+  endif()
+  # The stamp removed: kiln runs, finds the table up to date and leaves the file alone.
+  file(REMOVE ${dir}/downstream_luts.kiln-stamp)
+  run(${CMAKE_COMMAND} --build ${dir} -j 2)
+  set(log "${out}${err}")
+  if(NOT log MATCHES "skipped fresnel-dielectric-avg +up to date" OR
+     NOT log MATCHES "0 baked, 1 skipped")
+    message(FATAL_ERROR "kiln_bake: kiln did not skip the up-to-date table:\n${log}")
+  endif()
+  run(stat -c "%i %.9Y" ${baked})
+  if(NOT out STREQUAL identity)
+    message(FATAL_ERROR "kiln_bake: the up-to-date table was rewritten (${identity} -> ${out})")
+  endif()
+  message(STATUS "package: kiln_bake baked once, then nothing")
 endfunction()
 
 run(${KILN} sample ${table} 0.5 0.3)
@@ -50,6 +88,9 @@ foreach(way package subdirectory)
   run(${work}/${way}/sample_file ${table} 0.5 0.3)
   if(NOT out STREQUAL expected)
     message(FATAL_ERROR "${way}: sample_file printed '${out}', kiln sample '${expected}'")
+  endif()
+  if(way STREQUAL "package")
+    check_kiln_bake(${work}/${way})
   endif()
   message(STATUS "${way}: ok")
 endforeach()
