@@ -137,3 +137,27 @@ TEST_CASE("kiln bake --scene reports on stderr, --quiet silences it", "[cli][bak
   CHECK(forced.out.empty());
   std::system(("rm -rf " + dir).c_str());
 }
+
+TEST_CASE("On a terminal the bar is drawn on stderr, and --quiet prints nothing there either",
+          "[cli][bake][skip]") {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) {
+    WARN("util-linux `script` (a pseudo-terminal) is not installed: skipped");
+    return;
+  }
+  std::string dir = TempDir("bake_tty"), log = dir + ".log";
+  // `script` runs the bake on a pseudo-terminal (stdout and stderr) and copies what it printed.
+  auto onTerminal = [&](const std::string& args) {
+    std::string cmd = "script -qec \"" + std::string(KILN_BINARY) + " bake " + args + " --out " +
+                      dir + "\" /dev/null >" + log + " 2>&1 </dev/null";
+    CHECK(std::system(cmd.c_str()) == 0);
+    return ReadFile(log);
+  };
+  std::string shown = onTerminal("--only lambert-albedo --size 4 -j 1");
+  CHECK(Has(shown, "\rlambert-albedo"));  // the bar, drawn when the table starts
+  CHECK(Has(shown, "] 0/8"));
+  CHECK(Has(shown, "baked   lambert-albedo "));
+  CHECK(Has(shown, "1 baked, 0 skipped"));
+  std::string quiet = onTerminal("--quiet --force --only lambert-albedo --size 4 -j 1");
+  CHECK(quiet.empty());
+  std::system(("rm -rf " + dir + " " + log).c_str());
+}

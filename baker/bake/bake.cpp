@@ -42,7 +42,9 @@ class ProgressBar {
  public:
   ProgressBar(const std::string& label, size_t total, bool enabled)
       : label_(label), total_(total), enabled_(enabled) {
-    if (enabled_) thread_ = std::thread([this] { Run(); });
+    if (!enabled_) return;
+    Draw();  // at once: even a table baked in less than a redraw shows its bar
+    thread_ = std::thread([this] { Run(); });
   }
   ~ProgressBar() { Stop(); }
   void Stop() {
@@ -65,10 +67,8 @@ class ProgressBar {
   int Width() const { return 32 + 3 + kBar + 2 + 2 * 20 + 1; }
   void Run() {
     std::unique_lock<std::mutex> lock(mutex_);
-    while (!stopped_) {
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stopped_; }))
       Draw();
-      wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stopped_; });
-    }
   }
   void Draw() {
     size_t d = done.load();
