@@ -24,6 +24,8 @@
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
 #include "baker/io/test_hooks.h"
+#include "baker/io/texture_writers.h"
+#include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
@@ -223,13 +225,27 @@ std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
 
 /// The text of DIR/manifest.json with the entries of `tables` added or replaced.
 std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
-                         const std::vector<long long>& evals) {
+                         const std::vector<long long>& evals, OutputFormat format, bool half) {
   std::map<std::string, ordered_json> entries = ManifestEntries(dir);
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     ordered_json e;
     e["name"] = t.name;
-    e["file"] = t.name + ".exr";
+    e["file"] = t.name + FormatExtension(format);
+    if (format != OutputFormat::Exr) {
+      e["format"] = FormatName(format);
+      e["pixel_type"] = format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32";
+      if (format == OutputFormat::Png16) {
+        ordered_json scale = ordered_json::array(), offset = ordered_json::array();
+        for (const Png16Channel& c : Png16Scales(t)) {
+          scale.push_back(c.scale);
+          offset.push_back(c.offset);
+        }
+        e["png16"] = {{"scale", scale},
+                      {"offset", offset},
+                      {"decode", "value = stored / 65535 * scale + offset"}};
+      }
+    }
     e["model"] = t.model;
     e["quantity"] = t.quantity;
     e["channels"] = t.channels;
@@ -270,11 +286,18 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
 void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
 
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
-                      bool header, int threads) {
+                      bool header, int threads, OutputFormat format) {
   if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  if (format == OutputFormat::Exr && FlipsY(table))
+    throw std::runtime_error("kiln: cannot write '" + dir + "/" + table.name +
+                             ".exr': --flip-y applies to ktx2, dds and png16 (kiln's EXR loader "
+                             "reads row 0 as the first node)");
   // The long part (compressing, writing) outside the lock; then the short critical section.
-  PendingFile exr(dir + "/" + table.name + ".exr");
-  writeTable(exr, table, half, threads);
+  PendingFile exr(dir + "/" + table.name + FormatExtension(format));
+  if (format == OutputFormat::Exr)
+    writeTable(exr, table, half, threads);
+  else
+    WriteTextureTable(exr, table, format, half);
   std::unique_ptr<PendingFile> h;
   if (header) {
     h = std::make_unique<PendingFile>(dir + "/" + table.name + ".h");
@@ -283,7 +306,7 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   FolderLock lock(dir);
   RemoveStaleTemporaries(dir);
   PendingFile manifest(dir + "/manifest.json");
-  manifest.WriteBytes(ManifestText(dir, {table}, {evals}));
+  manifest.WriteBytes(ManifestText(dir, {table}, {evals}, format, half));
   std::vector<PendingFile*> files = {&exr};
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
