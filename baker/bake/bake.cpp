@@ -29,6 +29,8 @@
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
 #include "baker/io/test_hooks.h"
+#include "baker/io/texture_writers.h"
+#include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
@@ -242,13 +244,27 @@ std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
 
 /// The text of DIR/manifest.json with the entries of `tables` added or replaced.
 std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
-                         const std::vector<long long>& evals) {
+                         const std::vector<long long>& evals, OutputFormat format, bool half) {
   std::map<std::string, ordered_json> entries = ManifestEntries(dir);
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     ordered_json e;
     e["name"] = t.name;
-    e["file"] = t.name + ".exr";
+    e["file"] = t.name + FormatExtension(format);
+    if (format != OutputFormat::Exr) {
+      e["format"] = FormatName(format);
+      e["pixel_type"] = format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32";
+      if (format == OutputFormat::Png16) {
+        ordered_json scale = ordered_json::array(), offset = ordered_json::array();
+        for (const Png16Channel& c : Png16Scales(t)) {
+          scale.push_back(c.scale);
+          offset.push_back(c.offset);
+        }
+        e["png16"] = {{"scale", scale},
+                      {"offset", offset},
+                      {"decode", "value = stored / 65535 * scale + offset"}};
+      }
+    }
     e["model"] = t.model;
     e["quantity"] = t.quantity;
     e["channels"] = t.channels;
@@ -289,11 +305,18 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
 void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
 
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
-                      bool header, int threads) {
+                      bool header, int threads, OutputFormat format) {
   if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  if (format == OutputFormat::Exr && FlipsY(table))
+    throw std::runtime_error("kiln: cannot write '" + dir + "/" + table.name +
+                             ".exr': --flip-y applies to ktx2, dds and png16 (kiln's EXR loader "
+                             "reads row 0 as the first node)");
   // The long part (compressing, writing) outside the lock; then the short critical section.
-  PendingFile exr(dir + "/" + table.name + ".exr");
-  writeTable(exr, table, half, threads);
+  PendingFile exr(dir + "/" + table.name + FormatExtension(format));
+  if (format == OutputFormat::Exr)
+    writeTable(exr, table, half, threads);
+  else
+    WriteTextureTable(exr, table, format, half);
   std::unique_ptr<PendingFile> h;
   if (header) {
     h = std::make_unique<PendingFile>(dir + "/" + table.name + ".h");
@@ -302,7 +325,7 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   FolderLock lock(dir);
   RemoveStaleTemporaries(dir);
   PendingFile manifest(dir + "/manifest.json");
-  manifest.WriteBytes(ManifestText(dir, {table}, {evals}));
+  manifest.WriteBytes(ManifestText(dir, {table}, {evals}, format, half));
   std::vector<PendingFile*> files = {&exr};
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
@@ -343,7 +366,8 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
   auto t0 = std::chrono::steady_clock::now();
   BakeRunResult result;
   for (const TableSpec& spec : specs) {
-    if (!opt.force && IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError)) {
+    if (!opt.force && opt.format == OutputFormat::Exr &&
+        IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError)) {
       result.skipped.push_back(spec.name);
       std::string h = dir + "/" + spec.name + ".h";
       bool wroteHeader = opt.header && access(h.c_str(), F_OK) != 0;
@@ -359,7 +383,7 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
     Table table = BakeTable(spec, opt.bake, &stats);
     // Table and manifest entry land together, table by table: a bake killed after table k
     // leaves a manifest that describes tables 1..k (and the older files) correctly.
-    CommitBakedTable(dir, table, stats.evals, opt.half, opt.header, opt.bake.threads);
+    CommitBakedTable(dir, table, stats.evals, opt.half, opt.header, opt.bake.threads, opt.format);
     if (opt.log) {
       std::fprintf(opt.log, "baked   %-36s %8zu texels %8.2f s  bake error %.1e", spec.name.c_str(),
                    spec.TexelCount(), stats.seconds, table.bakeError);

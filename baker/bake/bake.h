@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "baker/io/texture_writers.h"
 #include "baker/tables/spec.h"
 #include "kiln/table.h"
 
@@ -44,15 +45,20 @@ std::string StoredSpecHash(const std::string& exrPath);
 /// "name"). A missing manifest passes. Never changes the file.
 void CheckManifest(const std::string& dir);
 
-/// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with `header`) to temporary files of their
-/// own, then, holding DIR's FolderLock: removes the temporary files of dead processes
+/// Writes `table` as DIR/<name>.exr (DIR/<name><FormatExtension(format)> for another `format`,
+/// texture_writers.h; and DIR/<name>.h with `header`) to temporary files of their own, then,
+/// holding DIR's FolderLock: removes the temporary files of dead processes
 /// (RemoveStaleTemporaries), adds the table's entry (with `evals`) to DIR/manifest.json, and
 /// renames table, header and manifest into place together (PendingFile::CommitAll). A bake that
 /// commits each table so, when killed, leaves a manifest that describes the files in DIR, and
 /// two bakes into one DIR leave the files and the entries of whichever committed last. Throws
-/// std::runtime_error (one line); DIR's files are then unchanged.
+/// std::runtime_error (one line); DIR's files are then unchanged. The manifest entry of an EXR
+/// is as before #14; another format adds "format" (its --format name) and "pixel_type"
+/// ("float32", "float16" or "unorm16"), and png16 the per-channel "png16" scale and offset.
+/// EXR rows cannot be flipped (kiln's loader reads row 0 as the first node): a table with
+/// flip_y (engine_layout.h) is refused in EXR.
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
-                      bool header, int threads = 1);
+                      bool header, int threads = 1, OutputFormat format = OutputFormat::Exr);
 
 /// Whether DIR/<spec.name>.exr already is what a bake of `spec` would write, so that the bake can
 /// leave it alone: the file's stored spec hash is spec.Hash(), its pixels are half exactly when
@@ -68,6 +74,9 @@ struct BakeRunOptions {
   bool half = false;         ///< store half floats
   bool header = false;       ///< also write DIR/<name>.h
   bool force = false;        ///< bake every table, even when up to date
+  /// The file format. Only EXR files are checked for being up to date (IsUpToDate reads the
+  /// stored spec hash with kiln's loader); tables in another format are always baked.
+  OutputFormat format = OutputFormat::Exr;
   std::FILE* log = nullptr;  ///< one line per table (nullptr: silent)
 };
 

@@ -11,6 +11,8 @@
 #include "baker/cli/commands.h"
 #include "baker/scene/bake_scene.h"
 #include "baker/tables/catalogue.h"
+#include "baker/tables/engine_layout.h"
+#include <cstdlib>
 
 namespace kiln::cli {
 namespace {
@@ -39,6 +41,8 @@ void RegisterBake(CLI::App& app) {
     int size = 0, threads = 0;
     bool half = false, header = false, noLookup = false, force = false, quiet = false;
     double roughness = 0.5;
+    std::string format = "exr", layout = "kiln", grid = "kiln";  // issue #14: engine output
+    bool flipY = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
@@ -58,7 +62,37 @@ void RegisterBake(CLI::App& app) {
                 "bake every table, also those whose file in DIR is up to date (same spec hash)");
   sub->add_flag("-q,--quiet", args->quiet,
                 "print nothing but errors (no line per table on stderr, no progress bar)");
-  sub->callback([args, oSize, oOnly, oScene] {
+  auto* oFormat = sub->add_option("--format", args->format,
+                                  "file format: exr, ktx2, dds or png16 (16-bit unorm + scale)")
+                      ->capture_default_str();
+  auto* oLayout =
+      sub->add_option("--layout", args->layout, "dfg channel layout: kiln, ue4 or filament")
+          ->capture_default_str();
+  auto* oGrid = sub->add_option("--grid", args->grid,
+                                "kiln (the table's own axes) or engine (texel-centred, uniform in "
+                                "(mu, roughness): sample with texture(lut, vec2(NoV, roughness)))")
+                    ->capture_default_str();
+  auto* oFlip = sub->add_flag("--flip-y", args->flipY,
+                              "reverse the rows (row 0 = last roughness node); not with exr");
+  sub->callback([args, oSize, oOnly, oScene, oFormat, oLayout, oGrid, oFlip] {
+    // Engine output (#14): checked before anything is baked or written.
+    const OutputFormat format = ParseOutputFormat(args->format);
+    EngineOptions engine;
+    engine.layout = ParseDfgLayout(args->layout);
+    if (args->grid != "kiln" && args->grid != "engine")
+      throw std::invalid_argument("unknown --grid '" + args->grid + "' (kiln or engine)");
+    engine.engineGrid = args->grid == "engine";
+    engine.flipY = args->flipY;
+    if (engine.flipY && format == OutputFormat::Exr)
+      throw std::invalid_argument(
+          "bake: --flip-y applies to --format ktx2, dds or png16 (kiln's EXR loader reads row 0 "
+          "as the first node)");
+    if (format == OutputFormat::Png16 && args->half)
+      throw std::invalid_argument("bake: --half does not apply to --format png16");
+    if (oScene->count() &&
+        (oFormat->count() || oLayout->count() || oGrid->count() || oFlip->count()))
+      throw std::invalid_argument(
+          "bake: --format, --layout, --grid and --flip-y apply to catalogue bakes, not --scene");
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("bake: --size " + std::to_string(args->size) +
                                   " must be in [2, 4096]");
@@ -80,6 +114,7 @@ void RegisterBake(CLI::App& app) {
     run.header = args->header;
     run.force = args->force;
     run.log = args->quiet ? nullptr : stderr;
+    run.format = format;
     if (oScene->count()) {
       if (oOnly->count()) throw std::invalid_argument("bake: give --scene or --only, not both");
       PrepareOutputFolder(args->out);
@@ -99,6 +134,7 @@ void RegisterBake(CLI::App& app) {
       for (const std::string& name : splitList(args->only, ','))
         specs.push_back(CatalogueTable(name, copt));
     }
+    for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
     PrepareOutputFolder(args->out);
     BakeRunResult done = BakeSpecs(specs, args->out, run);
     if (run.log)

@@ -1,7 +1,12 @@
 // kiln inspect: a table's attributes and channel ranges, optionally a false-colour picture.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <set>
 
 #include "baker/cli/commands.h"
 #include "baker/io/atomic_write.h"
@@ -57,6 +62,18 @@ std::string InspectJson(const std::string& file, const Table& t, const std::stri
   return doc.dump(2) + "\n";
 }
 
+/// The EXR channel that holds each storage channel of the (already loaded) table at `path`:
+/// R, G, B, A for files written since #14, the kiln names for older ones (the loader's rule).
+std::vector<std::string> ExrChannelsOf(const std::string& path, const Table& t) {
+  std::set<std::string> inFile;
+  Imf::InputFile file(path.c_str());
+  for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+    inFile.insert(it.name());
+  std::vector<std::string> rgba = exrChannelNames(t.channels.size());
+  if (!rgba.empty() && inFile == std::set<std::string>(rgba.begin(), rgba.end())) return rgba;
+  return t.channels;
+}
+
 }  // namespace
 
 void RegisterInspect(CLI::App& app) {
@@ -100,13 +117,16 @@ void RegisterInspect(CLI::App& app) {
                   t.lookupError.cubicRms);
     std::printf("spec hash       %s\n", t.specHash.c_str());
     size_t nc = t.channels.size();
+    const std::vector<std::string> exrNames = ExrChannelsOf(args->file, t);
     for (size_t c = 0; c < nc; ++c) {
       double lo = INFINITY, hi = -INFINITY;
       for (size_t i = c; i < t.data.size(); i += nc) {
         lo = std::min(lo, static_cast<double>(t.data[i]));
         hi = std::max(hi, static_cast<double>(t.data[i]));
       }
-      std::printf("channel %-7s [%.9g, %.9g]  %s\n", t.channels[c].c_str(), lo, hi,
+      // EXR channel = kiln name (kiln.channels), range, meaning (kiln.channel_meanings).
+      std::printf("channel %s = %-8s [%.9g, %.9g]  %s\n", exrNames[c].c_str(),
+                  t.channels[c].c_str(), lo, hi,
                   c < t.channelMeanings.size() ? t.channelMeanings[c].c_str() : "");
     }
     if (!args->png.empty()) {

@@ -44,7 +44,8 @@ void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, 
   header.compression() = Imf::ZIP_COMPRESSION;
   setKilnAttributes(header, table);
   const Imf::PixelType fileType = asHalf ? Imf::HALF : Imf::FLOAT;
-  for (const std::string& channel : table.channels)
+  const std::vector<std::string> names = exrChannelNames(table.channels.size());
+  for (const std::string& channel : names)
     header.channels().insert(channel, Imf::Channel(fileType));
 
   const std::size_t channelCount = table.channels.size();
@@ -57,14 +58,14 @@ void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, 
     const std::size_t xStride = sizeof(::half) * channelCount;
     const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
     for (std::size_t c = 0; c < channelCount; ++c)
-      frameBuffer.insert(table.channels[c],
+      frameBuffer.insert(names[c],
                          Imf::Slice::Make(Imf::HALF, halves.data() + c, window, xStride, yStride));
   } else {
     const std::size_t xStride = sizeof(float) * channelCount;
     const std::size_t yStride = xStride * static_cast<std::size_t>(table.imageWidth());
     for (std::size_t c = 0; c < channelCount; ++c)
-      frameBuffer.insert(table.channels[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c,
-                                                             window, xStride, yStride));
+      frameBuffer.insert(
+          names[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c, window, xStride, yStride));
   }
   Imf::OutputFile file(filePath.c_str(), header, threads > 1 ? threads : 0);
   file.setFrameBuffer(frameBuffer);
@@ -117,6 +118,10 @@ void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
   std::string problem;
   if (!validateTable(table, problem))
     throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
+  if (table.channels.size() > 4)
+    throw std::runtime_error("kiln: cannot write '" + path +
+                             "': " + std::to_string(table.channels.size()) +
+                             " channels; an EXR table has at most 4 (R, G, B, A)");
   if (half) {
     for (float v : table.data) {
       if (std::fabs(v) > kHalfMax)

@@ -19,7 +19,8 @@ void setKilnAttributes(Imf::Header& header, const Table& table);
 
 /// Writes `table` to the OpenEXR file `path`: one scanline image of width
 /// size0 and height size1 * size2 (data window origin (0, 0)), one channel per
-/// table channel named as in table.channels, ZIP compression, FLOAT pixels or
+/// table channel named R, G, B, A in storage order (exrChannelNames; the kiln
+/// names stay in kiln.channels), so at most 4 channels, ZIP compression, FLOAT pixels or
 /// HALF when `half` is true, and all kiln.* attributes. The same table always
 /// gives the same bytes. The file is written to a temporary file of its own
 /// (PendingFile, baker/io/atomic_write.h) and renamed into place; on any error

@@ -94,19 +94,34 @@ std::string zlibStored(const std::vector<std::uint8_t>& raw) {
 
 }  // namespace
 
-std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
+std::string encodePngImage(int width, int height, int bitDepth, int colourType,
+                           const std::vector<std::uint8_t>& pixels,
+                           const std::vector<std::pair<std::string, std::string>>& text) {
   if (width < 1 || height < 1)
     throw std::invalid_argument("PNG image must be at least 1 x 1 pixels");
-  const std::size_t rowBytes = static_cast<std::size_t>(width) * 3;
-  if (rgb.size() != rowBytes * static_cast<std::size_t>(height))
-    throw std::invalid_argument("PNG pixel buffer does not match width x height x 3");
+  int samples = 0;
+  if (colourType == 0) samples = 1;
+  if (colourType == 2) samples = 3;
+  if (colourType == 4) samples = 2;
+  if (colourType == 6) samples = 4;
+  if (samples == 0 || (bitDepth != 8 && bitDepth != 16))
+    throw std::invalid_argument("PNG colour type " + std::to_string(colourType) + " / bit depth " +
+                                std::to_string(bitDepth) + " is not written");
+  const std::size_t rowBytes =
+      static_cast<std::size_t>(width) * static_cast<std::size_t>(samples * bitDepth / 8);
+  if (pixels.size() != rowBytes * static_cast<std::size_t>(height))
+    throw std::invalid_argument("PNG pixel buffer does not match width x height x sample bytes");
+  for (const auto& [keyword, value] : text)
+    if (keyword.empty() || keyword.size() > 79 || keyword.find('\0') != std::string::npos ||
+        value.find('\0') != std::string::npos)
+      throw std::invalid_argument("PNG text keyword '" + keyword + "' is not valid");
 
   std::vector<std::uint8_t> raw;  // each row: filter type 0 (None), then the pixels
   raw.reserve((rowBytes + 1) * static_cast<std::size_t>(height));
   for (int y = 0; y < height; ++y) {
     raw.push_back(0);
     const auto row =
-        rgb.begin() + static_cast<std::ptrdiff_t>(rowBytes * static_cast<std::size_t>(y));
+        pixels.begin() + static_cast<std::ptrdiff_t>(rowBytes * static_cast<std::size_t>(y));
     raw.insert(raw.end(), row, row + static_cast<std::ptrdiff_t>(rowBytes));
   }
 
@@ -115,13 +130,21 @@ std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>
   std::string header;
   appendBigEndian32(header, static_cast<std::uint32_t>(width));
   appendBigEndian32(header, static_cast<std::uint32_t>(height));
-  header += static_cast<char>(8);  // bit depth
-  header += static_cast<char>(2);  // colour type: RGB
+  header += static_cast<char>(bitDepth);
+  header += static_cast<char>(colourType);
   header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
   appendChunk(png, crc, "IHDR", header);
+  for (const auto& [keyword, value] : text) appendChunk(png, crc, "tEXt", keyword + '\0' + value);
   appendChunk(png, crc, "IDAT", zlibStored(raw));
   appendChunk(png, crc, "IEND", std::string());
   return png;
+}
+
+std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb) {
+  if (width >= 1 && height >= 1 &&
+      rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
+    throw std::invalid_argument("PNG pixel buffer does not match width x height x 3");
+  return encodePngImage(width, height, 8, 2, rgb, {});
 }
 
 void viridis(double t, std::uint8_t rgb[3]) {

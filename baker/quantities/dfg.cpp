@@ -1,6 +1,7 @@
 // dfg: the split-sum DFG terms (Karis 2013) of a microfacet model, over (mu, roughness) -> A, B.
 #include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
+#include "baker/tables/engine_layout.h"
 
 namespace kiln {
 namespace {
@@ -24,9 +25,9 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
-  return {ab[0], ab[1]};
+  return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
@@ -34,7 +35,7 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   IntegrationOptions opt;
   opt.tol = tol;
   auto ab = SplitSumDFG(ModelAt(spec.model, x[1]), x[0], opt, stats);
-  return {ab[0], ab[1]};
+  return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
 std::string Method(const TableSpec& spec) {

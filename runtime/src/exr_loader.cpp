@@ -166,9 +166,13 @@ void readAttributes(const Imf::Header& h, Table& table) {
   table.specHash = optionalString(h, "kiln.spec_hash");
 }
 
-/// Checks that the image's channels are exactly kiln.channels, each FLOAT or
-/// HALF and not subsampled.
-void checkChannels(const Imf::ChannelList& list, const std::vector<std::string>& expected) {
+/// Checks the image's channels and returns the EXR channel name of each
+/// storage channel: R, G, B, A (exrChannelNames) when those are the image's
+/// channels, else kiln.channels itself (files written before kiln named its
+/// channels R, G, B, A); anything else is refused. Each channel must be FLOAT
+/// or HALF and not subsampled.
+std::vector<std::string> checkChannels(const Imf::ChannelList& list,
+                                       const std::vector<std::string>& expected) {
   std::set<std::string> inFile;
   std::string inFileText;
   for (auto it = list.begin(); it != list.end(); ++it) {
@@ -176,9 +180,13 @@ void checkChannels(const Imf::ChannelList& list, const std::vector<std::string>&
     inFileText += (inFileText.empty() ? "" : ",") + std::string(it.name());
   }
   const std::set<std::string> declared(expected.begin(), expected.end());
-  if (expected.empty() || declared.size() != expected.size() || inFile != declared)
+  const std::vector<std::string> rgba = exrChannelNames(expected.size());
+  const std::set<std::string> rgbaSet(rgba.begin(), rgba.end());
+  if (expected.empty() || declared.size() != expected.size() ||
+      (inFile != declared && (rgba.empty() || inFile != rgbaSet)))
     throw Refusal("channel mismatch: kiln.channels is '" + joinList(expected, ',') +
-                  "' but the image has channels '" + inFileText + "'");
+                  "' but the image has channels '" + inFileText + "' (expected '" +
+                  joinList(rgba, ',') + "' or the kiln.channels names)");
   for (auto it = list.begin(); it != list.end(); ++it) {
     const Imf::Channel& channel = it.channel();
     if (channel.type != Imf::FLOAT && channel.type != Imf::HALF)
@@ -187,6 +195,7 @@ void checkChannels(const Imf::ChannelList& list, const std::vector<std::string>&
     if (channel.xSampling != 1 || channel.ySampling != 1)
       throw Refusal("channel '" + std::string(it.name()) + "' is subsampled");
   }
+  return !rgba.empty() && inFile == rgbaSet ? rgba : expected;
 }
 
 /// Little-endian int32 at `p`.
@@ -406,7 +415,7 @@ Table readTable(const std::string& path) {
 
   Table table;
   readAttributes(header, table);
-  checkChannels(header.channels(), table.channels);
+  const std::vector<std::string> exrNames = checkChannels(header.channels(), table.channels);
 
   const Imath::Box2i window = header.dataWindow();
   const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
@@ -427,8 +436,8 @@ Table readTable(const std::string& path) {
   const std::size_t yStride = xStride * static_cast<std::size_t>(width);
   Imf::FrameBuffer frameBuffer;
   for (std::size_t c = 0; c < channelCount; ++c) {
-    frameBuffer.insert(table.channels[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c,
-                                                           window, xStride, yStride));
+    frameBuffer.insert(
+        exrNames[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c, window, xStride, yStride));
   }
   try {
     file->setFrameBuffer(frameBuffer);
@@ -452,6 +461,12 @@ void describeFailure(std::string& error, const std::string& path, const char* pr
 }
 
 }  // namespace
+
+std::vector<std::string> exrChannelNames(std::size_t count) {
+  static const char* const kNames[] = {"R", "G", "B", "A"};
+  if (count == 0 || count > 4) return {};
+  return std::vector<std::string>(kNames, kNames + count);
+}
 
 bool loadTable(const std::string& path, Table& out, std::string& error) noexcept {
   try {

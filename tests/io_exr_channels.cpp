@@ -1,0 +1,203 @@
+// Specification of the EXR channel names (issue #14): kiln writes its channels as R, G, B, A in
+// storage order, so OpenEXR's own RGBA reader (and every engine importer that looks channels up
+// by R/G/B/A) sees a table's values; the kiln names stay in kiln.channels; the loader still
+// reads files whose EXR channels are named after kiln.channels (written before #14).
+#include <catch2/catch.hpp>
+
+#include <Imath/half.h>
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "baker/bake/bake.h"
+#include "baker/io/exr_writer.h"
+#include "baker/tables/catalogue.h"
+#include "kiln/exr_loader.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A fresh folder of this test process under the system temporary folder.
+std::string scratch(const std::string& tag) {
+  fs::path dir =
+      fs::temp_directory_path() / ("kiln-io-exr-channels-" + tag + "-" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+/// ggx-dfg baked at 8 x 8 nodes (no lookup-error measurement: quick).
+kiln::Table smallGgxDfg() {
+  kiln::CatalogueOptions copt;
+  copt.size = 8;
+  kiln::BakeOptions opt;
+  opt.threads = 1;
+  opt.measureLookupError = false;
+  return kiln::BakeTable(kiln::CatalogueTable("ggx-dfg", copt), opt);
+}
+
+/// A one-channel 1D table "E" with values 0.1 .. 0.9.
+kiln::Table oneChannel() {
+  kiln::Table t;
+  t.generator = "kiln test";
+  t.name = "one";
+  t.model = "none";
+  t.quantity = "albedo";
+  t.channels = {"E"};
+  t.channelMeanings = {"directional albedo"};
+  t.axes = {{"mu", {0.0, 1.0, 5, kiln::Warp::Linear}}};
+  t.data = {0.1f, 0.3f, 0.5f, 0.7f, 0.9f};
+  return t;
+}
+
+std::vector<std::string> exrChannelList(const std::string& path) {
+  Imf::InputFile in(path.c_str());
+  std::vector<std::string> names;
+  for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it)
+    names.push_back(it.name());
+  return names;
+}
+
+/// The whole image through OpenEXR's RgbaInputFile, row by row.
+std::vector<Imf::Rgba> readRgba(const std::string& path, int& width, int& height) {
+  Imf::RgbaInputFile in(path.c_str());
+  const Imath::Box2i w = in.dataWindow();
+  width = w.max.x - w.min.x + 1;
+  height = w.max.y - w.min.y + 1;
+  std::vector<Imf::Rgba> pixels(std::size_t(width) * std::size_t(height));
+  in.setFrameBuffer(pixels.data() - w.min.x - w.min.y * width, 1, std::size_t(width));
+  in.readPixels(w.min.y, w.max.y);
+  return pixels;
+}
+
+}  // namespace
+
+TEST_CASE("a baked ggx-dfg EXR has channels R, G and reads as (A, B, 0, 1) through RgbaInputFile",
+          "[io][exr][channels]") {
+  const std::string dir = scratch("dfg");
+  const kiln::Table t = smallGgxDfg();
+  REQUIRE(t.channels == std::vector<std::string>{"A", "B"});
+  const std::string path = dir + "/ggx-dfg.exr";
+  kiln::writeTable(path, t, /*half=*/false);
+  CHECK(exrChannelList(path) == std::vector<std::string>{"G", "R"});  // OpenEXR sorts them
+
+  int width = 0, height = 0;
+  const std::vector<Imf::Rgba> px = readRgba(path, width, height);
+  REQUIRE(width == 8);
+  REQUIRE(height == 8);
+  for (std::size_t i = 0; i < px.size(); ++i) {
+    INFO("texel " << i);
+    // RgbaInputFile converts to half: the same rounding as half(value).
+    CHECK(float(px[i].r) == float(half(t.data[2 * i])));
+    CHECK(float(px[i].g) == float(half(t.data[2 * i + 1])));
+    CHECK(float(px[i].b) == 0.0f);
+    CHECK(float(px[i].a) == 1.0f);
+  }
+  // Not a trivially constant image: scale spans most of [0, 1].
+  CHECK(float(px.front().r) != float(px.back().r));
+
+  // kiln's loader gives back the kiln names and the exact floats.
+  kiln::Table back = kiln::loadTable(path);
+  CHECK(back.channels == t.channels);
+  CHECK(back.channelMeanings == t.channelMeanings);
+  CHECK(back.data == t.data);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a one-channel table reads as (E, 0, 0, 1) through RgbaInputFile",
+          "[io][exr][channels]") {
+  const std::string dir = scratch("one");
+  const kiln::Table t = oneChannel();
+  const std::string path = dir + "/one.exr";
+  kiln::writeTable(path, t, /*half=*/true);
+  CHECK(exrChannelList(path) == std::vector<std::string>{"R"});
+  int width = 0, height = 0;
+  const std::vector<Imf::Rgba> px = readRgba(path, width, height);
+  REQUIRE(px.size() == 5);
+  for (std::size_t i = 0; i < px.size(); ++i) {
+    INFO("texel " << i);
+    CHECK(float(px[i].r) == float(half(t.data[i])));
+    // What RgbaInputFile does with only R: missing G and B read as 0, missing A as 1.
+    CHECK(float(px[i].g) == 0.0f);
+    CHECK(float(px[i].b) == 0.0f);
+    CHECK(float(px[i].a) == 1.0f);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("channels map to R, G, B, A in storage order; more than 4 are refused",
+          "[io][exr][channels]") {
+  CHECK(kiln::exrChannelNames(1) == std::vector<std::string>{"R"});
+  CHECK(kiln::exrChannelNames(3) == std::vector<std::string>{"R", "G", "B"});
+  CHECK(kiln::exrChannelNames(4) == std::vector<std::string>{"R", "G", "B", "A"});
+  CHECK(kiln::exrChannelNames(0).empty());
+  CHECK(kiln::exrChannelNames(5).empty());
+
+  const std::string dir = scratch("wide");
+  kiln::Table t = oneChannel();
+  t.channels = {"a", "b", "c", "d", "e"};
+  t.channelMeanings.clear();
+  t.data.assign(5 * 5, 0.5f);
+  const std::string path = dir + "/wide.exr";
+  CHECK_THROWS_WITH(kiln::writeTable(path, t, false),
+                    Catch::Contains("5 channels") && Catch::Contains("at most 4"));
+  CHECK_FALSE(fs::exists(path));
+  CHECK(fs::is_empty(dir));  // no temporary file left
+  fs::remove_all(dir);
+}
+
+TEST_CASE("the loader reads an old file whose EXR channels are named after kiln.channels",
+          "[io][exr][channels]") {
+  const std::string dir = scratch("old");
+  const kiln::Table t = smallGgxDfg();
+  // The pre-#14 layout: EXR channels "A" and "B" (the kiln names), FLOAT.
+  Imf::Header header(t.imageWidth(), t.imageHeight());
+  kiln::setKilnAttributes(header, t);
+  header.channels().insert("A", Imf::Channel(Imf::FLOAT));
+  header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+  const Imath::Box2i window = header.dataWindow();
+  Imf::FrameBuffer fb;
+  const std::size_t xs = 2 * sizeof(float), ys = xs * std::size_t(t.imageWidth());
+  fb.insert("A", Imf::Slice::Make(Imf::FLOAT, t.data.data(), window, xs, ys));
+  fb.insert("B", Imf::Slice::Make(Imf::FLOAT, t.data.data() + 1, window, xs, ys));
+  const std::string path = dir + "/old.exr";
+  {
+    Imf::OutputFile out(path.c_str(), header);
+    out.setFrameBuffer(fb);
+    out.writePixels(t.imageHeight());
+  }
+  kiln::Table back = kiln::loadTable(path);
+  CHECK(back.channels == t.channels);
+  CHECK(back.data == t.data);
+
+  // Neither the R, G names nor the kiln names: refused.
+  Imf::Header bad(t.imageWidth(), t.imageHeight());
+  kiln::setKilnAttributes(bad, t);
+  bad.channels().insert("R", Imf::Channel(Imf::FLOAT));
+  bad.channels().insert("B", Imf::Channel(Imf::FLOAT));
+  Imf::FrameBuffer fb2;
+  fb2.insert("R", Imf::Slice::Make(Imf::FLOAT, t.data.data(), window, xs, ys));
+  fb2.insert("B", Imf::Slice::Make(Imf::FLOAT, t.data.data() + 1, window, xs, ys));
+  const std::string badPath = dir + "/bad.exr";
+  {
+    Imf::OutputFile out(badPath.c_str(), bad);
+    out.setFrameBuffer(fb2);
+    out.writePixels(t.imageHeight());
+  }
+  kiln::Table unused;
+  std::string error;
+  CHECK_FALSE(kiln::loadTable(badPath, unused, error));
+  CHECK_THAT(error, Catch::Contains("channel mismatch"));
+  fs::remove_all(dir);
+}
