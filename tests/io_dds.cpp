@@ -60,7 +60,7 @@ TEST_CASE("a ggx-dfg DDS parses: DX10 R32G32_FLOAT 2D texture, exact texels", "[
   for (std::size_t i = 0; i < t.data.size(); ++i) REQUIRE(LeFloat(f, kDataAt + 4 * i) == t.data[i]);
 }
 
-TEST_CASE("a half DDS is R16G16_FLOAT within 2^-11; a 3D table is a volume texture", "[io][dds]") {
+TEST_CASE("a half DDS is R16G16_FLOAT within 2^-11, a 3D table is a volume texture", "[io][dds]") {
   const kiln::Table t = SmallGgxDfg();
   const std::string f = kiln::EncodeDds(t, true);
   const Dds d = Parse(f);

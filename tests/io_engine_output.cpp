@@ -48,7 +48,7 @@ double Bilinear(const kiln::Table& t, double u, double v, int c) {
 
 }  // namespace
 
-TEST_CASE("--layout filament stores (B, A + B); ue4 is kiln's (A, B); others are refused",
+TEST_CASE("layout filament stores (B, A + B), ue4 is kiln's (A, B), others are refused",
           "[io][layout]") {
   const kiln::TableSpec kilnSpec = GgxDfgSpec(8);
   kiln::TableSpec filament = kilnSpec, ue4 = kilnSpec;
@@ -71,7 +71,7 @@ TEST_CASE("--layout filament stores (B, A + B); ue4 is kiln's (A, B); others are
                     Catch::Contains("applies to dfg tables"));
 }
 
-TEST_CASE("--grid engine is texel-centred: the plain (NoV, roughness) is the texture coordinate",
+TEST_CASE("the engine grid is texel-centred: the plain (NoV, roughness) is the texture coordinate",
           "[io][layout]") {
   kiln::TableSpec spec = GgxDfgSpec(16);
   const std::string kilnHash = spec.Hash();
@@ -103,7 +103,7 @@ TEST_CASE("--grid engine is texel-centred: the plain (NoV, roughness) is the tex
   CHECK_THROWS_WITH(kiln::ApplyEngineGrid(fresnel), Catch::Contains("needs (mu, roughness)"));
 }
 
-TEST_CASE("--flip-y changes the hash and the name; the texels stay in kiln order in memory",
+TEST_CASE("flip-y changes the hash and the name, the texels stay in kiln order in memory",
           "[io][layout]") {
   kiln::TableSpec spec = GgxDfgSpec(4);
   const std::string hash = spec.Hash();

@@ -136,7 +136,7 @@ TEST_CASE("a one-channel table reads as (E, 0, 0, 1) through RgbaInputFile",
   fs::remove_all(dir);
 }
 
-TEST_CASE("channels map to R, G, B, A in storage order; more than 4 are refused",
+TEST_CASE("channels map to R, G, B, A in storage order, more than 4 are refused",
           "[io][exr][channels]") {
   CHECK(kiln::exrChannelNames(1) == std::vector<std::string>{"R"});
   CHECK(kiln::exrChannelNames(3) == std::vector<std::string>{"R", "G", "B"});

@@ -117,7 +117,7 @@ TEST_CASE("a ggx-dfg KTX2 parses: RG32F 2D texture, DFD, key/value data, exact t
     REQUIRE(LeFloat(f, k.levelOffset + 4 * i) == t.data[i]);
 }
 
-TEST_CASE("a half KTX2 is RG16F within 2^-11; a 3D table is a 3D texture; --flip-y says ru",
+TEST_CASE("a half KTX2 is RG16F within 2^-11, a 3D table is a 3D texture, --flip-y says ru",
           "[io][ktx2]") {
   const kiln::Table t = SmallGgxDfg();
   const std::string f = kiln::EncodeKtx2(t, /*half=*/true);

@@ -125,7 +125,7 @@ TEST_CASE("a ggx-dfg PNG16 is 16-bit RGB with its scale in tEXt, within scale / 
   CHECK(highest == 65535);
 }
 
-TEST_CASE("a one-channel PNG16 is grey; a constant channel stores 0", "[io][png16]") {
+TEST_CASE("a one-channel PNG16 is grey, a constant channel stores 0", "[io][png16]") {
   kiln::Table t = Small3D();
   const Png p = Parse(kiln::EncodePng16(t));
   CHECK(p.colourType == 0);
