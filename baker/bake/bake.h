@@ -70,10 +70,10 @@ bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool l
 
 /// How BakeSpecs bakes.
 struct BakeRunOptions {
-  BakeOptions bake;          ///< threads, progress bar, lookup-error measurement
-  bool half = false;         ///< store half floats
-  bool header = false;       ///< also write DIR/<name>.h
-  bool force = false;        ///< bake every table, even when up to date
+  BakeOptions bake;     ///< threads, progress bar, lookup-error measurement
+  bool half = false;    ///< store half floats
+  bool header = false;  ///< also write DIR/<name>.h
+  bool force = false;   ///< bake every table, even when up to date
   /// The file format. Only EXR files are checked for being up to date (IsUpToDate reads the
   /// stored spec hash with kiln's loader); tables in another format are always baked.
   OutputFormat format = OutputFormat::Exr;
