@@ -26,6 +26,7 @@
 
 #include "baker/bake/lookup_error.h"
 #include "baker/io/atomic_write.h"
+#include "baker/io/table_json.h"
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
 #include "baker/io/test_hooks.h"
@@ -265,26 +266,7 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
                       {"decode", "value = stored / 65535 * scale + offset"}};
       }
     }
-    e["model"] = t.model;
-    e["quantity"] = t.quantity;
-    e["channels"] = t.channels;
-    e["channel_meanings"] = t.channelMeanings;
-    ordered_json axes = ordered_json::array();
-    for (const TableAxis& a : t.axes)
-      axes.push_back({{"name", a.name},
-                      {"lo", a.axis.lo},
-                      {"hi", a.axis.hi},
-                      {"size", a.axis.size},
-                      {"warp", warpName(a.axis.warp)}});
-    e["axes"] = axes;
-    e["params"] = t.params;
-    e["method"] = t.method;
-    e["tolerance"] = t.tolerance;
-    e["bake_error"] = t.bakeError;
-    e["lookup_error"] = {{"max", t.lookupError.max},
-                         {"rms", t.lookupError.rms},
-                         {"filter", t.lookupError.filter},
-                         {"where", t.lookupError.where}};
+    AppendTableDescription(e, t);
     if (t.lookupError.cubicMax >= 0)
       e["lookup_error_cubic"] = {{"max", t.lookupError.cubicMax}, {"rms", t.lookupError.cubicRms}};
     e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;

@@ -1,6 +1,8 @@
 // A kiln table as KTX2, DDS or 16-bit PNG: the formats engines load without an EXR reader.
 #include "baker/io/texture_writers.h"
 
+#include "baker/io/table_json.h"
+
 #include <Imath/half.h>
 
 #include <cmath>
@@ -12,6 +14,7 @@
 
 #include "baker/io/atomic_write.h"
 #include "baker/io/png_writer.h"
+#include "baker/io/table_json.h"
 #include "baker/tables/engine_layout.h"
 
 namespace kiln {
@@ -86,26 +89,7 @@ nlohmann::ordered_json MetadataJson(const Table& t) {
   j["format"] = kFormatVersion;
   j["generator"] = t.generator;
   j["name"] = t.name;
-  j["model"] = t.model;
-  j["quantity"] = t.quantity;
-  j["channels"] = t.channels;
-  j["channel_meanings"] = t.channelMeanings;
-  nlohmann::ordered_json axes = nlohmann::ordered_json::array();
-  for (const TableAxis& a : t.axes)
-    axes.push_back({{"name", a.name},
-                    {"lo", a.axis.lo},
-                    {"hi", a.axis.hi},
-                    {"size", a.axis.size},
-                    {"warp", warpName(a.axis.warp)}});
-  j["axes"] = axes;
-  j["params"] = t.params;
-  j["method"] = t.method;
-  j["tolerance"] = t.tolerance;
-  j["bake_error"] = t.bakeError;
-  j["lookup_error"] = {{"max", t.lookupError.max},
-                       {"rms", t.lookupError.rms},
-                       {"filter", t.lookupError.filter},
-                       {"where", t.lookupError.where}};
+  AppendTableDescription(j, t);
   j["flip_y"] = FlipsY(t);
   j["spec_hash"] = t.specHash;
   return j;
