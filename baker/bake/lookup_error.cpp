@@ -33,14 +33,12 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   std::vector<double> err(total, 0);
   std::vector<char> inCorner(total, 0);
   std::vector<double> errCubic(alsoCubic ? total : 0, 0);
-  const bool layered = spec.axes[0].warp == Warp::Root4Layer;
   auto point = [&](size_t i, double* x) {
     size_t k = i < cells ? i * allCells / cells : 0;  // evenly strided when cells < allCells
     uint64_t s = 0x9E3779B97F4A7C15ull * (i - cells + 1);
-    double t0 = 0;
+    double t[3] = {0, 0, 0};
     for (size_t d = 0; d < dims; ++d) {
-      Axis ax = spec.axes[d].ToAxis();
-      int cellsHere = std::max(1, ax.size - 1);
+      int cellsHere = std::max(1, spec.axes[d].size - 1);
       double texel;
       if (i < cells) {
         texel = static_cast<double>(k % cellsHere) + 0.5;
@@ -51,11 +49,9 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
         s ^= s >> 29;
         texel = static_cast<double>(s >> 11) * (1.0 / 9007199254740992.0) * cellsHere;
       }
-      if (d == 0) t0 = ax.size > 1 ? texel / (ax.size - 1) : 0;
-      // (a root4-layer axis 0 is placed below, once, by the value of axis 1)
-      if (d != 0 || !layered) x[d] = ax.size > 1 ? ax.unwarped(texel / (ax.size - 1)) : ax.lo;
+      t[d] = spec.axes[d].size > 1 ? texel / (spec.axes[d].size - 1) : 0;
     }
-    if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t0, LayerScaleOf(spec, x));
+    PointAtWarped(spec, t, x);
   };
   int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
   tbb::task_arena arena(n);

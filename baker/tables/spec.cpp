@@ -108,18 +108,24 @@ double LayerScaleOf(const TableSpec& spec, const double* x) {
   return layerScale(spec.axes[1].lo, spec.axes[1].hi, x[1]);
 }
 
-void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
+void PointAtWarped(const TableSpec& spec, const double* t, double* x) {
   // A root4-layer axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative).
   const bool layered = !spec.axes.empty() && spec.axes[0].warp == Warp::Root4Layer;
-  int i0 = 0;
-  for (size_t d = 0; d < spec.axes.size(); ++d) {
+  for (size_t d = 0; d < spec.axes.size(); ++d)
+    if (d != 0 || !layered) x[d] = spec.axes[d].ToAxis().unwarped(t[d]);
+  if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t[0], LayerScaleOf(spec, x));
+}
+
+void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
+  double t[3] = {0, 0, 0};
+  for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) {
     const AxisSpec& a = spec.axes[d];
     int i = static_cast<int>(index % a.size);
-    if (d == 0) i0 = i;
-    if (d != 0 || !layered) x[d] = a.ToAxis().node(i);
+    // i / (N - 1) is exactly 0 and 1 at the ends, where unwarped returns lo and hi exactly.
+    t[d] = a.size > 1 ? static_cast<double>(i) / static_cast<double>(a.size - 1) : 0.0;
     index /= a.size;
   }
-  if (layered) x[0] = spec.axes[0].ToAxis().node(i0, LayerScaleOf(spec, x));
+  PointAtWarped(spec, t, x);
 }
 
 bool UsesFixedRule(const TableSpec& spec) {

@@ -59,6 +59,12 @@ Table TableShell(const TableSpec& spec, const std::string& generator, const std:
 /// 1e-12 for any other warp).
 double LayerScaleOf(const TableSpec& spec, const double* x);
 
+/// The point x (axis units, one coordinate per axis) at warped coordinates t in [0, 1] per axis:
+/// Axis::unwarped of each, a layered axis 0 placed by the layer scale at the other coordinates.
+/// The one place that knows how a layered axis couples to the others (the bake's nodes, the
+/// lookup-error points and the verify search all go through it).
+void PointAtWarped(const TableSpec& spec, const double* t, double* x);
+
 /// Coordinates of texel `index` (axis 0 fastest) at the nodes of the spec's axes; a root4-layer
 /// axis 0 places its nodes by the value of axis 1 (lut.h, Warp::Root4Layer).
 void NodeCoordinates(const TableSpec& spec, size_t index, double* x);
