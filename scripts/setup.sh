@@ -4,7 +4,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$here/build}"; shift || true
-pkgs=(cmake g++ make libopenexr-dev libtbb-dev libcli11-dev catch2 nlohmann-json3-dev glslang-tools)
+pkgs=(cmake g++ make libopenexr-dev libtbb-dev libcli11-dev catch2 nlohmann-json3-dev zlib1g-dev glslang-tools)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

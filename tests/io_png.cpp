@@ -150,9 +150,14 @@ TEST_CASE("the false-colour PNG has one normalized panel per channel", "[io][png
   kiln::writeFalseColourPng(path, t);
   CHECK_FALSE(fs::exists(path + ".tmp"));
   const DecodedPng png = decode(readBytes(path));
-  // 8 x 4 texels scale by 512 / 8 = 64 -> capped at 16: panels 128 x 64, 4-pixel gap.
-  REQUIRE(png.width == 2 * 128 + 4);
-  REQUIRE(png.height == 64);
+  const kiln::PreviewLayout l = kiln::FalseColourLayout(t);
+  REQUIRE(png.width == l.width);
+  REQUIRE(png.height == l.height);
+  // 8 x 4 texels scale by 512 / 8 = 64 -> capped at 16: images 128 x 64, side by side.
+  REQUIRE(l.imageWidth == 128);
+  REQUIRE(l.imageHeight == 64);
+  REQUIRE(l.imageLeft.size() == 2);
+  CHECK(l.imageLeft[1] >= l.imageLeft[0] + 128);
   auto pixel = [&](int x, int y) {
     const std::uint8_t* p = &png.rgb[(std::size_t(y) * png.width + x) * 3];
     return std::vector<int>{p[0], p[1], p[2]};
@@ -162,11 +167,30 @@ TEST_CASE("the false-colour PNG has one normalized panel per channel", "[io][png
     kiln::viridis(v, c);
     return std::vector<int>{c[0], c[1], c[2]};
   };
-  CHECK(pixel(0, 0) == colour(0.0));     // "up" minimum at the left
-  CHECK(pixel(127, 63) == colour(1.0));  // maximum at the right
-  CHECK(pixel(16 * 3 + 5, 40) == colour(3.0 / 7.0));
-  CHECK(pixel(130, 10) == std::vector<int>{40, 40, 40});  // the gap
-  CHECK(pixel(132, 0) == colour(1.0));                    // "down" maximum at the top
-  CHECK(pixel(259, 63) == colour(0.0));                   // minimum at the bottom
+  const int x0 = l.imageLeft[0], x1 = l.imageLeft[1], y0 = l.imageTop;
+  CHECK(pixel(x0, y0) == colour(0.0));             // "up" minimum at the left
+  CHECK(pixel(x0 + 127, y0 + 63) == colour(1.0));  // maximum at the right
+  CHECK(pixel(x0 + 16 * 3 + 5, y0 + 40) == colour(3.0 / 7.0));
+  CHECK(pixel(x0 + 130, y0 + 10) == std::vector<int>{40, 40, 40});  // background between
+  CHECK(pixel(x1, y0) == colour(1.0));                              // "down" maximum at the top
+  CHECK(pixel(x1 + 127, y0 + 63) == colour(0.0));                   // minimum at the bottom
+  // The colour bar under each image runs from the minimum's colour to the maximum's.
+  CHECK(pixel(x0, l.barTop) == colour(0.0));
+  CHECK(pixel(x0 + 127, l.barTop + l.barHeight - 1) == colour(1.0));
+  CHECK(pixel(x1 + 64, l.barTop) == colour(64.0 / 127.0));
+  // Labels: light ink above the image (the title), below it (axis 0, the range under the bar)
+  // and at its left (axis 1), nowhere inside the image.
+  auto inkIn = [&](int xa, int xb, int ya, int yb) {
+    int n = 0;
+    for (int y = std::max(0, ya); y < std::min(png.height, yb); ++y)
+      for (int x = std::max(0, xa); x < std::min(png.width, xb); ++x)
+        n += pixel(x, y) == std::vector<int>{230, 230, 230};
+    return n;
+  };
+  CHECK(inkIn(x0, x0 + 128, 0, y0) > 10);                              // "R = up"
+  CHECK(inkIn(x0, x0 + 128, y0 + 64, l.barTop) > 20);                  // 0, 1, "x (linear, 8) ->"
+  CHECK(inkIn(x0, x0 + 128, l.barTop + l.barHeight, png.height) > 5);  // 0 and 7
+  CHECK(inkIn(0, x0, y0, y0 + 64) > 20);                               // 0, 1, "y (linear, 4)"
+  CHECK(inkIn(x0, x0 + 128, y0, y0 + 64) == 0);
   fs::remove_all(dir);
 }

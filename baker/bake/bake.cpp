@@ -25,6 +25,7 @@
 #include <thread>
 
 #include "baker/bake/lookup_error.h"
+#include "baker/io/texture_readers.h"
 #include "baker/io/atomic_write.h"
 #include "baker/io/table_json.h"
 #include "baker/io/cpp_header_writer.h"
@@ -205,10 +206,23 @@ namespace {
 
 using nlohmann::ordered_json;
 
-/// The entries of DIR/manifest.json by name ({} when it is missing); throws as CheckManifest.
-std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
+/// A manifest entry's key: (name, file). One entry per file, so a table baked in two formats into
+/// one folder has two entries; sorted by name first, as the manifest lists them.
+using EntryKey = std::pair<std::string, std::string>;
+
+/// The key of a manifest entry; an entry without "file" (older kiln) describes NAME.exr.
+EntryKey KeyOf(const ordered_json& e) {
+  std::string name = e["name"].get<std::string>();
+  std::string file =
+      e.contains("file") && e["file"].is_string() ? e["file"].get<std::string>() : name + ".exr";
+  return {name, file};
+}
+
+/// The entries of DIR/manifest.json by (name, file) ({} when it is missing); throws as
+/// CheckManifest.
+std::map<EntryKey, ordered_json> ManifestEntries(const std::string& dir) {
   std::string path = dir + "/manifest.json";
-  std::map<std::string, ordered_json> entries;
+  std::map<EntryKey, ordered_json> entries;
   struct stat st {};
   if (lstat(path.c_str(), &st) != 0) {
     if (errno == ENOENT) return entries;
@@ -238,7 +252,7 @@ std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
   for (auto& e : old["tables"]) {
     if (!e.is_object() || !e.contains("name") || !e["name"].is_string())
       throw notOurs("an entry without a \"name\"");
-    entries[e["name"].get<std::string>()] = e;
+    entries[KeyOf(e)] = e;
   }
   return entries;
 }
@@ -246,7 +260,7 @@ std::map<std::string, ordered_json> ManifestEntries(const std::string& dir) {
 /// The text of DIR/manifest.json with the entries of `tables` added or replaced.
 std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
                          const std::vector<long long>& evals, OutputFormat format, bool half) {
-  std::map<std::string, ordered_json> entries = ManifestEntries(dir);
+  std::map<EntryKey, ordered_json> entries = ManifestEntries(dir);
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     ordered_json e;
@@ -272,7 +286,7 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
     e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;
     e["bytes_float32"] = t.data.size() * 4;
     e["spec_hash"] = t.specHash;
-    entries[t.name] = e;
+    entries[KeyOf(e)] = e;
   }
   ordered_json doc;
   doc["generator"] = kGenerator;
@@ -327,20 +341,30 @@ bool StoredAsHalf(const std::string& path) {
 
 }  // namespace
 
-bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError) {
-  std::string path = dir + "/" + spec.name + ".exr", hash = spec.Hash();
+bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError,
+                OutputFormat format) {
+  const std::string file = spec.name + FormatExtension(format), path = dir + "/" + file;
+  const std::string hash = spec.Hash();
+  if (access(path.c_str(), R_OK) != 0) return false;
+  auto entries = ManifestEntries(dir);
+  auto it = entries.find({spec.name, file});
+  if (it == entries.end() || !it->second.contains("spec_hash") || it->second["spec_hash"] != hash)
+    return false;
   Table stored;
-  std::string error;
-  if (access(path.c_str(), R_OK) != 0 || !loadTable(path, stored, error)) return false;
-  if (stored.specHash != hash || (lookupError && stored.lookupError.max < 0)) return false;
   try {
-    if (StoredAsHalf(path) != half) return false;
+    stored = LoadAnyTable(path);
+    if (format == OutputFormat::Exr) {
+      if (StoredAsHalf(path) != half) return false;
+    } else {
+      // The manifest says how the texels are stored ("float16", "float32", "unorm16").
+      std::string pixel = it->second.value("pixel_type", "");
+      if (pixel != (format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32"))
+        return false;
+    }
   } catch (const std::exception&) {
     return false;
   }
-  auto entries = ManifestEntries(dir);
-  auto it = entries.find(spec.name);
-  return it != entries.end() && it->second.contains("spec_hash") && it->second["spec_hash"] == hash;
+  return stored.specHash == hash && !(lookupError && stored.lookupError.max < 0);
 }
 
 BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& dir,
@@ -348,12 +372,12 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
   auto t0 = std::chrono::steady_clock::now();
   BakeRunResult result;
   for (const TableSpec& spec : specs) {
-    if (!opt.force && opt.format == OutputFormat::Exr &&
-        IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError)) {
+    if (!opt.force && IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError, opt.format)) {
       result.skipped.push_back(spec.name);
       std::string h = dir + "/" + spec.name + ".h";
       bool wroteHeader = opt.header && access(h.c_str(), F_OK) != 0;
-      if (wroteHeader) writeCppHeader(h, loadTable(dir + "/" + spec.name + ".exr"));
+      if (wroteHeader)
+        writeCppHeader(h, LoadAnyTable(dir + "/" + spec.name + FormatExtension(opt.format)));
       if (opt.log) {
         std::fprintf(opt.log, "skipped %-36s up to date%s\n", spec.name.c_str(),
                      wroteHeader ? " (header written)" : "");

@@ -60,13 +60,15 @@ void CheckManifest(const std::string& dir);
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
                       bool header, int threads = 1, OutputFormat format = OutputFormat::Exr);
 
-/// Whether DIR/<spec.name>.exr already is what a bake of `spec` would write, so that the bake can
-/// leave it alone: the file's stored spec hash is spec.Hash(), its pixels are half exactly when
-/// `half`, it declares a lookup error when `lookupError` (a bake with --no-lookup-error writes
-/// none), and DIR/manifest.json has an entry of that name with the same spec hash (a skipped
-/// table keeps its manifest entry; without one the table is baked again so the entry is whole).
-/// Throws as CheckManifest for a manifest that is not one.
-bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError);
+/// Whether DIR/<spec.name><extension of format> already is what a bake of `spec` would write, so
+/// that the bake can leave it alone: the file (read by LoadAnyTable, any format) stores the spec
+/// hash spec.Hash(), its pixels are half exactly when `half` (EXR: the channel type; KTX2/DDS:
+/// the manifest's pixel_type; PNG16 never), it declares a lookup error when `lookupError` (a
+/// bake with --no-lookup-error writes none), and DIR/manifest.json has an entry for that file
+/// with the same spec hash (a skipped table keeps its manifest entry; without one the table is
+/// baked again so the entry is whole). Throws as CheckManifest for a manifest that is not one.
+bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError,
+                OutputFormat format = OutputFormat::Exr);
 
 /// How BakeSpecs bakes.
 struct BakeRunOptions {
@@ -74,8 +76,7 @@ struct BakeRunOptions {
   bool half = false;    ///< store half floats
   bool header = false;  ///< also write DIR/<name>.h
   bool force = false;   ///< bake every table, even when up to date
-  /// The file format. Only EXR files are checked for being up to date (IsUpToDate reads the
-  /// stored spec hash with kiln's loader); tables in another format are always baked.
+  /// The file format (every format is checked for being up to date, IsUpToDate).
   OutputFormat format = OutputFormat::Exr;
   std::FILE* log = nullptr;  ///< one line per table (nullptr: silent)
 };

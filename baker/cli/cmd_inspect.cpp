@@ -6,9 +6,11 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <fstream>
 #include <set>
 
 #include "baker/cli/commands.h"
+#include "baker/io/texture_readers.h"
 #include "baker/io/atomic_write.h"
 #include "baker/io/png_writer.h"
 #include "kiln/exr_loader.h"
@@ -65,11 +67,15 @@ std::string InspectJson(const std::string& file, const Table& t, const std::stri
 /// The EXR channel that holds each storage channel of the (already loaded) table at `path`:
 /// R, G, B, A for files written since #14, the kiln names for older ones (the loader's rule).
 std::vector<std::string> ExrChannelsOf(const std::string& path, const Table& t) {
+  std::vector<std::string> rgba = exrChannelNames(t.channels.size());
+  // KTX2, DDS and PNG16 files hold the channels as R, G, B, A in storage order.
+  char head[12] = {};
+  std::ifstream(path, std::ios::binary).read(head, sizeof head);
+  if (SniffTableFile(std::string(head, sizeof head)) != TableFileKind::Exr) return rgba;
   std::set<std::string> inFile;
   Imf::InputFile file(path.c_str());
   for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
     inFile.insert(it.name());
-  std::vector<std::string> rgba = exrChannelNames(t.channels.size());
   if (!rgba.empty() && inFile == std::set<std::string>(rgba.begin(), rgba.end())) return rgba;
   return t.channels;
 }
@@ -83,14 +89,16 @@ void RegisterInspect(CLI::App& app) {
     bool json = false;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("file", args->file, "a kiln .exr table")->required();
+  sub->add_option("file", args->file,
+                  "a kiln table: .exr, or .ktx2, .dds, .png as kiln bake --format writes them")
+      ->required();
   sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
   sub->add_flag("--json", args->json,
                 "print the attributes as one JSON object on stdout (keys: README, Command line)");
   sub->callback([args] {
     // A device, FIFO, link or folder at --png is refused before anything is printed.
     if (!args->png.empty()) CheckWritableTarget(args->png);
-    Table t = loadTable(args->file);
+    Table t = LoadAnyTable(args->file);
     if (args->json) {
       if (!args->png.empty()) writeFalseColourPng(args->png, t);
       std::fputs(InspectJson(args->file, t, args->png).c_str(), stdout);

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "baker/cli/commands.h"
+#include "baker/io/texture_readers.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln::cli {
@@ -15,12 +16,14 @@ void RegisterSample(CLI::App& app) {
     bool cubic = false;
   };
   auto args = std::make_shared<Args>();
-  sub->add_option("file", args->file, "a kiln .exr table")->required();
+  sub->add_option("file", args->file,
+                  "a kiln table: .exr, or .ktx2, .dds, .png as kiln bake --format writes them")
+      ->required();
   sub->add_option("coords", args->x, "one value per axis, in axis order (see kiln inspect)")
       ->required();
   sub->add_flag("--cubic", args->cubic, "Catmull-Rom instead of linear interpolation");
   sub->callback([args] {
-    Table t = loadTable(args->file);
+    Table t = LoadAnyTable(args->file);
     if (static_cast<int>(args->x.size()) != t.dims())
       throw std::invalid_argument("sample: '" + args->file + "' has " + std::to_string(t.dims()) +
                                   " axes, got " + std::to_string(args->x.size()) + " coordinates");

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "baker/io/atomic_write.h"
+#include "baker/io/bitmap_font.h"
 
 namespace kiln {
 
@@ -166,47 +168,154 @@ void viridis(double t, std::uint8_t rgb[3]) {
   }
 }
 
+namespace {
+
+constexpr int kMargin = 6;      ///< around the preview, pixels
+constexpr int kLabelGap = 3;    ///< between an image and its labels
+constexpr int kBarHeight = 10;  ///< the colour bar's height
+constexpr int kColumnGap = 16;  ///< between two channels' panels
+constexpr std::uint8_t kInk[3] = {230, 230, 230};
+
+std::string Short(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  return buf;
+}
+
+/// The labels of one axis: "lo", "hi", "name (warp, nodes)" and its two parts.
+struct AxisLabels {
+  std::string lo, hi, name, bare, detail;
+};
+
+AxisLabels LabelsOf(const TableAxis& a) {
+  std::string detail =
+      "(" + std::string(warpName(a.axis.warp)) + ", " + std::to_string(a.axis.size) + ")";
+  return {Short(a.axis.lo), Short(a.axis.hi), a.name + " " + detail, a.name, detail};
+}
+
+/// The channel's [min, max] over the table.
+std::pair<float, float> RangeOf(const Table& table, int c) {
+  const int channels = static_cast<int>(table.channels.size());
+  float lo = table.data[static_cast<std::size_t>(c)], hi = lo;
+  for (std::size_t k = static_cast<std::size_t>(c); k < table.data.size();
+       k += static_cast<std::size_t>(channels)) {
+    lo = std::min(lo, table.data[k]);
+    hi = std::max(hi, table.data[k]);
+  }
+  return {lo, hi};
+}
+
+std::string TitleOf(const Table& table, int c) {
+  const std::vector<std::string> rgba = {"R", "G", "B", "A"};
+  return (c < 4 ? rgba[static_cast<std::size_t>(c)] + " = " : std::string()) +
+         table.channels[static_cast<std::size_t>(c)];
+}
+
+}  // namespace
+
+PreviewLayout FalseColourLayout(const Table& table) {
+  PreviewLayout l;
+  const int columns = table.imageWidth(), rows = table.imageHeight();
+  const int channels = static_cast<int>(table.channels.size());
+  l.scale = std::max(1, std::min(kMaxScale, kTargetPanelSize / std::max(columns, rows)));
+  l.rowHeight = table.dims() == 1 ? std::max(l.scale, kOneDimRowHeight) : l.scale;
+  l.imageWidth = columns * l.scale;
+  l.imageHeight = rows * l.rowHeight;
+  // Left of each image: axis 1's labels (top: lo, bottom: hi, middle: its name).
+  int left = 0;
+  if (table.dims() >= 2) {
+    AxisLabels y = LabelsOf(table.axes[1]);
+    left = std::max({TextWidth(y.lo), TextWidth(y.hi), TextWidth(y.bare), TextWidth(y.detail)}) +
+           kLabelGap;
+  }
+  AxisLabels x = LabelsOf(table.axes[0]);
+  int panel = std::max(l.imageWidth, TextWidth(x.name));
+  for (int c = 0; c < channels; ++c) {
+    auto [lo, hi] = RangeOf(table, c);
+    panel = std::max({panel, TextWidth(TitleOf(table, c)),
+                      TextWidth(Short(lo)) + TextWidth(Short(hi)) + kGlyphAdvance});
+  }
+  if (table.dims() == 3) {
+    AxisLabels z = LabelsOf(table.axes[2]);
+    panel = std::max(panel, TextWidth("slices: " + z.name + " " + z.lo + ".." + z.hi));
+  }
+  l.imageTop = kMargin + kGlyphLineHeight;
+  for (int c = 0; c < channels; ++c)
+    l.imageLeft.push_back(kMargin + c * (left + panel + kColumnGap) + left);
+  l.width = 2 * kMargin + channels * (left + panel) + (channels - 1) * kColumnGap;
+  const int lines = table.dims() == 3 ? 3 : 2;  // x ticks, x name [, slices]
+  l.barTop = l.imageTop + l.imageHeight + kLabelGap + lines * kGlyphLineHeight;
+  l.barHeight = kBarHeight;
+  l.height = l.barTop + kBarHeight + kLabelGap + kGlyphLineHeight + kMargin;
+  return l;
+}
+
 void writeFalseColourPng(const std::string& path, const Table& table) {
   std::string problem;
   if (!validateTable(table, problem))
     throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
+  const PreviewLayout l = FalseColourLayout(table);
   const int columns = table.imageWidth();
   const int rows = table.imageHeight();
   const int channels = static_cast<int>(table.channels.size());
-  const int scale = std::max(1, std::min(kMaxScale, kTargetPanelSize / std::max(columns, rows)));
-  const int rowHeight = table.dims() == 1 ? std::max(scale, kOneDimRowHeight) : scale;
-  const int panelWidth = columns * scale;
-  const int width = channels * panelWidth + (channels - 1) * kPanelGap;
-  const int height = rows * rowHeight;
-
+  const int width = l.width, height = l.height;
   std::vector<std::uint8_t> rgb(
       static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, kGapGrey);
+  auto put = [&](int px, int py, const std::uint8_t colour[3]) {
+    std::uint8_t* pixel =
+        &rgb[(static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px)) * 3];
+    pixel[0] = colour[0];
+    pixel[1] = colour[1];
+    pixel[2] = colour[2];
+  };
+  auto text = [&](int x, int y, const std::string& s) {
+    DrawText(rgb, width, height, x, y, s, kInk);
+  };
+  const AxisLabels x = LabelsOf(table.axes[0]);
   for (int c = 0; c < channels; ++c) {
-    float lo = table.data[static_cast<std::size_t>(c)], hi = lo;
-    for (std::size_t k = static_cast<std::size_t>(c); k < table.data.size();
-         k += static_cast<std::size_t>(channels)) {
-      lo = std::min(lo, table.data[k]);
-      hi = std::max(hi, table.data[k]);
-    }
+    auto [lo, hi] = RangeOf(table, c);
     const double range = static_cast<double>(hi) - static_cast<double>(lo);
-    const int panelX = c * (panelWidth + kPanelGap);
+    const int left = l.imageLeft[static_cast<std::size_t>(c)], top = l.imageTop;
     for (int row = 0; row < rows; ++row) {
       for (int col = 0; col < columns; ++col) {
         const float v = table.data[(static_cast<std::size_t>(row) * columns + col) * channels + c];
         const double t = range > 0.0 ? (static_cast<double>(v) - lo) / range : 0.5;
         std::uint8_t colour[3];
         viridis(t, colour);
-        for (int py = row * rowHeight; py < (row + 1) * rowHeight; ++py) {
-          for (int px = panelX + col * scale; px < panelX + (col + 1) * scale; ++px) {
-            std::uint8_t* pixel =
-                &rgb[(static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px)) * 3];
-            pixel[0] = colour[0];
-            pixel[1] = colour[1];
-            pixel[2] = colour[2];
-          }
-        }
+        for (int py = row * l.rowHeight; py < (row + 1) * l.rowHeight; ++py)
+          for (int px = col * l.scale; px < (col + 1) * l.scale; ++px)
+            put(left + px, top + py, colour);
       }
     }
+    // Title, axis 0 below the image (lo at the left, hi at the right, then its name), axis 1 at
+    // the left (lo at the top: row 0 is its first node), the slices of a 3D table.
+    text(left, kMargin, TitleOf(table, c));
+    int y = top + l.imageHeight + kLabelGap;
+    text(left, y, x.lo);
+    text(left + l.imageWidth - TextWidth(x.hi), y, x.hi);
+    text(left, y + kGlyphLineHeight, x.name + " ->");
+    if (table.dims() >= 2) {
+      const AxisLabels a1 = LabelsOf(table.axes[1]);
+      const int x1 = left - kLabelGap;
+      const int sliceHeight = table.size(1) * l.rowHeight;
+      text(x1 - TextWidth(a1.lo), top, a1.lo);
+      text(x1 - TextWidth(a1.hi), top + sliceHeight - 7, a1.hi);
+      text(x1 - TextWidth(a1.bare), top + sliceHeight / 2 - kGlyphLineHeight, a1.bare);
+      text(x1 - TextWidth(a1.detail), top + sliceHeight / 2, a1.detail);
+    }
+    if (table.dims() == 3) {
+      const AxisLabels z = LabelsOf(table.axes[2]);
+      text(left, y + 2 * kGlyphLineHeight, "slices: " + z.name + " " + z.lo + ".." + z.hi);
+    }
+    // The colour bar: viridis from the channel's min (left) to its max (right), labelled.
+    for (int px = 0; px < l.imageWidth; ++px) {
+      std::uint8_t colour[3];
+      viridis(l.imageWidth > 1 ? static_cast<double>(px) / (l.imageWidth - 1) : 0.5, colour);
+      for (int py = 0; py < l.barHeight; ++py) put(left + px, l.barTop + py, colour);
+    }
+    const int yr = l.barTop + l.barHeight + kLabelGap;
+    text(left, yr, Short(lo));
+    text(left + l.imageWidth - TextWidth(Short(hi)), yr, Short(hi));
   }
   const std::string png = encodePngRgb8(width, height, rgb);
   writeAtomically(path, [&](const std::string& temporaryPath) { writeBytes(temporaryPath, png); });

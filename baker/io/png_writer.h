@@ -31,14 +31,29 @@ std::string encodePngImage(int width, int height, int bitDepth, int colourType,
 /// from a degree-6 polynomial fit of matplotlib's viridis.
 void viridis(double t, std::uint8_t rgb[3]);
 
-/// Writes a false-colour PNG of `table` to `path`: one panel per channel,
-/// side by side left to right in storage order, separated by a 4-pixel dark
-/// gap. Each panel is the table's EXR image (axis 0 to the right, axis 1
-/// downwards, 3D slices stacked downwards), each texel an integer-scaled block
-/// (1D tables are drawn 32 pixels tall), coloured with viridis over the
-/// channel's own [min, max] (a constant channel is drawn mid-range). Written
-/// through a temporary file and a rename; throws std::runtime_error with a
-/// one-line message on failure or when the table fails validateTable.
+/// Where writeFalseColourPng draws, in pixels: the whole picture, each channel's texel image
+/// (all of imageWidth x imageHeight, at (imageLeft[c], imageTop)), each texel a scale x
+/// rowHeight block, and the colour bar under each image.
+struct PreviewLayout {
+  int width = 0, height = 0;
+  int imageWidth = 0, imageHeight = 0, imageTop = 0;
+  std::vector<int> imageLeft;  ///< one per channel, in storage order
+  int scale = 1, rowHeight = 1;
+  int barTop = 0, barHeight = 0;
+};
+
+/// The layout writeFalseColourPng uses for `table` (valid).
+PreviewLayout FalseColourLayout(const Table& table);
+
+/// Writes a false-colour PNG of `table` to `path`: one panel per channel, side by side left to
+/// right in storage order on a dark background. Each panel is the table's EXR image (axis 0 to
+/// the right, axis 1 downwards, 3D slices stacked downwards), each texel an integer-scaled block
+/// (1D tables are drawn 32 pixels tall), coloured with viridis over the channel's own [min, max]
+/// (a constant channel is drawn mid-range); labelled with the channel ("R = A"), axis 0's range
+/// and name (warp, nodes) under the image, axis 1's at its left (first node at the top), a 3D
+/// table's slice axis, and a colour bar under each image with the channel's min and max
+/// (bitmap_font.h). Written through a temporary file and a rename; throws std::runtime_error with
+/// a one-line message on failure or when the table fails validateTable.
 void writeFalseColourPng(const std::string& path, const Table& table);
 
 }  // namespace kiln
