@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -232,9 +233,10 @@ TEST_CASE("kiln sample takes mu_l mu_o phi of a brdf table and prints f itself",
   CHECK(approx == Approx(5002.04 / (8 * Pi)).epsilon(1e-6));
 }
 
-// Not a CTest case: the same dense scan of every table in $KILN_SCAN_DIR (e.g. the files of an
-// older commit, `git show REV:luts/NAME.exr`), printed; how the README's before/after was measured.
-TEST_CASE("Dense scan of the tables in KILN_SCAN_DIR", "[.][scan]") {
+// Not a CTest case ([long]): the same dense scan of every table in $KILN_SCAN_DIR (e.g. the files
+// of an older commit, `git show REV:luts/NAME.exr`), printed; how the README's before/after was
+// measured.
+TEST_CASE("Dense scan of the tables in KILN_SCAN_DIR", "[.][scan][long]") {
   const char* dir = std::getenv("KILN_SCAN_DIR");
   REQUIRE(dir != nullptr);
   for (const char* name : {"oren-nayar-brdf", "gotanda-ggx-brdf", "blinn-phong-normalization"}) {
