@@ -1,15 +1,20 @@
-// kiln sample: the interpolated channels of a table at one point, in the file's own units.
+// kiln sample: the interpolated quantity of a table at one physical point. A table in a stored
+// form (kiln/stored.h: a brdf table on cos(phi) or on symmetric axes storing f max(mu_l, mu_o),
+// blinn-phong-normalization storing ratios) is looked up on the coordinates derived from the
+// physical ones and its channels are turned back into the quantity.
 #include <cstdio>
 #include <stdexcept>
 
 #include "baker/cli/commands.h"
 #include "baker/io/texture_readers.h"
 #include "kiln/exr_loader.h"
+#include "kiln/stored.h"
 
 namespace kiln::cli {
 
 void RegisterSample(CLI::App& app) {
-  auto* sub = app.add_subcommand("sample", "print a table's interpolated channels at X [Y [Z]]");
+  auto* sub = app.add_subcommand(
+      "sample", "print a table's interpolated quantity at X [Y [Z]] (a brdf table: mu_l mu_o phi)");
   struct Args {
     std::string file;
     std::vector<double> x;
@@ -19,7 +24,9 @@ void RegisterSample(CLI::App& app) {
   sub->add_option("file", args->file,
                   "a kiln table: .exr, or .ktx2, .dds, .png as kiln bake --format writes them")
       ->required();
-  sub->add_option("coords", args->x, "one value per axis, in axis order (see kiln inspect)")
+  sub->add_option("coords", args->x,
+                  "the physical point, one value per axis: the axes' own parameters (see kiln "
+                  "inspect), for a brdf table mu_l mu_o phi (phi in radians)")
       ->required();
   sub->add_flag("--cubic", args->cubic, "Catmull-Rom instead of linear interpolation");
   sub->callback([args] {
@@ -29,10 +36,10 @@ void RegisterSample(CLI::App& app) {
                                   " axes, got " + std::to_string(args->x.size()) + " coordinates");
     for (double v : args->x)
       if (!std::isfinite(v)) throw std::invalid_argument("sample: coordinates must be finite");
-    std::vector<float> out(t.channels.size());
-    t.view().sample(args->x.data(), out.data(), args->cubic ? Filter::Cubic : Filter::Linear);
+    std::vector<double> out(t.channels.size());
+    sampleQuantity(t, args->x.data(), out.data(), args->cubic ? Filter::Cubic : Filter::Linear);
     std::string line;
-    for (float v : out) line += (line.empty() ? "" : " ") + FullPrecision(v);
+    for (double v : out) line += (line.empty() ? "" : " ") + FullPrecision(v);
     std::printf("%s\n", line.c_str());
   });
 }
