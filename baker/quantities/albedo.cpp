@@ -32,9 +32,9 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// F = 1: A + B of the GGX fixed rule is the albedo.
-std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
-  std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+/// F = 1: A + B of the microfacet fixed rule is the albedo.
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
 }
 
@@ -66,9 +66,9 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = GgxFixedRuleApplies;
+    q.usesFixedRule = MicrofacetFixedRuleApplies;
     q.fixedRule = FixedRule;
-    q.fixedRuleMethod = GgxFixedRuleMethod;
+    q.fixedRuleMethod = MicrofacetFixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

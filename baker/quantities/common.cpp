@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "baker/integrate/fixed_rule_dfg.h"
+#include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/models/specular.h"
 
 namespace kiln::quantity_detail {
@@ -111,6 +112,77 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats) {
 std::string GgxFixedRuleMethod(const TableSpec&) {
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
          "integrand's analytic scales, exact horizon cut; declared error " +
+         Short(kFixedRuleBound) + " abs";
+}
+
+bool MicrofacetFixedRuleApplies(const TableSpec& spec) {
+  return FixedRuleModelFor(spec.model.c_str(), nullptr) && spec.axes.size() == 2 &&
+         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
+}
+
+std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double* x,
+                                            IntegrationStats& stats) {
+  if (spec.model == "ggx") return GgxFixedRuleAt(x, stats);
+  FixedRuleModel m;
+  FixedRuleModelFor(spec.model.c_str(), &m);
+  // alpha as MakeModel derives it from the roughness clamped to the model's range [0, 1].
+  double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
+  std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, Clamp(x[0], 0.0, 1.0), alpha, &stats.evals);
+  stats.errorEstimate = kFixedRuleBound;
+  return ab;
+}
+
+std::string MicrofacetFixedRuleMethod(const TableSpec& spec) {
+  if (spec.model == "ggx") return GgxFixedRuleMethod(spec);
+  return "GGX visible-normal space (Heitz 2018) with the model's NDF and Smith term as smooth "
+         "weights: fixed Gauss-Legendre rule, panels placed at the integrand's analytic scales, "
+         "exact horizon cut; declared error " +
+         Short(kFixedRuleBound) + " abs";
+}
+
+namespace {
+
+/// (mu, roughness, eta) of a fresnel-albedo texel: from the axes, else the params.
+std::array<double, 3> FresnelAlbedoPoint(const TableSpec& spec, const double* x) {
+  double mu = 0, r = Param(spec, "roughness", 0), eta = Param(spec, "eta", 1.5);
+  int i = 0;
+  for (const AxisSpec& a : spec.axes) {
+    if (a.name == "mu") mu = x[i];
+    if (a.name == "roughness") r = x[i];
+    if (a.name == "eta") eta = x[i];
+    ++i;
+  }
+  return {mu, r, eta};
+}
+
+}  // namespace
+
+bool FresnelAlbedoFixedRuleApplies(const TableSpec& spec) {
+  if (spec.model != "ggx") return false;
+  bool hasMu = false, etaAxis = false;
+  for (const AxisSpec& a : spec.axes) {
+    if (a.name == "mu") hasMu = true;
+    if (a.name == "eta") {
+      etaAxis = true;
+      if (!(std::min(a.lo, a.hi) >= 1)) return false;
+    }
+  }
+  return hasMu && (etaAxis || Param(spec, "eta", 1.5) >= 1);
+}
+
+std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double* x,
+                                             IntegrationStats& stats) {
+  std::array<double, 3> p = FresnelAlbedoPoint(spec, x);
+  double alpha = std::max(AlphaFromPerceptual(Clamp(p[1], 0.0, 1.0)), MinAlpha);
+  double e = FixedRuleGGXFresnelAlbedo(Clamp(p[0], 0.0, 1.0), alpha, p[2], &stats.evals);
+  stats.errorEstimate = kFixedRuleBound;
+  return {e};
+}
+
+std::string FresnelAlbedoFixedRuleMethod(const TableSpec&) {
+  return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
+         "integrand's analytic scales and at the Fresnel layer (o.h ~ sqrt(eta^2 - 1)), exact "
+         "horizon cut; declared error " +
          Short(kFixedRuleBound) + " abs";
 }
 

@@ -59,6 +59,28 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats);
 /// The method text of the GGX fixed rule.
 std::string GgxFixedRuleMethod(const TableSpec& spec);
 
+/// True when a microfacet fixed rule applies: axes (mu, roughness) and a model with one (ggx: the
+/// GGX rule, fixed_rule_dfg.h; ggx-separable, beckmann, beckmann-separable, blinn-phong:
+/// fixed_rule_microfacet.h).
+bool MicrofacetFixedRuleApplies(const TableSpec& spec);
+
+/// (A, B) of the spec's microfacet fixed rule at x = (mu, roughness); sets stats.errorEstimate.
+std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double* x,
+                                            IntegrationStats& stats);
+
+/// The method text of the spec's microfacet fixed rule.
+std::string MicrofacetFixedRuleMethod(const TableSpec& spec);
+
+/// True when the exact-Fresnel GGX fixed rule applies: model ggx, a mu axis, every eta >= 1.
+bool FresnelAlbedoFixedRuleApplies(const TableSpec& spec);
+
+/// E of the exact-Fresnel GGX fixed rule at x (axes as GgxFresnelAlbedoAt).
+std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double* x,
+                                             IntegrationStats& stats);
+
+/// The method text of the exact-Fresnel GGX fixed rule.
+std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec);
+
 /// GGX with exact dielectric Fresnel at index eta: E(mu) (averaged: E_avg) at x, whose axes are
 /// (mu, roughness, eta) or (roughness, eta); an axis the planner fixed is read from params.
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,

@@ -26,7 +26,7 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
 }
 
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
-  std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+  std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
@@ -62,9 +62,9 @@ const QuantityInfo& DfgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = GgxFixedRuleApplies;
+    q.usesFixedRule = MicrofacetFixedRuleApplies;
     q.fixedRule = FixedRule;
-    q.fixedRuleMethod = GgxFixedRuleMethod;
+    q.fixedRuleMethod = MicrofacetFixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

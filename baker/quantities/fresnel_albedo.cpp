@@ -49,6 +49,9 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
+    q.usesFixedRule = FresnelAlbedoFixedRuleApplies;
+    q.fixedRule = FresnelAlbedoFixedRuleAt;
+    q.fixedRuleMethod = FresnelAlbedoFixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

@@ -1,0 +1,377 @@
+// Fixed rules for the microfacet models other than height-correlated GGX, and for GGX with exact
+// dielectric Fresnel: the variables of the GGX rule (fixed_rule_dfg.cpp, whose derivation this one
+// extends) with the model's own NDF, Smith term and Fresnel factor as smooth weights in them.
+//
+// Derivation. With l = reflect(o, h), f mu_l dl = D G2 F (o.h) / mu_o dh. Write D = D_ggx r, with
+// D_ggx the GGX NDF at the same alpha, and use GGX's visible normals: stretched by 1/alpha, h maps
+// to n' = (sin t' cos p, sin t' sin p, cos t') (tan theta_h = alpha tan t'), and
+// D_ggx (o.h)^+ / mu_o dh = 2 (o'.n')^+ dn' / (pi (1 + o'_z) G1_ggx(o)), so
+//     E_w = 4 / (pi (1 + o'_z)) int_0^pi dp int_0^{t'max(p)} sin t' (o'.n') r g F w dt',
+//     g = G2 / G1_ggx(o),
+// the horizon cut t'max(p) exact and analytic as in the GGX rule. The NDF ratio r is a function of
+// u = tan^2 t' alone, without alpha: the GGX stretch is every model's stretch:
+//     Beckmann     D = exp(-tan^2/alpha^2) / (pi alpha^2 cos^4):  r = exp(-u) (1 + u)^2;
+//     Blinn-Phong  D = (s + 2)/(2 pi) cos^s, s = 2/alpha^2 - 2:     r = (1 + u)^2 (1 + alpha^2 u)^
+//                  (-1/alpha^2 - 1) = ((1 + t^2)^2 / M2)^2 (C^2 / M2)^(1/alpha^2 - 1) below, which
+//                  is exp(-u) (1 + u)^2 as alpha -> 0 and 1 at alpha = 1 (D = 1/pi);
+// both bounded (by 4/e) and smooth in t'; they only cut the GGX tail short. Heitz & d'Eon 2014's
+// Beckmann VNDF would make r = 1 but needs an erf inverse per node; this form needs none.
+// g is Smith's term over GGX's G1(o), written without cancellation (mu Lambda finite at mu = 0):
+//     height-correlated  g = (mu_o + mu_o Lambda_ggx(o)) / (mu_o + mu_o Lambda(o) + mu_o
+//     Lambda(l)), separable          g = (mu_o + mu_o Lambda_ggx(o)) / (mu_o + mu_o Lambda(o))
+//     G1(l),
+// with the model's Lambda (GGX, or Beckmann's for Beckmann and Blinn-Phong: erfc and exp of
+// mu_l / (alpha sin_l)). Both have the masking layer of the GGX rule at mu_l -> 0, at a scale
+// ~ min(alpha, mu_o) (height-correlated) or ~ alpha (separable: the pole of G1(l) at
+// mu_l = -mu_l Lambda(l) ~ -alpha / 2): the same panels, at the model's scale.
+// The exact-Fresnel albedo (F = FrDielectric(o.h, eta), w = 1) adds one scale: F has branch
+// points at o.h = +-i eps, eps = sqrt(eta^2 - 1), and is flat beyond. On the visible domain
+// o.h >= mu_o / 2 (o.h = mu_o / (2 cos theta_h) on the cut, mu_o at h = n, and it is monotone
+// along an azimuth between), so the layer sits near the normal: o.h ~ mu_o + 2 alpha t sin_o cos p
+// there, a layer of width (mu_o + eps) / (2 alpha sin_o |cos p|) in t (the panel graded towards
+// t = 0 takes it) and, through the azimuths, of width (mu_o + eps) / (2 alpha) in cos p about
+// p = pi/2 (the outer grading scale sigma takes the smaller of it and the grazing bend mu_o /
+// sin_o, down to kFresnelSigmaFloor). At eta = 1, F = 0 and E = 0 exactly. Everything else (the
+// outer sinh grading about p = pi/2, the inner panels: [graded to 0] + plain + [graded to the cut],
+// the weights that decide when a structure is worth a panel) is the GGX rule's, with the graded
+// panels computed per node (x = expm1(h s) / expm1(h)) instead of tabulated. Two structures are
+// new: Beckmann's r is 1e-16 beyond u = 45 (and Blinn-Phong's beyond the u where its log r = -37),
+// so the inner range ends there (the essential singularity of exp(-u) at t' = pi/2 is never
+// reached); Blinn-Phong's r has a branch point at t' = pi/2 itself (C^(2/alpha^2 - 2)), so its
+// tail panel is graded at the cut's distance from it, not alpha. The counts are set per model
+// (kTuned below), one set per model, picked by varying each count from a fine rule (24, 24, 10,
+// 3, 10, 12) against adaptive quadrature at 1e-10 on the test grids
+// (tests/integrate_fixed_rule_microfacet.cpp) and keeping a cheaper set whose worst error there
+// stays below 1e-7 (not minimised: a texel costs ~1,000 evaluations, a table a few CPU seconds).
+// Nodes are summed in one fixed order, in scalar double arithmetic: the rule is deterministic.
+#include "baker/integrate/fixed_rule_microfacet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "baker/math/quadrature.h"
+#include "baker/models/fresnel.h"
+#include "baker/models/roughness.h"
+
+namespace kiln {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInvSqrtPi = 0.56418958354775628695;
+constexpr int kMaxNodes = 64;
+/// Grading is skipped for structures of weight below this (fixed_rule_dfg.cpp).
+constexpr double kNegligible = 1e-9;
+/// Azimuths of weight below these take lightNodes, or kTinyNodes, plain nodes.
+constexpr double kLightWeight = 1e-4, kTinyWeight = 1e-6;
+constexpr int kTinyNodes = 4;
+/// Floor of the outer grading scale about p = pi/2 (geometry), and of the Fresnel layer's.
+constexpr double kSigmaFloor = 0.03, kFresnelSigmaFloor = 1e-3;
+/// Share of the outer nodes kept at the mildest grading.
+constexpr double kOuterBase = 0.3;
+/// Fraction of [0, t_max] given to the panel graded towards t_max.
+constexpr double kTailPanel = 0.25;
+/// A structure is graded for when its scale is below this fraction of the graded panel.
+constexpr double kGradeBelow = 0.25;
+/// Bound of r g over GGX's (r <= 4/e, g <= sqrt(pi)): scales the weights that pick light azimuths.
+constexpr double kWeightBound = 3;
+
+/// Gauss-Legendre rules on [0, 1] with 1..kMaxNodes nodes, built once.
+struct Rule {
+  std::vector<double> x, w;
+};
+const Rule& Gauss(int n) {
+  static const std::vector<Rule> rules = [] {
+    std::vector<Rule> r(kMaxNodes + 1);
+    for (int k = 1; k <= kMaxNodes; ++k) GaussLegendre01(k, r[k].x, r[k].w);
+    return r;
+  }();
+  return rules[std::min(std::max(n, 1), kMaxNodes)];
+}
+
+/// mu Lambda(mu) of GGX, sin = sqrt(1 - mu^2) given, without cancellation (alpha / 2 at mu = 0).
+inline double MuLambdaGGX(double mu, double sin, double a) {
+  double a2s2 = a * a * sin * sin, den = 2 * (std::sqrt(mu * mu + a2s2) + mu);
+  return den > 0 ? a2s2 / den : 0;
+}
+
+/// mu Lambda(mu) of Beckmann: (alpha sin exp(-x^2) / sqrt(pi) - mu erfc(x)) / 2, x = mu / (alpha
+/// sin) (alpha / (2 sqrt(pi)) at mu = 0).
+inline double MuLambdaBeckmann(double mu, double sin, double a) {
+  if (!(sin > 0)) return 0;
+  double x = mu / (a * sin);
+  if (!(x < 27)) return 0;  // exp(-x^2) underflows: Lambda is 0 to double precision
+  return std::max(0.0, (a * sin * std::exp(-x * x) * kInvSqrtPi - mu * std::erfc(x)) / 2);
+}
+
+/// What one evaluation needs: the view, the model, the Fresnel index.
+struct Context {
+  FixedRuleModel model;
+  double mu, st, a, oxs, ozs;
+  double gNum;     ///< mu + mu Lambda_ggx(o)
+  double gDenO;    ///< mu + mu Lambda(o) (the model's)
+  double blinnK;   ///< 1 / alpha^2 - 1 (Blinn-Phong)
+  double tCap;     ///< t beyond which r < 1e-16 (1: none)
+  double eta = 0;  ///< > 0: the albedo with FrDielectric(o.h, eta)
+  double sumV = 0, sumB = 0;
+  long long count = 0;
+};
+
+/// Adds weight times the integrand at inner node t of the azimuth with cos p = c.
+inline void Add(Context& k, double c, double t, double weight) {
+  ++k.count;
+  const double a = k.a, mu = k.mu;
+  const double t2 = t * t, C = 1 - t2, q = 1 + t2, S = 2 * t, aS = a * S;
+  const double C2 = C * C, M2 = aS * aS + C2;
+  const double N1 = 2 * k.st * aS * C * c + mu * (C2 - aS * aS);  // mu_l M2
+  if (!(N1 > 0)) return;
+  const double muL = N1 / M2, sinL = std::sqrt((M2 - N1) * (M2 + N1)) / M2;
+  double r = 1;
+  if (k.model.ndf == FixedRuleNdf::Beckmann) {
+    const double u = C2 > 0 ? S * S / C2 : INFINITY;
+    r = u < 700 ? std::exp(-u) * (1 + u) * (1 + u) : 0;
+  } else if (k.model.ndf == FixedRuleNdf::BlinnPhong) {
+    const double qm = q * q / M2;
+    if (k.blinnK == 0)
+      r = qm * qm;
+    else
+      r = C2 > 0 ? qm * qm * std::exp(-k.blinnK * std::log1p(aS * aS / C2)) : 0;
+  }
+  if (r == 0) return;
+  const double muLambdaL =
+      k.model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(muL, sinL, a) : MuLambdaBeckmann(muL, sinL, a);
+  const double g = k.model.separable ? k.gNum / k.gDenO * (muL / (muL + muLambdaL))
+                                     : k.gNum / (k.gDenO + mu * (muLambdaL / muL));
+  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * r * g;
+  const double oh = (k.st * aS * c + mu * C) / std::sqrt(M2);
+  if (k.eta > 0) {
+    k.sumV += val * FrDielectric(oh, k.eta);
+  } else {
+    const double w = 1 - oh, w2 = w * w;
+    k.sumV += val;
+    k.sumB += val * (w2 * w2 * w);
+  }
+}
+
+/// A plain Gauss panel of n nodes over t in [t0, t0 + len].
+inline void PlainPanel(Context& k, double c, double pw, double t0, double len, int n) {
+  const Rule& g = Gauss(n);
+  for (size_t i = 0; i < g.x.size(); ++i) Add(k, c, t0 + len * g.x[i], pw * len * g.w[i]);
+}
+
+/// A panel of length len from the end `end` (t = end + dir x, dir = +-1), graded towards `end`
+/// at scale e: x = len expm1(h s) / expm1(h), h = log(1 + len / e), with base + perEFold h Gauss
+/// nodes in s.
+inline void GradedPanel(Context& k, double c, double pw, double end, double dir, double len,
+                        double e, int base, double perEFold) {
+  const double h = std::log1p(len / e), em = std::expm1(h);
+  const Rule& g = Gauss(base + static_cast<int>(std::ceil(perEFold * h - 1e-9)));
+  for (size_t i = 0; i < g.x.size(); ++i) {
+    const double x = len * std::expm1(h * g.x[i]) / em;
+    Add(k, c, end + dir * x, pw * len * h * g.w[i] * std::exp(h * g.x[i]) / em);
+  }
+}
+
+/// The rule: (sumV, sumB) times the prefactor (Fresnel: sumV is E).
+std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long long* evals) {
+  const double mu = k.mu, st = k.st, a = k.a, a2 = a * a;
+  const double pref = 16 / (kPi * (1 + k.ozs));
+  // Masking pole of g at mu_l = -sMask: ~ min(alpha, mu) height-correlated, ~ alpha separable.
+  const double muLo = k.gDenO - mu;
+  const double sMask = k.model.separable ? a / 2 : (mu > 0 ? mu * a / (mu + 2 * muLo) : 0);
+  double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
+  double eps = 0;
+  if (k.eta > 0) {
+    eps = std::sqrt((k.eta - 1) * (k.eta + 1));
+    sigma = std::min(sigma, std::max((mu + eps) / (2 * a), kFresnelSigmaFloor));
+  }
+  static const double kYRef = std::asinh(kPi / (2 * kSigmaFloor));
+  const double Y = std::asinh(kPi / (2 * sigma));
+  const int nOuter = std::min(
+      kMaxNodes, static_cast<int>(std::ceil(
+                     opt.outerNodes * (kOuterBase + (1 - kOuterBase) * std::min(Y, kYRef) / kYRef) +
+                     opt.outerNodes * std::max(0.0, Y - kYRef) / kYRef - 1e-9)));
+  const Rule& go = Gauss(nOuter);
+  const double invMu = mu > 0 ? 1 / mu : 0;
+  for (size_t io = 0; io < go.x.size(); ++io) {
+    const double y = Y * go.x[io];
+    const double cx = std::sin(sigma * std::sinh(y)), pw = go.w[io] * Y * sigma * std::cosh(y);
+    // Both sides (0: cos p > 0, 1: cos p < 0): t at the cut, dt/dt' there, the masking scale e2
+    // at the cut and, for the opposite side, e0 (fixed_rule_dfg.cpp).
+    const double X = st * cx, R = std::sqrt(mu * mu + X * X), RX = R + X;
+    const double iT[2] = {mu * (1 / RX), std::min(RX * invMu, 1e150)};
+    double tm[2], d[2], e2[2], e0[2];
+    for (int side = 0; side < 2; ++side) {
+      const double iu = a * iT[side], m = 1 + a2 * iT[side] * iT[side];
+      const double t1 = 1 / (iu + std::sqrt(iu * iu + 1));
+      const double u = sMask * a * (1 + iT[side] * iT[side]) / (2 * R * m);  // e2 / (dt/dt')
+      tm[side] = side == 1 && mu == 0 ? 0 : t1;
+      d[side] = (1 + t1 * t1) / 2;
+      e2[side] = u * d[side];
+      e0[side] = t1 + u / 2;
+    }
+    for (int side = 0; side < 2; ++side) {
+      const double t1 = std::min(tm[side], k.tCap);
+      const bool capped = t1 < tm[side];  // the cut and its structures lie beyond the NDF's end
+      if (!(t1 > 0)) continue;
+      const double c = side == 0 ? cx : -cx, kOn = 2 * k.oxs * c;
+      const double weight =
+          kWeightBound * pref / 4 * pw * t1 * t1 * (4.0 / 3 * std::abs(kOn) * t1 + 2 * k.ozs);
+      if (weight < kTinyWeight) {
+        PlainPanel(k, c, pw, 0, t1, kTinyNodes);
+        continue;
+      }
+      if (weight < kLightWeight) {
+        PlainPanel(k, c, pw, 0, t1, opt.lightNodes);
+        continue;
+      }
+      const double onMaxQ = k.oxs * 2 * t1 * c + k.ozs * (1 - t1 * t1);
+      const double floorW = kNegligible * d[side] * (1 + t1 * t1);
+      // GGX's tail: branch points at t = 1 +- i alpha; Blinn-Phong's r has C^(2/alpha^2 - 2), a
+      // branch point at t = 1 itself (the cut's distance from it, down to 1e-5).
+      const double eTail = k.model.ndf == FixedRuleNdf::BlinnPhong && k.blinnK > 0 && !capped
+                               ? std::max(1 - t1, 1e-5)
+                               : (1 - t1) + a,
+                   len = kTailPanel * t1;
+      double eEnd = INFINITY;
+      if (onMaxQ * eTail > floorW && eTail < kGradeBelow * len) eEnd = eTail;
+      // Fresnel in the GGX tail: o.h ~ mu + 2 alpha sin_o |cos p| / C there, which crosses the
+      // layer o.h ~ eps at C ~ alpha / eps (a 1/C decay of 1 - F beyond it).
+      const double eFT = (1 - t1) + a * (1 + 2 * st * std::abs(c) / std::max(eps, 1e-300));
+      if (k.eta > 0 && onMaxQ * eFT > floorW && eFT < kGradeBelow * len) eEnd = std::min(eEnd, eFT);
+      if (!capped && sMask > 0 && e2[side] < kGradeBelow * len && onMaxQ * e2[side] > floorW)
+        eEnd = std::min(eEnd, e2[side]);
+      double eStart = INFINITY;
+      const double eMask = e0[1 - side];
+      if (sMask > 0 && tm[1 - side] > 0 && eMask < t1 / 8 && eMask * eMask * k.ozs > kNegligible)
+        eStart = eMask;
+      if (k.eta > 0 && st > 0 && cx > 0) {
+        const double eF = (mu + eps) / (2 * a * st * cx);
+        if (eF < t1 / 8) eStart = std::min(eStart, eF);
+      }
+      double split = 0;
+      if (eStart < INFINITY) {
+        split = t1 / 2;
+        GradedPanel(k, c, pw, 0, 1, split, eStart, opt.deficitNodes, opt.nodesPerEFold);
+      }
+      if (eEnd < INFINITY) {
+        const double mid = t1 - len - split;
+        PlainPanel(k, c, pw, split, mid, split > 0 ? opt.deficitNodes : opt.bulkNodes);
+        GradedPanel(k, c, pw, t1, -1, len, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+      } else {
+        PlainPanel(k, c, pw, split, t1 - split,
+                   split > 0 ? opt.bulkNodes : opt.bulkNodes + opt.gradedNodes);
+      }
+    }
+  }
+  if (evals) *evals += k.count;
+  return {pref * (k.sumV - k.sumB), pref * k.sumB};
+}
+
+/// The context of a view and model (eta = 0: the DFG).
+Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
+  Context k;
+  k.model = model;
+  k.mu = std::min(1.0, std::max(0.0, mu));
+  k.a = std::max(alpha, MinAlpha);
+  k.st = std::sqrt(std::max(0.0, 1 - k.mu * k.mu));
+  const double L = std::sqrt(k.a * k.a * k.st * k.st + k.mu * k.mu);
+  k.ozs = k.mu / L;
+  k.oxs = k.a * k.st / L;
+  k.gNum = k.mu + MuLambdaGGX(k.mu, k.st, k.a);
+  k.gDenO = k.mu + (model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(k.mu, k.st, k.a)
+                                                   : MuLambdaBeckmann(k.mu, k.st, k.a));
+  k.blinnK = 1 / (k.a * k.a) - 1;
+  // The end of the NDF: u = tan^2 t' where log r = -37 (r = exp(-u) (1 + u)^2 for Beckmann; for
+  // Blinn-Phong 2 log(1 + u) - (1 / alpha^2 + 1) log(1 + alpha^2 u), by bisection in log u, none
+  // when it stays above), then t = tan(t'/2).
+  double uMax = INFINITY;
+  if (model.ndf == FixedRuleNdf::Beckmann) uMax = 45;
+  if (model.ndf == FixedRuleNdf::BlinnPhong) {
+    auto logR = [&](double u) {
+      return 2 * std::log1p(u) - (k.blinnK + 2) * std::log1p(k.a * k.a * u);
+    };
+    if (logR(1e300) < -37) {
+      double lo = std::log(1e-3), hi = std::log(1e300);
+      for (int i = 0; i < 60; ++i) {
+        const double m = (lo + hi) / 2;
+        (logR(std::exp(m)) < -37 ? hi : lo) = m;
+      }
+      uMax = std::exp(hi);
+    }
+  }
+  // (no cap beyond u = 1e12: t is within 1e-6 of 1 there, where the tail grading takes over)
+  k.tCap = uMax < 1e12 ? std::tan(std::atan(std::sqrt(uMax)) / 2) : 1;
+  return k;
+}
+
+/// The bake's node counts per model (outer, bulk, graded, per e-fold, deficit, light).
+struct Tuned {
+  FixedRuleNdf ndf;
+  bool separable;
+  MicrofacetRuleOptions opt;
+};
+// Beckmann's Lambda has an essential singularity where sin_l = 0 (x = mu_l / (alpha sin_l) -> inf,
+// exp(-x^2) flat on the real line only): a cone point at l = n, inside the lobe when alpha ~ 1,
+// which takes more inner nodes than GGX's Lambda. The Fresnel layer takes more bulk nodes.
+const Tuned kTuned[] = {
+    {FixedRuleNdf::GGX, true, {24, 12, 6, 2, 8, 8}},
+    {FixedRuleNdf::Beckmann, false, {24, 20, 8, 3, 10, 8}},
+    {FixedRuleNdf::Beckmann, true, {24, 20, 8, 3, 10, 8}},
+    {FixedRuleNdf::BlinnPhong, false, {24, 20, 8, 3, 10, 8}},
+    {FixedRuleNdf::GGX, false, {24, 12, 6, 2, 8, 8}},
+};
+const MicrofacetRuleOptions kTunedFresnel = {24, 16, 8, 2, 8, 8};
+
+}  // namespace
+
+bool FixedRuleModelFor(const char* model, FixedRuleModel* out) {
+  static const struct {
+    const char* name;
+    FixedRuleModel m;
+  } kModels[] = {{"ggx", {FixedRuleNdf::GGX, false}},
+                 {"ggx-separable", {FixedRuleNdf::GGX, true}},
+                 {"beckmann", {FixedRuleNdf::Beckmann, false}},
+                 {"beckmann-separable", {FixedRuleNdf::Beckmann, true}},
+                 {"blinn-phong", {FixedRuleNdf::BlinnPhong, false}}};
+  for (const auto& e : kModels)
+    if (std::strcmp(e.name, model) == 0) {
+      if (out) *out = e.m;
+      return true;
+    }
+  return false;
+}
+
+MicrofacetRuleOptions TunedMicrofacetRuleOptions(const FixedRuleModel& model) {
+  for (const Tuned& t : kTuned)
+    if (t.ndf == model.ndf && t.separable == model.separable) return t.opt;
+  return MicrofacetRuleOptions{};
+}
+
+MicrofacetRuleOptions TunedFresnelRuleOptions() { return kTunedFresnel; }
+
+std::array<double, 2> FixedRuleMicrofacetDFG(const FixedRuleModel& model, double mu, double alpha,
+                                             const MicrofacetRuleOptions& opt, long long* evals) {
+  Context k = MakeContext(model, mu, alpha);
+  return Rule2(k, opt, evals);
+}
+
+std::array<double, 2> FixedRuleMicrofacetDFG(const FixedRuleModel& model, double mu, double alpha,
+                                             long long* evals) {
+  return FixedRuleMicrofacetDFG(model, mu, alpha, TunedMicrofacetRuleOptions(model), evals);
+}
+
+double FixedRuleGGXFresnelAlbedo(double mu, double alpha, double eta,
+                                 const MicrofacetRuleOptions& opt, long long* evals) {
+  if (!(eta > 1)) return 0;  // F = 0 at eta = 1 (FrDielectric); eta < 1 is not this rule's
+  Context k = MakeContext(FixedRuleModel{FixedRuleNdf::GGX, false}, mu, alpha);
+  k.eta = eta;
+  return Rule2(k, opt, evals)[0];
+}
+
+double FixedRuleGGXFresnelAlbedo(double mu, double alpha, double eta, long long* evals) {
+  return FixedRuleGGXFresnelAlbedo(mu, alpha, eta, TunedFresnelRuleOptions(), evals);
+}
+
+}  // namespace kiln

@@ -1,0 +1,64 @@
+// Fixed (non-adaptive) quadrature rules for the split-sum DFG (A, B), the albedo (A + B) of the
+// catalogue's microfacet models other than height-correlated GGX (ggx-separable, beckmann,
+// beckmann-separable, blinn-phong), and for GGX's albedo with exact dielectric Fresnel
+// (ggx-fresnel-albedo). The GGX rule's variables (fixed_rule_dfg.h: the GGX visible normals, the
+// horizon cut exact) with each model's NDF as a smooth, alpha-free factor on the GGX one, panels at
+// the integrand's analytic scales. Method and derivation: fixed_rule_microfacet.cpp.
+//
+// Conventions (those of kiln::SplitSumDFG and kiln::DirectionalAlbedo): view
+// o = (sqrt(1 - mu^2), 0, mu), normal +z, alpha the microfacet roughness (alpha = r^2, at least
+// MinAlpha), w = 1 - o.h, A = integral f (1 - w^5) mu_l dl, B = integral f w^5 mu_l dl with F = 1.
+#pragma once
+#include <array>
+
+namespace kiln {
+
+/// The microfacet distribution of a fixed rule.
+enum class FixedRuleNdf { GGX, Beckmann, BlinnPhong };
+
+/// A microfacet model the fixed rule takes: its NDF and whether Smith's G2 is separable
+/// (G1(o) G1(l)) or height-correlated (1 / (1 + Lambda(o) + Lambda(l))). Blinn-Phong takes
+/// Beckmann's Lambda at the same alpha (models/microfacet.h).
+struct FixedRuleModel {
+  FixedRuleNdf ndf = FixedRuleNdf::GGX;
+  bool separable = false;
+};
+
+/// The fixed rule's model for a registry model name, or false when it has none.
+bool FixedRuleModelFor(const char* model, FixedRuleModel* out);
+
+/// Node counts of the microfacet fixed rule (the roles of FixedRuleOptions in fixed_rule_dfg.h).
+struct MicrofacetRuleOptions {
+  int outerNodes = 12;         ///< Gauss nodes in phi_h per half at the strongest grading
+  int bulkNodes = 9;           ///< Gauss nodes of the plain inner panel
+  int gradedNodes = 5;         ///< base Gauss nodes of the panel graded towards the cut
+  double nodesPerEFold = 1.5;  ///< plus this many per e-fold of its grading range
+  int deficitNodes = 5;        ///< base Gauss nodes of the panel graded towards the normal
+  int lightNodes = 6;          ///< Gauss nodes of an azimuth of negligible weight
+};
+
+/// The node counts the bake uses for `model` (fixed_rule_microfacet.cpp, kTuned).
+MicrofacetRuleOptions TunedMicrofacetRuleOptions(const FixedRuleModel& model);
+
+/// The node counts the bake uses for ggx-fresnel-albedo.
+MicrofacetRuleOptions TunedFresnelRuleOptions();
+
+/// Split-sum DFG (A, B) of `model` at view cosine mu in [0, 1] and alpha > 0 (clamped to
+/// MinAlpha), by the fixed rule with node counts `opt`; evals (optional) accumulates the
+/// integrand evaluations. Deterministic: the same arguments give the same bits.
+std::array<double, 2> FixedRuleMicrofacetDFG(const FixedRuleModel& model, double mu, double alpha,
+                                             const MicrofacetRuleOptions& opt,
+                                             long long* evals = nullptr);
+
+/// The same with the bake's node counts, TunedMicrofacetRuleOptions(model).
+std::array<double, 2> FixedRuleMicrofacetDFG(const FixedRuleModel& model, double mu, double alpha,
+                                             long long* evals = nullptr);
+
+/// GGX (height-correlated Smith) directional albedo with exact dielectric Fresnel
+/// F = FrDielectric(o.h, eta), at mu in [0, 1], alpha > 0 (clamped to MinAlpha), eta >= 1, by
+/// the fixed rule with node counts `opt` (the bake's, TunedFresnelRuleOptions(), by default).
+double FixedRuleGGXFresnelAlbedo(double mu, double alpha, double eta,
+                                 const MicrofacetRuleOptions& opt, long long* evals = nullptr);
+double FixedRuleGGXFresnelAlbedo(double mu, double alpha, double eta, long long* evals = nullptr);
+
+}  // namespace kiln
