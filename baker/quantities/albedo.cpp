@@ -32,10 +32,20 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// F = 1: A + B of the GGX fixed rule is the albedo.
-std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+/// A fixed rule for GGX (visible-normal) and for every diffuse model (light space).
+bool AlbedoUsesFixedRule(const TableSpec& spec) {
+  return GgxFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec);
+}
+
+/// GGX at F = 1: A + B of the GGX fixed rule is the albedo. Diffuse: the diffuse fixed rule.
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
   return {ab[0] + ab[1]};
+}
+
+std::string FixedRuleMethod(const TableSpec& spec) {
+  return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec) : GgxFixedRuleMethod(spec);
 }
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
@@ -66,9 +76,9 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = GgxFixedRuleApplies;
+    q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
-    q.fixedRuleMethod = GgxFixedRuleMethod;
+    q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

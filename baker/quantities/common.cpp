@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "baker/integrate/fixed_rule_dfg.h"
+#include "baker/integrate/fixed_rule_diffuse.h"
 #include "baker/models/specular.h"
 
 namespace kiln::quantity_detail {
@@ -112,6 +113,28 @@ std::string GgxFixedRuleMethod(const TableSpec&) {
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
          "integrand's analytic scales, exact horizon cut; declared error " +
          Short(kFixedRuleBound) + " abs";
+}
+
+bool DiffuseFixedRuleApplies(const TableSpec& spec) {
+  const ModelInfo* m = FindModel(spec.model);
+  return m && !m->specular() && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
+         spec.axes[1].name == "roughness";
+}
+
+std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
+                                       IntegrationStats& stats) {
+  RhoParts e = FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
+  stats.errorEstimate = kDiffuseRuleBound;
+  return RhoChannels(spec, e);
+}
+
+std::string DiffuseFixedRuleMethod(const TableSpec&) {
+  DiffuseRuleOptions opt;
+  return "light space: fixed tensor Gauss-Legendre rule over theta_l x phi (" +
+         std::to_string(opt.thetaNodes) + " x " + std::to_string(opt.phiNodes) +
+         " nodes per panel), panels split at theta_o and phi = pi/2 and graded towards theta_o "
+         "and phi = pi at the grazing scale; declared error " +
+         Short(kDiffuseRuleBound) + " abs";
 }
 
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,

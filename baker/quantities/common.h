@@ -59,6 +59,18 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats);
 /// The method text of the GGX fixed rule.
 std::string GgxFixedRuleMethod(const TableSpec& spec);
 
+/// True when the diffuse fixed rule (integrate/fixed_rule_diffuse.h) applies: a light-space
+/// model, axes (mu, roughness).
+bool DiffuseFixedRuleApplies(const TableSpec& spec);
+
+/// E(mu) of the diffuse fixed rule at x = (mu, roughness) as the spec's channels; sets
+/// stats.errorEstimate to its bound (kDiffuseRuleBound).
+std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
+                                       IntegrationStats& stats);
+
+/// The method text of the diffuse fixed rule.
+std::string DiffuseFixedRuleMethod(const TableSpec& spec);
+
 /// GGX with exact dielectric Fresnel at index eta: E(mu) (averaged: E_avg) at x, whose axes are
 /// (mu, roughness, eta) or (roughness, eta); an axis the planner fixed is read from params.
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,
