@@ -106,6 +106,5 @@ TEST_CASE("The diffuse rule is deterministic and refuses a specular model",
     CHECK(e1 == e2);
     CHECK(e1 > 0);
   }
-  CHECK_THROWS_AS(FixedRuleDiffuseAlbedo(ModelAtRoughness("ggx", 0.5), 0.5),
-                  std::invalid_argument);
+  CHECK_THROWS_AS(FixedRuleDiffuseAlbedo(ModelAtRoughness("ggx", 0.5), 0.5), std::invalid_argument);
 }

@@ -22,11 +22,14 @@
 //     theta^(2p+1); Gauss-Legendre errs like n^(-2(2p+2)) on it, 1e-8 at n = 8 for p = 1.1,
 //     and one extra geometric panel towards theta_l = 0 takes it well below that.
 // At eps = 0 (mu_o = 0) the poles reach the hemisphere's corner; the grading then starts at
-// kMinScale. Measured against adaptive quadrature at 1e-10 on a dense (mu, r) grid for every
-// catalogue diffuse model: tests/integrate_fixed_rule_diffuse.cpp (the worst is printed there).
+// kMinScale. Only Hammon and full Oren-Nayar have item 2's poles: the other models get the
+// panels of items 1 and 3 alone. Measured against adaptive quadrature at 1e-10 on a dense (mu, r)
+// grid for every catalogue diffuse model: tests/integrate_fixed_rule_diffuse.cpp (the worst is
+// printed there).
 #include "baker/integrate/fixed_rule_diffuse.h"
 
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "baker/math/quadrature.h"
@@ -79,7 +82,10 @@ template <class M>
 RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
   double theta_o = std::acos(mu_o);
-  double eps = std::max(Pi / 2 - theta_o, kMinScale);
+  // Item 2's poles: Hammon and full Oren-Nayar only; the others need no grading (eps = pi/2
+  // leaves a single panel on each side of theta_o and of phi = pi/2).
+  constexpr bool kGrazingPoles = std::is_same_v<M, HammonDiffuse> || std::is_same_v<M, OrenNayar>;
+  double eps = kGrazingPoles ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
   // theta_l: [0, g0] towards the normal (item 3), then graded towards theta_o, then
   // [theta_o, pi/2].
   std::vector<double> thetaBreaks;

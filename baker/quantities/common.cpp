@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/integrate/fixed_rule_average.h"
 #include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/fixed_rule_diffuse.h"
 #include "baker/models/specular.h"
@@ -135,6 +136,40 @@ std::string DiffuseFixedRuleMethod(const TableSpec&) {
          " nodes per panel), panels split at theta_o and phi = pi/2 and graded towards theta_o "
          "and phi = pi at the grazing scale; declared error " +
          Short(kDiffuseRuleBound) + " abs";
+}
+
+std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
+                                     IntegrationStats& stats) {
+  const size_t dims = albedo.axes.size();
+  double x[4] = {0, 0, 0, 0};
+  double layer = 1, innerBound = 0;
+  for (size_t i = 1; i < dims; ++i) {
+    x[i] = rest[i - 1];
+    if (albedo.axes[i].name == "roughness")
+      layer = std::min(layer, std::max(AlphaFromPerceptual(Clamp(x[i], 0.0, 1.0)), MinAlpha));
+    if (albedo.axes[i].name == "eta") layer = std::min(layer, std::sqrt(std::abs(x[i] - 1)));
+  }
+  const bool fixed = UsesFixedRule(albedo);
+  auto e = [&](double mu) {
+    x[0] = mu;
+    IntegrationStats st;
+    std::vector<double> v = EvaluateSpec(albedo, x, st);
+    stats.evals += st.evals;
+    innerBound = std::max(innerBound,
+                          fixed ? st.errorEstimate : 10 * std::max(st.errorEstimate, albedo.tol));
+    return v;
+  };
+  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer)
+                                                   : FixedCosineAverageAngle(e, kMinAngleLayer);
+  stats.errorEstimate = innerBound + kCosineAverageBound;
+  return r;
+}
+
+std::string AverageFixedRuleMethod(const TableSpec& albedo) {
+  return "2 int E mu dmu by a fixed Gauss-Legendre rule in " +
+         std::string(IsSpecular(albedo.model) ? "mu" : "asin(mu)") + " (" +
+         std::to_string(kCosineAverageNodes) +
+         " nodes per panel, panels graded from the layer at mu = 0) of E by: " + albedo.Method();
 }
 
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,
