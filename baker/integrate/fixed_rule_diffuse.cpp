@@ -78,14 +78,17 @@ std::vector<double> GradedTowardsEnd(double lo, double hi, double s) {
   return b;
 }
 
+/// The models with item 2's poles.
+template <class M>
+constexpr bool kGrazingPoles = std::is_same_v<M, HammonDiffuse> || std::is_same_v<M, OrenNayar>;
+
 template <class M>
 RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
   double theta_o = std::acos(mu_o);
   // Item 2's poles: Hammon and full Oren-Nayar only; the others need no grading (eps = pi/2
   // leaves a single panel on each side of theta_o and of phi = pi/2).
-  constexpr bool kGrazingPoles = std::is_same_v<M, HammonDiffuse> || std::is_same_v<M, OrenNayar>;
-  double eps = kGrazingPoles ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
+  double eps = kGrazingPoles<M> ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
   // theta_l: [0, g0] towards the normal (item 3), then graded towards theta_o, then
   // [theta_o, pi/2].
   std::vector<double> thetaBreaks;
@@ -129,6 +132,10 @@ RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long lon
 }
 
 }  // namespace
+
+bool DiffuseRuleGradesGrazing(const AnyModel& model) {
+  return std::visit([](const auto& m) { return kGrazingPoles<std::decay_t<decltype(m)>>; }, model);
+}
 
 RhoParts FixedRuleDiffuseAlbedo(const AnyModel& model, double mu_o, const DiffuseRuleOptions& opt,
                                 long long* evals) {

@@ -22,6 +22,10 @@ struct DiffuseRuleOptions {
 RhoParts FixedRuleDiffuseAlbedo(const AnyModel& model, double mu_o,
                                 const DiffuseRuleOptions& opt = {}, long long* evals = nullptr);
 
+/// True for the models whose panels the rule grades towards theta_o and phi = pi at the grazing
+/// scale (Hammon, full Oren-Nayar: poles just outside the hemisphere; fixed_rule_diffuse.cpp).
+bool DiffuseRuleGradesGrazing(const AnyModel& model);
+
 /// The absolute error the diffuse rule is declared to, for every catalogue diffuse model over
 /// mu in [0, 1] and its whole roughness range (tests/integrate_fixed_rule_diffuse.cpp holds it
 /// to adaptive quadrature at 1e-10; the measured worst is printed there).

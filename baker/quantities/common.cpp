@@ -129,13 +129,14 @@ std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
   return RhoChannels(spec, e);
 }
 
-std::string DiffuseFixedRuleMethod(const TableSpec&) {
+std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
   DiffuseRuleOptions opt;
+  bool graded = DiffuseRuleGradesGrazing(ModelAt(spec.model, 0));
   return "light space: fixed tensor Gauss-Legendre rule over theta_l x phi (" +
          std::to_string(opt.thetaNodes) + " x " + std::to_string(opt.phiNodes) +
-         " nodes per panel), panels split at theta_o and phi = pi/2 and graded towards theta_o "
-         "and phi = pi at the grazing scale; declared error " +
-         Short(kDiffuseRuleBound) + " abs";
+         " nodes per panel), panels split at theta_o, phi = pi/2 and towards the normal" +
+         (graded ? ", graded towards theta_o and phi = pi at the grazing scale" : "") +
+         "; declared error " + Short(kDiffuseRuleBound) + " abs";
 }
 
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
