@@ -15,8 +15,8 @@
 //     graded geometrically towards theta_o (ratio 4, from eps up to theta_o / 2) keep every
 //     singularity at least ~ 2/3 of a half panel beyond its panel, where n = 8 nodes converge
 //     like 3^(-2n) ~ 1e-8 relative. [theta_o, pi/2] is one panel of length eps with its poles
-//     one panel length beyond. The azimuth gets the same grading towards phi = pi (where l
-//     meets -o), at the same scale.
+//     one panel length beyond. For Hammon the azimuth gets the same grading towards phi = pi
+//     (where l meets -o), at the same scale; Oren-Nayar's pole does not depend on phi.
 //  3. Gotanda's GGX diffuse has (1 - mu_l)^p with non-integer p in [1.1, 5.3]: ~ theta_l^(2p) at
 //     the normal, an end-point singularity of the first panel that the weight sin(theta_l) makes
 //     theta^(2p+1); Gauss-Legendre errs like n^(-2(2p+2)) on it, 1e-8 at n = 8 for p = 1.1,
@@ -103,7 +103,9 @@ RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long lon
   // are degree ~12 in theta_l: two panels of n nodes take them to rounding).
   if (Pi / 2 - theta_o > Pi / 4) thetaBreaks.push_back((theta_o + Pi / 2) / 2);
   if (theta_o < Pi / 2) thetaBreaks.push_back(Pi / 2);
-  std::vector<double> phiBreaks = GradedTowardsEnd(Pi / 2, Pi, eps);
+  // phi: graded towards pi only for Hammon's |o + l| (Oren-Nayar's pole does not depend on phi).
+  std::vector<double> phiBreaks =
+      GradedTowardsEnd(Pi / 2, Pi, std::is_same_v<M, HammonDiffuse> ? eps : Pi / 2);
   phiBreaks.insert(phiBreaks.begin(), 0.0);
 
   std::vector<double> tx, tw, px, pw;

@@ -48,6 +48,8 @@ double FresnelAverageFixed(double eta, long long* evals) {
 }
 
 std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
+  if (!(x[0] > 0 && x[0] <= 100))
+    throw std::invalid_argument("fresnel-dielectric-avg: eta must be in (0, 100]");
   stats.errorEstimate = kCosineAverageBound;
   return {FresnelAverageFixed(x[0], &stats.evals)};
 }
