@@ -14,6 +14,8 @@
 
 #include "baker/bench/bench.h"
 #include "baker/bench/svg_plot.h"
+#include "baker/tables/catalogue.h"
+#include "baker/tables/spec.h"
 
 using namespace kiln;
 
@@ -244,11 +246,11 @@ TEST_CASE("kiln bench writes the promised CSV rows and a well-formed SVG", "[ben
           4 * std::stoll(rec[col("texels")]) * (rec[col("table")] == "ggx-dfg" ? 2 : 1));
   }
   CHECK(sections == std::set<std::string>{"sweep", "size", "threads", "baker-issue", "runtime"});
-  // ggx-dfg and ggx-fresnel-albedo are baked by fixed rules (one row, no tolerance sweep),
-  // burley-albedo adaptively.
+  // A table with a fixed rule (ggx-dfg, burley-albedo) has one kiln row, no tolerance sweep;
+  // the others are swept adaptively.
   for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"})
     for (const char* method : {"kiln", "mc-hammersley", "gauss-legendre"}) {
-      std::string m = std::string(method) == "kiln" && std::string(table) != "burley-albedo"
+      std::string m = std::string(method) == "kiln" && UsesFixedRule(CatalogueTable(table))
                           ? "kiln-fixed-rule"
                           : method;
       CHECK(sweepCombos.count(std::string(table) + "/" + m) == 1);
@@ -280,7 +282,7 @@ TEST_CASE("kiln bench: kiln's bake beats 1024-sample Monte Carlo on bake error",
   };
   for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"}) {
     const BenchRow* kiln =
-        find("sweep", table, std::string(table) != "burley-albedo" ? "kiln-fixed-rule" : "kiln");
+        find("sweep", table, UsesFixedRule(CatalogueTable(table)) ? "kiln-fixed-rule" : "kiln");
     const BenchRow* mc = find("sweep", table, "mc-hammersley");
     REQUIRE(kiln);
     REQUIRE(mc);

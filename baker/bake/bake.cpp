@@ -148,10 +148,11 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   // bound by re-integrating texels), never below the tolerance, plus float32 rounding (2^-24).
   double estimate = 0;
   for (size_t i = 0; i < n; ++i) estimate = std::max(estimate, errors[i]);
-  // A fixed-rule table declares the rule's bound (spec.h, kFixedRuleBound).
+  // A fixed-rule table declares its rule's bound, which each texel reports as its estimate
+  // (spec.h, kFixedRuleBound for GGX; fixed_rule_diffuse.h, kDiffuseRuleBound; ...).
   bool integrated = spec.Method().rfind("closed form", 0) != 0;
   if (UsesFixedRule(spec))
-    t.bakeError = kFixedRuleBound + 0x1p-24;
+    t.bakeError = estimate + 0x1p-24;
   else
     t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
   if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupRandomPoints, opt.threads);

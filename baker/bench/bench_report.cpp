@@ -20,7 +20,7 @@ Style MethodStyle(const std::string& method) {
   if (method == "kiln")
     return {"kiln, adaptive Gauss-Kronrod (label: tol)", "#d62728", Marker::Circle};
   if (method == "kiln-fixed-rule")
-    return {"kiln, fixed visible-normal rule (label: declared error)", "#d62728", Marker::Diamond};
+    return {"kiln, fixed rule (label: declared error)", "#d62728", Marker::Diamond};
   if (method == "mc-hammersley")
     return {"Monte Carlo, Hammersley + imp. sampling (samples)", "#1f77b4", Marker::Square};
   return {"Gauss-Legendre n x n, same map (points)", "#2ca02c", Marker::Triangle};

@@ -1,9 +1,12 @@
 // kiln bench: run time against error, side by side with the methods peers use.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
 #include "baker/bench/bench.h"
+#include "baker/bench/catalogue_report.h"
+#include "baker/io/atomic_write.h"
 #include "baker/cli/bench_commands.h"
 #include "baker/cli/commands.h"
 
@@ -18,6 +21,9 @@ void RegisterBench(CLI::App& app) {
     std::string out = "bench";
     bool quick = false;
     int threads = 0;
+    bool catalogue = false;
+    std::string only;
+    int samples = 6;
   };
   auto args = std::make_shared<Args>();
   sub->add_flag("--quick", args->quick, "small tables and sweeps: under a minute (CI smoke run)");
@@ -25,8 +31,34 @@ void RegisterBench(CLI::App& app) {
   sub->add_option("-j,--threads", args->threads,
                   "threads of the bakes and references (default: all cores); the baker-issue "
                   "comparison always uses 2");
-  sub->callback([args] {
+  sub->add_flag("--catalogue", args->catalogue,
+                "instead: bake every catalogue table as `kiln bake` does and report per table "
+                "the method, seconds, evaluations per texel and the bake error at sampled texels "
+                "against adaptive quadrature at 1e-10; writes DIR/catalogue.csv");
+  auto* oOnly = sub->add_option("--only", args->only,
+                                "with --catalogue: comma-separated table names (default: all)");
+  sub->add_option("--samples", args->samples, "with --catalogue: texels re-integrated per table")
+      ->capture_default_str();
+  sub->callback([args, oOnly] {
     CheckThreads("bench", args->threads);
+    if (args->catalogue) {
+      if (args->quick) throw std::invalid_argument("bench: give --catalogue or --quick, not both");
+      if (oOnly->count() && args->only.empty())
+        throw std::invalid_argument("bench: --only '' names no table");
+      if (args->samples < 1 || args->samples > 1000)
+        throw std::invalid_argument("bench: --samples must be in [1, 1000]");
+      CatalogueBenchOptions opt;
+      opt.threads = args->threads > 0 ? args->threads : 2;
+      opt.samples = args->samples;
+      if (!args->only.empty()) opt.only = splitList(args->only, ',');
+      std::string csv = CatalogueCsv(RunCatalogueBench(opt, stdout));
+      std::filesystem::create_directories(args->out);
+      writeAtomically(args->out + "/catalogue.csv",
+                      [&](const std::string& tmp) { writeBytes(tmp, csv); });
+      std::printf("wrote %s/catalogue.csv\n", args->out.c_str());
+      return;
+    }
+    if (oOnly->count()) throw std::invalid_argument("bench: --only needs --catalogue");
     BenchOptions opt;
     opt.scale = args->quick ? BenchScale::Quick : BenchScale::Full;
     opt.outDir = args->out;

@@ -32,10 +32,23 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// F = 1: A + B of the microfacet fixed rule is the albedo.
+/// A fixed rule for every microfacet model with one (visible-normal space) and for every diffuse
+/// model (light space).
+bool AlbedoUsesFixedRule(const TableSpec& spec) {
+  return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec);
+}
+
+/// Microfacet at F = 1: A + B of the microfacet fixed rule is the albedo. Diffuse: the diffuse
+/// fixed rule.
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
+}
+
+std::string FixedRuleMethod(const TableSpec& spec) {
+  return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
+                                       : MicrofacetFixedRuleMethod(spec);
 }
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
@@ -66,9 +79,9 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = MicrofacetFixedRuleApplies;
+    q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
-    q.fixedRuleMethod = MicrofacetFixedRuleMethod;
+    q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

@@ -1,7 +1,5 @@
 // albedo-avg: the average albedo E_avg = 2 int E(mu) mu dmu of any model, over roughness;
 // E_avg_rho, E_avg_rho2 for a model with a rho^2 term.
-#include "baker/integrate/fixed_rule_average.h"
-#include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/quantities/common.h"
 
 namespace kiln {
@@ -33,6 +31,15 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
+/// The albedo table whose E(mu) the average integrates: the albedo kind's spec of the same
+/// model, its default axes, the same tolerance.
+TableSpec AlbedoSpecFor(const TableSpec& spec) {
+  const QuantityInfo& albedo = Describe(Quantity::Albedo);
+  TableSpec e = albedo.makeSpec(spec.model, albedo.defaultAxes(spec.model));
+  e.tol = spec.tol;
+  return e;
+}
+
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
@@ -40,25 +47,17 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return RhoChannels(spec, AverageAlbedo(ModelAt(spec.model, x[0]), opt, stats));
 }
 
-/// GGX over roughness alone: the fixed cosine-average rule over the GGX visible-normal rule.
-bool GgxOverRoughness(const TableSpec& spec) {
-  return spec.model == "ggx" && spec.axes.size() == 1 && spec.axes[0].name == "roughness";
+/// Over roughness alone (the catalogue's axes): a fixed rule for every model (AverageFixedRule).
+bool OverRoughness(const TableSpec& spec) {
+  return spec.axes.size() == 1 && spec.axes[0].name == "roughness";
 }
 
-std::vector<double> FixedRule(const TableSpec&, const double* x, IntegrationStats& stats) {
-  // alpha as MakeModel("ggx") derives it (GgxFixedRuleAt, common.cpp).
-  double alpha = std::max(AlphaFromPerceptual(Clamp(x[0], 0.0, 1.0)), MinAlpha);
-  auto e = [&](double mu) {
-    std::array<double, 2> ab = FixedRuleGGXDFG(mu, alpha, &stats.evals);
-    return ab[0] + ab[1];
-  };
-  stats.errorEstimate = kFixedRuleBound;  // an average of values each within the bound
-  return {FixedCosineAverage(e, alpha)};
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  return AverageFixedRule(AlbedoSpecFor(spec), x, stats);
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
-  return GgxFixedRuleMethod(spec) + "; then 2 int E mu dmu by a fixed Gauss-Legendre rule (" +
-         std::to_string(kCosineAverageNodes) + " nodes per panel, panels graded from the layer)";
+  return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
 
 std::string Method(const TableSpec& spec) {
@@ -81,7 +80,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = GgxOverRoughness;
+    q.usesFixedRule = OverRoughness;
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;

@@ -4,8 +4,11 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/integrate/fixed_rule_average.h"
 #include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/fixed_rule_microfacet.h"
+
+#include "baker/integrate/fixed_rule_diffuse.h"
 #include "baker/models/specular.h"
 
 namespace kiln::quantity_detail {
@@ -184,6 +187,63 @@ std::string FresnelAlbedoFixedRuleMethod(const TableSpec&) {
          "integrand's analytic scales and at the Fresnel layer (o.h ~ sqrt(eta^2 - 1)), exact "
          "horizon cut; declared error " +
          Short(kFixedRuleBound) + " abs";
+}
+
+bool DiffuseFixedRuleApplies(const TableSpec& spec) {
+  const ModelInfo* m = FindModel(spec.model);
+  return m && !m->specular() && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
+         spec.axes[1].name == "roughness";
+}
+
+std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
+                                       IntegrationStats& stats) {
+  RhoParts e = FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
+  stats.errorEstimate = kDiffuseRuleBound;
+  return RhoChannels(spec, e);
+}
+
+std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
+  DiffuseRuleOptions opt;
+  bool graded = DiffuseRuleGradesGrazing(ModelAt(spec.model, 0));
+  return "light space: fixed tensor Gauss-Legendre rule over theta_l x phi (" +
+         std::to_string(opt.thetaNodes) + " x " + std::to_string(opt.phiNodes) +
+         " nodes per panel), panels split at theta_o, phi = pi/2 and towards the normal" +
+         (graded ? ", graded towards theta_o and phi = pi at the grazing scale" : "") +
+         "; declared error " + Short(kDiffuseRuleBound) + " abs";
+}
+
+std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
+                                     IntegrationStats& stats) {
+  const size_t dims = albedo.axes.size();
+  double x[4] = {0, 0, 0, 0};
+  double layer = 1, innerBound = 0;
+  for (size_t i = 1; i < dims; ++i) {
+    x[i] = rest[i - 1];
+    if (albedo.axes[i].name == "roughness")
+      layer = std::min(layer, std::max(AlphaFromPerceptual(Clamp(x[i], 0.0, 1.0)), MinAlpha));
+    if (albedo.axes[i].name == "eta") layer = std::min(layer, std::sqrt(std::abs(x[i] - 1)));
+  }
+  const bool fixed = UsesFixedRule(albedo);
+  auto e = [&](double mu) {
+    x[0] = mu;
+    IntegrationStats st;
+    std::vector<double> v = EvaluateSpec(albedo, x, st);
+    stats.evals += st.evals;
+    innerBound = std::max(innerBound,
+                          fixed ? st.errorEstimate : 10 * std::max(st.errorEstimate, albedo.tol));
+    return v;
+  };
+  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer)
+                                                   : FixedCosineAverageAngle(e, kMinAngleLayer);
+  stats.errorEstimate = innerBound + kCosineAverageBound;
+  return r;
+}
+
+std::string AverageFixedRuleMethod(const TableSpec& albedo) {
+  return "2 int E mu dmu by a fixed Gauss-Legendre rule in " +
+         std::string(IsSpecular(albedo.model) ? "mu" : "asin(mu)") + " (" +
+         std::to_string(kCosineAverageNodes) +
+         " nodes per panel, panels graded from the layer at mu = 0) of E by: " + albedo.Method();
 }
 
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,

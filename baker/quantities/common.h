@@ -81,6 +81,30 @@ std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double
 /// The method text of the exact-Fresnel GGX fixed rule.
 std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec);
 
+/// True when the diffuse fixed rule (integrate/fixed_rule_diffuse.h) applies: a light-space
+/// model, axes (mu, roughness).
+bool DiffuseFixedRuleApplies(const TableSpec& spec);
+
+/// E(mu) of the diffuse fixed rule at x = (mu, roughness) as the spec's channels; sets
+/// stats.errorEstimate to its bound (kDiffuseRuleBound).
+std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
+                                       IntegrationStats& stats);
+
+/// The method text of the diffuse fixed rule.
+std::string DiffuseFixedRuleMethod(const TableSpec& spec);
+
+/// E_avg = 2 int_0^1 E(mu) mu dmu (per channel) of the albedo table `albedo` (axis 0 is mu) at
+/// the coordinates `rest` of its other axes, by a fixed one-dimensional rule over mu
+/// (integrate/fixed_rule_average.h) of E as the albedo table bakes it (EvaluateSpec: its fixed
+/// rule where it has one, adaptive quadrature to albedo.tol otherwise). Microfacet models: the
+/// mu rule with the layer alpha (and sqrt(|eta - 1|) with an eta axis); diffuse models: the angle
+/// rule. Sets stats.errorEstimate to the declared bound: the inner one plus kCosineAverageBound.
+std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
+                                     IntegrationStats& stats);
+
+/// The method text of AverageFixedRule over `albedo`.
+std::string AverageFixedRuleMethod(const TableSpec& albedo);
+
 /// GGX with exact dielectric Fresnel at index eta: E(mu) (averaged: E_avg) at x, whose axes are
 /// (mu, roughness, eta) or (roughness, eta); an axis the planner fixed is read from params.
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,

@@ -29,6 +29,32 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return GgxFresnelAlbedoAt(spec, x, tol, true, stats);
 }
 
+/// The fresnel-albedo table whose E(mu) the average integrates: axes (mu, roughness, eta), the
+/// same tolerance.
+TableSpec AlbedoSpecFor(const TableSpec& spec) {
+  const QuantityInfo& albedo = Describe(Quantity::FresnelAlbedo);
+  TableSpec e = albedo.makeSpec("ggx", albedo.defaultAxes("ggx"));
+  e.tol = spec.tol;
+  return e;
+}
+
+/// Every axis layout (an axis the planner fixed is read from params): the fixed mu rule of
+/// AverageFixedRule over fresnel-albedo's E.
+bool Always(const TableSpec&) { return true; }
+
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  double rest[2] = {Param(spec, "roughness", 0), Param(spec, "eta", 1.5)};
+  for (size_t i = 0; i < spec.axes.size(); ++i) {
+    if (spec.axes[i].name == "roughness") rest[0] = x[i];
+    if (spec.axes[i].name == "eta") rest[1] = x[i];
+  }
+  return AverageFixedRule(AlbedoSpecFor(spec), rest, stats);
+}
+
+std::string FixedRuleMethod(const TableSpec& spec) {
+  return AverageFixedRuleMethod(AlbedoSpecFor(spec));
+}
+
 std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, true, spec.tol); }
 
 std::string SceneProblem(const ModelInfo& m) {
@@ -48,6 +74,9 @@ const QuantityInfo& FresnelAlbedoAvgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
+    q.usesFixedRule = Always;
+    q.fixedRule = FixedRule;
+    q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.method = Method;
     q.sceneKind = true;

@@ -1,0 +1,100 @@
+#include "baker/bench/catalogue_report.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "baker/bake/bake.h"
+#include "baker/tables/catalogue.h"
+
+namespace kiln {
+
+std::vector<size_t> SampledTexels(size_t n, int samples) {
+  std::vector<size_t> out;
+  if (n == 0 || samples <= 0) return out;
+  if (samples == 1 || n == 1) return {0};
+  for (int k = 0; k < samples; ++k) {
+    size_t i = static_cast<size_t>(std::llround(static_cast<double>(k) * (n - 1) / (samples - 1)));
+    if (out.empty() || out.back() != i) out.push_back(i);
+  }
+  return out;
+}
+
+std::vector<CatalogueBenchRow> RunCatalogueBench(const CatalogueBenchOptions& opt, std::FILE* log) {
+  std::vector<TableSpec> specs;
+  if (opt.only.empty())
+    specs = DefaultCatalogue({});
+  else
+    for (const std::string& name : opt.only) specs.push_back(CatalogueTable(name, {}));
+  if (log)
+    std::fprintf(log,
+                 "catalogue: %zu tables, %d threads; bake error at %d sampled texels per table "
+                 "against adaptive quadrature at %g\n%-40s %-11s %8s %9s %12s %9s %9s\n",
+                 specs.size(), opt.threads, opt.samples, opt.refTol, "table", "method", "texels",
+                 "seconds", "evals/texel", "declared", "sampled");
+  std::vector<CatalogueBenchRow> rows;
+  double totalSeconds = 0, worst = 0;
+  for (const TableSpec& spec : specs) {
+    BakeOptions bo;
+    bo.threads = opt.threads;
+    bo.measureLookupError = false;
+    BakeStats st;
+    Table t = BakeTable(spec, bo, &st);
+    CatalogueBenchRow r;
+    r.table = spec.name;
+    r.method = UsesFixedRule(spec)                          ? "fixed rule"
+               : spec.Method().rfind("closed form", 0) == 0 ? "closed form"
+                                                            : "adaptive";
+    r.texels = static_cast<long long>(spec.TexelCount());
+    r.seconds = st.seconds;
+    r.evalsPerTexel = r.texels > 0 ? static_cast<double>(st.evals) / r.texels : 0;
+    r.declared = t.bakeError;
+    const size_t nc = spec.channels.size();
+    auto t0 = std::chrono::steady_clock::now();
+    for (size_t i : SampledTexels(spec.TexelCount(), opt.samples)) {
+      double x[3];
+      NodeCoordinates(spec, i, x);
+      IntegrationStats is;
+      std::vector<double> ref = EvaluateSpec(spec, x, opt.refTol, is);
+      for (size_t c = 0; c < nc; ++c) {
+        double e = std::abs(static_cast<double>(t.data[i * nc + c]) - ref[c]) /
+                   std::max(1.0, std::abs(ref[c]));
+        if (!(e <= r.sampledError)) r.sampledError = e;
+      }
+      ++r.sampled;
+    }
+    r.referenceSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    totalSeconds += r.seconds;
+    worst = std::max(worst, r.sampledError);
+    if (log) {
+      std::fprintf(log, "%-40s %-11s %8lld %9.3f %12.0f %9.1e %9.1e\n", r.table.c_str(),
+                   r.method.c_str(), r.texels, r.seconds, r.evalsPerTexel, r.declared,
+                   r.sampledError);
+      std::fflush(log);
+    }
+    rows.push_back(r);
+  }
+  if (log)
+    std::fprintf(log,
+                 "catalogue: %zu tables, texels %.2f s in all; worst sampled bake error %.1e\n",
+                 rows.size(), totalSeconds, worst);
+  return rows;
+}
+
+std::string CatalogueCsv(const std::vector<CatalogueBenchRow>& rows) {
+  std::string s =
+      "table,method,texels,seconds,evals_per_texel,declared_bake_error,sampled_bake_error,"
+      "sampled_texels,reference_seconds\n";
+  char buf[256];
+  for (const CatalogueBenchRow& r : rows) {
+    std::snprintf(buf, sizeof buf, "%s,%s,%lld,%.6g,%.6g,%.3g,%.3g,%d,%.6g\n", r.table.c_str(),
+                  r.method.c_str(), r.texels, r.seconds, r.evalsPerTexel, r.declared,
+                  r.sampledError, r.sampled, r.referenceSeconds);
+    s += buf;
+  }
+  return s;
+}
+
+}  // namespace kiln

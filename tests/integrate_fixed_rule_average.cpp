@@ -1,0 +1,131 @@
+// The fixed average rules (baker/integrate/fixed_rule_average.h through AverageFixedRule, the bake
+// method of every *-avg table of the catalogue) against nested adaptive quadrature at 1e-10:
+// every catalogue average table at sampled points of its axes, ends included.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "baker/integrate/fixed_rule_average.h"
+#include "baker/integrate/quantities.h"
+#include "baker/tables/catalogue.h"
+#include "baker/tables/spec.h"
+
+using namespace kiln;
+
+namespace {
+
+/// The catalogue's tables of kind q.
+std::vector<TableSpec> TablesOf(Quantity q) {
+  std::vector<TableSpec> out;
+  for (const TableSpec& s : DefaultCatalogue({}))
+    if (s.quantity == q) out.push_back(s);
+  return out;
+}
+
+/// Worst |bake method - adaptive at 1e-10| (max over channels) of `spec` at the points `xs`.
+double WorstAgainstAdaptive(const TableSpec& spec, const std::vector<std::vector<double>>& xs,
+                            std::string& where) {
+  double worst = 0;
+  for (const std::vector<double>& x : xs) {
+    REQUIRE(UsesFixedRule(spec));
+    IntegrationStats fixedStats, refStats;
+    std::vector<double> got = EvaluateSpec(spec, x.data(), fixedStats);
+    std::vector<double> want = EvaluateSpec(spec, x.data(), 1e-10, refStats);
+    REQUIRE(got.size() == want.size());
+    for (size_t c = 0; c < got.size(); ++c)
+      if (!(std::abs(got[c] - want[c]) <= worst)) {
+        worst = std::abs(got[c] - want[c]);
+        where = "x0=" + std::to_string(x[0]) + (x.size() > 1 ? " x1=" + std::to_string(x[1]) : "");
+      }
+    CHECK(fixedStats.errorEstimate <= 1e-6);  // what the bake declares, below the hard limit
+  }
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "Every diffuse albedo-avg table's fixed rule is within 1e-7 of adaptive quadrature at 1e-10, "
+    "r = 0 and the top of the range included",
+    "[integrate][fixed-rule-average]") {
+  for (const TableSpec& spec : TablesOf(Quantity::AlbedoAvg)) {
+    if (FindModel(spec.model)->specular()) continue;
+    const AxisSpec& r = spec.axes[0];
+    std::vector<std::vector<double>> xs = {{r.lo}, {r.hi}};
+    if (r.size > 2) xs.push_back({(r.lo + r.hi) / 2});
+    std::string where;
+    double worst = WorstAgainstAdaptive(spec, xs, where);
+    std::printf("average fixed rule %-36s worst %.3g at %s\n", spec.name.c_str(), worst,
+                where.c_str());
+    INFO(spec.name << ": worst " << worst << " at " << where);
+    CHECK(worst <= 1e-7);
+  }
+}
+
+TEST_CASE(
+    "Every microfacet albedo-avg table's fixed rule is within 1e-7 of adaptive quadrature at "
+    "1e-10",
+    "[integrate][fixed-rule-average]") {
+  for (const TableSpec& spec : TablesOf(Quantity::AlbedoAvg)) {
+    if (!FindModel(spec.model)->specular()) continue;
+    std::string where;
+    double worst = WorstAgainstAdaptive(spec, {{0.05}, {0.5}, {1.0}}, where);
+    std::printf("average fixed rule %-36s worst %.3g at %s\n", spec.name.c_str(), worst,
+                where.c_str());
+    INFO(spec.name << ": worst " << worst << " at " << where);
+    CHECK(worst <= 1e-7);
+  }
+}
+
+TEST_CASE(
+    "ggx-fresnel-albedo-avg's fixed rule is within 1e-7 of adaptive quadrature at 1e-10, eta "
+    "near 1 included",
+    "[integrate][fixed-rule-average]") {
+  std::vector<TableSpec> t = TablesOf(Quantity::FresnelAlbedoAvg);
+  REQUIRE(t.size() == 1);
+  std::string where;
+  double worst = WorstAgainstAdaptive(t[0], {{0.1, 1.001}, {0.5, 1.5}, {1.0, 3.0}}, where);
+  std::printf("average fixed rule %-36s worst %.3g at %s\n", t[0].name.c_str(), worst,
+              where.c_str());
+  INFO("worst " << worst << " at " << where);
+  CHECK(worst <= 1e-7);
+}
+
+TEST_CASE(
+    "fresnel-dielectric-avg's fixed rule is within 1e-7 of adaptive quadrature at 1e-12 over "
+    "eta, both sides of 1 (total internal reflection below 1)",
+    "[integrate][fixed-rule-average]") {
+  std::vector<TableSpec> t = TablesOf(Quantity::FresnelDielectricAvg);
+  REQUIRE(t.size() == 1);
+  TableSpec spec = t[0];
+  double worst = 0, worstAt = 0;
+  for (double eta : {0.05, 0.3, 0.5, 0.8, 0.99, 0.9999, 1.0, 1.0 + 1e-9, 1.0001, 1.001, 1.01, 1.1,
+                     1.33, 1.5, 2.0, 2.5, 3.0, 10.0}) {
+    IntegrationStats st;
+    double got = EvaluateSpec(spec, &eta, st)[0];
+    IntegrationOptions opt;
+    opt.tol = 1e-12;
+    double want = FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0}, opt, st);
+    if (!(std::abs(got - want) <= worst)) {
+      worst = std::abs(got - want);
+      worstAt = eta;
+    }
+  }
+  std::printf("average fixed rule fresnel-dielectric-avg worst %.3g at eta=%g\n", worst, worstAt);
+  INFO("worst " << worst << " at eta " << worstAt);
+  CHECK(worst <= 1e-7);
+}
+
+TEST_CASE("The average rules are deterministic", "[integrate][fixed-rule-average]") {
+  for (const char* name : {"hammon-albedo-avg", "ggx-albedo-avg", "fresnel-dielectric-avg"}) {
+    TableSpec spec = CatalogueTable(name, {});
+    double x = spec.axes[0].name == "eta" ? 1.3 : 0.4;
+    IntegrationStats a, b;
+    std::vector<double> va = EvaluateSpec(spec, &x, a), vb = EvaluateSpec(spec, &x, b);
+    CHECK(va == vb);
+    CHECK(a.evals == b.evals);
+  }
+}
