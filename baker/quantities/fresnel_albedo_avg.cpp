@@ -29,6 +29,18 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return GgxFresnelAlbedoAt(spec, x, tol, true, stats);
 }
 
+/// Roughness 0: a smooth dielectric interface, E_avg = 2 int FrDielectric(mu, eta) mu dmu (the
+/// adaptive average of fresnel-dielectric-avg, to spec.tol).
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  IntegrationOptions opt;
+  opt.tol = spec.tol;
+  IntegrationStats stats;
+  const Fresnel F{Fresnel::Kind::Dielectric, 0, CoordinateOf(spec, x, "eta", 1.5), 0};
+  out = {FresnelAverage(F, opt, stats)};
+  return true;
+}
+
 std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, true, spec.tol); }
 
 std::string SceneProblem(const ModelInfo& m) {
@@ -49,6 +61,7 @@ const QuantityInfo& FresnelAlbedoAvgQuantity() {
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
     q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
     q.method = Method;
     q.sceneKind = true;
     q.sceneModel = "ggx";
