@@ -23,7 +23,6 @@ const char* const kModels[] = {"ggx", "ggx-separable", "beckmann", "beckmann-sep
                                "blinn-phong"};
 const double kMus[] = {0.0, 1e-13, 1e-10, 1e-6, 0.01, 0.5, 1.0};
 
-
 TableSpec Spec(Quantity q, const std::string& model) {
   const QuantityInfo& info = Describe(q);
   return info.makeSpec(model, info.defaultAxes(model));
@@ -110,18 +109,18 @@ TEST_CASE("kiln integrate --roughness 0 prints the smooth values", "[integrate][
   IntegrationStats st;
   IntegrationOptions opt;
   opt.tol = 1e-10;
-  CHECK(std::stod(one("albedo-avg --model ggx --roughness 0 --eta 1.5")) ==
-        Approx(FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, 1.5, 0}, opt, st))
-            .margin(1e-8));
+  CHECK(
+      std::stod(one("albedo-avg --model ggx --roughness 0 --eta 1.5")) ==
+      Approx(FresnelAverage(Fresnel{Fresnel::Kind::Dielectric, 0, 1.5, 0}, opt, st)).margin(1e-8));
   // r > 0 is the floored lobe, not the mirror
   CHECK(std::stod(one("albedo --model ggx-separable --mu 1e-13 --roughness 1e-7")) < 0.99);
 }
 
-TEST_CASE("A baked table's r = 0 row: smooth values from t_h on, the layer's limit below",
+TEST_CASE("A baked table's r = 0 row: smooth values from t_s on, the layer's limit below",
           "[integrate][smooth][bake]") {
   for (const char* model : {"ggx", "beckmann"}) {
     TableSpec spec = Spec(Quantity::Dfg, model);
-    spec.axes[0].size = 16;
+    spec.axes[0].size = 17;  // odd: t = 1/2 is a node
     spec.axes[1].size = 6;
     spec.tol = 1e-7;
     BakeOptions opt;
@@ -130,9 +129,9 @@ TEST_CASE("A baked table's r = 0 row: smooth values from t_h on, the layer's lim
     opt.threads = 2;
     Table t = BakeTable(spec, opt);
     const Axis mu = spec.axes[0].ToAxis();
-    const int th = 8;  // ceil(15 / 2): the first node at or above t = 1/2
-    REQUIRE(mu.collapsedStart() == th / 15.0);
-    for (int i = 0; i < 16; ++i) {
+    const int th = 8;  // floor(16 / 2): the node t = 1/2
+    REQUIRE(mu.collapsedStart() == 0.5);
+    for (int i = 0; i < 17; ++i) {
       double x[2];
       NodeCoordinates(spec, static_cast<size_t>(i), x);
       INFO(model << " node " << i << " mu " << x[0]);
@@ -142,15 +141,15 @@ TEST_CASE("A baked table's r = 0 row: smooth values from t_h on, the layer's lim
         double e[2];
         NodeEvaluationPoint(spec, static_cast<size_t>(i), e);
         CHECK(e[1] == 1e-6);  // ... and holds the layer's limit (alpha = 1e-12)
-        CHECK(e[0] == mu.unwarped(i / 15.0, 1e-12));
+        CHECK(e[0] == mu.unwarped(i / 16.0, 1e-12));
       } else {
         std::array<double, 2> ab = {1 - Pow5(1 - x[0]), Pow5(1 - x[0])};
         CHECK(t.data[2 * i] == static_cast<float>(ab[0]));
         CHECK(t.data[2 * i + 1] == static_cast<float>(ab[1]));
       }
     }
-    // A lookup at r = 0 reads only the smooth nodes: exact up to the linear blend of the mirror
-    // values, and exact at mu = 0.
+    // A lookup at r = 0 reads only the smooth nodes: exact at mu = 0 (the node t = 1/2 of an
+    // odd axis; an even one blends it with the next smooth node).
     float got[2];
     const double x0[2] = {0.0, 0.0};
     t.view().sample(x0, got);
@@ -167,7 +166,7 @@ TEST_CASE("The committed microfacet tables' r = 0 rows are the smooth values",
       Table t = loadTable(dir + model + kind + ".exr");
       TableSpec spec = SpecFromTable(t);
       LutView v = t.view();
-      const int n = v.axis[0].size, th = n / 2;
+      const int n = v.axis[0].size, th = (n - 1) / 2;
       double worstNode = 0, worstLookup = 0;
       for (int i = th; i < n; ++i) {  // the stored smooth nodes
         double x[2];

@@ -242,7 +242,7 @@ TEST_CASE("root4-layer: only on axis 0 of a view of 2+ axes; lookups at its node
   REQUIRE(view.valid());
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 9; ++i) {
-      // At r = 0 the layer collapsed: its nodes below t_h = 1/2 hold the limit r -> 0+ and are
+      // At r = 0 the layer collapsed: its nodes below t_s = 1/2 hold the limit r -> 0+ and are
       // read by lookups at 0 < r < r_1 only (runtime_layer_warps.cpp).
       if (j == 0 && i < 4) continue;
       const double x[2] = {mu.node(i, kiln::layerScale(0.0, 1.0, r.node(j))), r.node(j)};
@@ -267,8 +267,9 @@ TEST_CASE(
   int misplaced = 0;
   for (int j = 0; j < 128; ++j) {  // the catalogue's roughness nodes (sqrt warp)
     const double r = (j / 127.0) * (j / 127.0), c = kiln::layerScale(0.0, 1.0, r);
-    // (the collapsed row r = 0 places its nodes below t_h at mu = 0: runtime_layer_warps.cpp)
-    for (int i = c == 0.0 ? mu.size / 2 : 0; i < mu.size; ++i)
+    // (the collapsed row r = 0 places its nodes up to t = 1/2 at mu = 0 and the others by the
+    // closed form: runtime_layer_warps.cpp)
+    for (int i = c == 0.0 ? mu.size : 0; i < mu.size; ++i)
       misplaced += mu.texel(mu.node(i, c), c) != double(i);
   }
   CHECK(misplaced == 0);

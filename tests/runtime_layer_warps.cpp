@@ -26,25 +26,28 @@ TEST_CASE("layer scales: 0 exactly at the collapse point, floored at 1e-12 past 
   CHECK(etaLayerScale(1.0, 3.0, std::nextafter(1.0, 2.0)) == Approx(std::sqrt(2 * 0x1p-52)));
 }
 
-TEST_CASE("root4-layer at c = 0: y maps to t_h + (1 - t_h) y^(1/4), t_h the first node >= 1/2",
+TEST_CASE("root4-layer at c = 0: every y maps to (y^(1/4) + 1) / 2; smooth nodes from t_s on",
           "[runtime][layer]") {
-  for (int n : {3, 4, 9, 128, 129}) {
+  for (int n : {2, 3, 4, 9, 128, 129}) {
     const Axis a{0.0, 1.0, n, Warp::Root4Layer};
-    const double th = static_cast<double>(n / 2) / (n - 1);  // ceil((n - 1) / 2) / (n - 1)
+    const double ts = static_cast<double>((n - 1) / 2) / (n - 1);  // floor((n - 1) / 2) / (n - 1)
     INFO("N = " << n);
-    CHECK(a.collapsedStart() == th);
-    CHECK(th >= 0.5);
-    CHECK(a.warped(0.0, 0.0) == th);
-    CHECK(a.texel(0.0, 0.0) == n / 2);  // a node: a lookup at mu = 0, r = 0 reads one texel
+    CHECK(a.collapsedStart() == ts);
+    CHECK(ts <= 0.5);
+    CHECK(ts > 0.5 - 1.0 / (n - 1));  // the last node at or below 1/2
+    CHECK(a.warped(0.0, 0.0) == 0.5);
+    CHECK(a.texel(0.0, 0.0) >= (n - 1) / 2);  // a lookup at mu = 0, r = 0 reads nodes >= t_s
     CHECK(a.warped(1.0, 0.0) == 1.0);
     CHECK(a.unwarped(0.0, 0.0) == 0.0);
-    CHECK(a.unwarped(th, 0.0) == 0.0);
-    CHECK(a.unwarped(0.5 * th, 0.0) == 0.0);  // every t < t_h: the collapsed layer sits at lo
-    CHECK(a.warped(1e-40, 0.0) > th);  // every mu > 0 lies past the layer's nodes
+    CHECK(a.unwarped(0.5, 0.0) == 0.0);
+    CHECK(a.unwarped(0.25, 0.0) == 0.0);  // every t <= 1/2: the collapsed layer sits at lo
+    CHECK(a.warped(1e-40, 0.0) > 0.5);    // every mu > 0 lies in the outer half
     for (double y : {1e-12, 1e-6, 0.01, 0.3, 0.999}) {
       const double t = a.warped(y, 0.0);
-      CHECK(t > th);
+      CHECK(t == 0.5 * (std::sqrt(std::sqrt(y)) + 1));
       CHECK(a.unwarped(t, 0.0) == Approx(y).epsilon(1e-12));
+      // the limit c -> 0+ of the layered warp, for y > 0
+      CHECK(t == Approx(a.warped(y, 1e-300)).margin(1e-15));
     }
   }
   // r > 0 still maps mu = 0 to t = 0, and the round trip holds at the floor.

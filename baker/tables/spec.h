@@ -72,7 +72,8 @@ void PointAtWarped(const TableSpec& spec, const double* t, double* x);
 /// smallest axis-1 value that has a layer (root4-layer: r = 1e-6, alpha = 1e-12; layer-eta: the
 /// double next to eta = 1), at axis 0 placed with that scale; returns true for such a point.
 /// Lookups at 0 < r < r_1 (1 < eta < eta_1) then interpolate layer values with layer values,
-/// and a lookup at the collapse point itself reads only the nodes t >= collapsedStart().
+/// and a lookup at the collapse point itself reads only the nodes t >= collapsedStart() (which
+/// hold the smooth values, the value at mu = lo up to t = 1/2).
 bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x);
 
 /// Coordinates of texel `index` (axis 0 fastest) at the nodes of the spec's axes; a layered

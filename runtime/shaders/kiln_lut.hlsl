@@ -75,10 +75,7 @@ float kilnWarped(float x, KilnAxis a, float c) {
     if (a.warp == KILN_WARP_ANGLE) return 1.0 - acos(y) * 0.63661977236758134;  // 2 / pi
     if (a.warp == KILN_WARP_ROOT4_LAYER) {
         if (c > 0.0) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
-        // collapsed (r = 0): from t_h, the first node at or above 1/2, on
-        float n1 = max(a.size - 1.0, 1.0);
-        float th = a.size < 3.0 ? 0.5 : ceil(0.5 * n1) / n1;
-        return th + (1.0 - th) * sqrt(sqrt(y));
+        return 0.5 * (sqrt(sqrt(y)) + 1.0);  // collapsed (r = 0): the outer half
     }
     if (a.warp == KILN_WARP_LAYER_ETA) {
         if (c > 0.0) return y * (1.0 + c) / (y + c);

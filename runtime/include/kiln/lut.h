@@ -36,11 +36,12 @@ namespace kiln {
 ///           half its range at y ~ c, so about a quarter of the nodes lie inside the
 ///           layer at every roughness and the corner (mu, r) -> (0, 0) interpolates
 ///           like the rest of the table; the first keeps root4's nodes in the bulk.
-///           At r = 0 exactly the layer has collapsed (c = 0, the smooth limit): y maps to
-///           t = t_h + (1 - t_h) y^(1/4), y = 0 included, where t_h = ceil((N - 1) / 2) / (N - 1)
-///           is the first node at or above 1/2 (1/2 itself when N is odd). A lookup at r = 0
-///           reads only the nodes t >= t_h, which hold the smooth (mirror) values; the nodes
-///           t < t_h of that row hold the layer's limit r -> 0+ (for 0 < r < r_1).
+///           At r = 0 exactly the layer has collapsed (c = 0, the smooth limit): every y,
+///           y = 0 included, maps to the outer half t = (y^(1/4) + 1) / 2, the limit of the
+///           formula as c -> 0+ for y > 0. A lookup at r = 0 reads only the nodes from
+///           t_s = floor((N - 1) / 2) / (N - 1) on (the last node at or below 1/2), which hold
+///           the smooth (mirror) values, those at t <= 1/2 the value at mu = 0; the nodes
+///           t < t_s of that row hold the layer's limit r -> 0+, read by 0 < r < r_1.
 ///   LayerEta: t = y (1 + c) / (y + c), c = sqrt(|eta^2 - 1|) (floored at 1e-12), where eta
 ///           is the value of axis 1 (clamped to that axis). Only on axis 0 of a table of two
 ///           or more axes, a view-cosine axis before an index axis: as eta -> 1 a dielectric
@@ -85,8 +86,8 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
   if (name == nullptr) return false;
-  const Warp all[] = {Warp::Linear,     Warp::Sqrt,  Warp::Square,  Warp::Log,
-                      Warp::Root4,      Warp::Root4Layer, Warp::Angle, Warp::LayerEta};
+  const Warp all[] = {Warp::Linear, Warp::Sqrt,       Warp::Square, Warp::Log,
+                      Warp::Root4,  Warp::Root4Layer, Warp::Angle,  Warp::LayerEta};
   for (Warp candidate : all) {
     if (std::strcmp(name, warpName(candidate)) == 0) {
       warp = candidate;
@@ -175,24 +176,24 @@ struct Axis {
     return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
   }
 
-  /// Where a collapsed layer (c = 0) starts holding smooth values: t_h =
-  /// ceil((N - 1) / 2) / (N - 1), the first node at or above 1/2, for Root4Layer (1/2
-  /// when N < 3); 1 for LayerEta (only its last node); 0 for the other warps. With
-  /// c = 0, y = 0 maps to t_h (Root4Layer) and the nodes t < t_h are the layer's limit.
+  /// From which node on a collapsed layer (c = 0) holds smooth values: for
+  /// Root4Layer t_s = floor((N - 1) / 2) / (N - 1), the last node at or below 1/2
+  /// (1/2 when N is odd; the lookups at c = 0 map to t >= 1/2, so they read these
+  /// nodes only); 1 for LayerEta (its last node); 0 for the other warps. The nodes
+  /// t < t_s of a collapsed row hold the layer's limit.
   double collapsedStart() const noexcept {
     if (warp == Warp::LayerEta) return 1.0;
-    if (warp != Warp::Root4Layer) return 0.0;
-    if (size < 3) return 0.5;
+    if (warp != Warp::Root4Layer || size < 2) return 0.0;
     const int n1 = size - 1;
-    return static_cast<double>((n1 + 1) / 2) / static_cast<double>(n1);
+    return static_cast<double>(n1 / 2) / static_cast<double>(n1);
   }
 
   /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
-  /// (clamp to edge); a NaN x maps to t = 0 (to collapsedStart() for a
-  /// Root4Layer axis at c = 0).
+  /// (clamp to edge); a NaN x maps to t = 0 (to 1/2 for a Root4Layer axis at
+  /// c = 0).
   double warped(double x, double c = 1e-12) const noexcept {
     const bool collapsed = c == 0.0 && warp == Warp::Root4Layer;
-    if (!(x > lo)) return collapsed ? collapsedStart() : 0.0;  // also catches NaN
+    if (!(x > lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
     if (!(x < hi)) return 1.0;
     double t = 0.0;
     switch (warp) {
@@ -215,8 +216,7 @@ struct Axis {
         break;
       case Warp::Root4Layer:
         if (collapsed) {
-          const double th = collapsedStart();
-          t = th + (1.0 - th) * std::sqrt(std::sqrt((x - lo) / (hi - lo)));
+          t = 0.5 * (std::sqrt(std::sqrt((x - lo) / (hi - lo))) + 1.0);
         } else {
           t = layerWarp((x - lo) / (hi - lo), c);
         }
@@ -238,7 +238,7 @@ struct Axis {
   /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
   /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
   /// form: safeguarded Newton to the last bits (deterministic). A collapsed layer
-  /// (c = 0) returns lo for every t < collapsedStart() (Root4Layer: t <= t_h).
+  /// (c = 0) returns lo for every t <= 1/2 (Root4Layer) or t < 1 (LayerEta).
   double unwarped(double t, double c = 1e-12) const noexcept {
     if (!(t > 0.0)) return lo;
     if (!(t < 1.0)) return hi;
@@ -249,9 +249,8 @@ struct Axis {
       }
       case Warp::Root4Layer: {
         if (c == 0.0) {
-          const double th = collapsedStart();
-          if (!(t > th)) return lo;
-          const double s = (t - th) / (1.0 - th);
+          if (!(t > 0.5)) return lo;
+          const double s = 2.0 * t - 1.0;
           return lo + (hi - lo) * ((s * s) * (s * s));
         }
         // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
