@@ -135,6 +135,7 @@ TEST_CASE(
     INFO("r = " << r << ": fixed - adaptive = " << e - ref << " (" << fixed.evals << " vs "
                 << adaptive.evals << " evaluations)");
     CHECK(std::abs(e - ref) <= 1e-7);
+    if (r == 0) continue;  // the smooth limit: E_avg = 1 exactly, no integral on either side
     CHECK(fixed.evals * 20 < adaptive.evals);
   }
   TableSpec beckmann = avg;
