@@ -16,11 +16,13 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
   return {DefaultRoughnessAxis("ggx"), DefaultEtaAxis()};
 }
 
-/// 24 x 16: smooth in both.
+/// 19 x 20 (380 texels): smooth in both. 24 x 16 left 1.04e-3 of declared lookup error in the
+/// first eta cell (eta < 1.0089), 16 x 24 1.04e-3 at roughness 0.49; 19 x 20 declares 7.5e-4
+/// (the lookup error `kiln bake` measured, baking each size).
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<AxisSpec> axes = DefaultAxes("ggx");
-  axes[0].size = 24;
-  axes[1].size = 16;
+  axes[0].size = 19;
+  axes[1].size = 20;
   return {MakeSpec("ggx", axes)};
 }
 
