@@ -58,7 +58,7 @@ TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral 
     double worst = 0;
     for (size_t i = 0; i < n; i += (n > 60 ? 7 : 1)) {
       double x[3];
-      NodeCoordinates(spec, i, x);
+      NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats st;
       std::vector<double> exact = EvaluateSpec(
           spec, x,

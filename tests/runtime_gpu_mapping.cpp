@@ -65,8 +65,8 @@ double gpuSample(const LutView& lut, const double* x, int c) {
 
 TEST_CASE("hardware bilinear filtering at gpuCoord equals the CPU linear lookup",
           "[runtime][gpu]") {
-  const Warp warps[] = {Warp::Linear, Warp::Sqrt,       Warp::Square, Warp::Log,
-                        Warp::Root4,  Warp::Root4Layer, Warp::Angle};
+  const Warp warps[] = {Warp::Linear, Warp::Sqrt,  Warp::Square,     Warp::Log,
+                        Warp::Root4,  Warp::Angle, Warp::Root4Layer, Warp::LayerEta};
   std::mt19937 rng(2024);
   std::uniform_real_distribution<float> value(-1.0f, 1.0f);
   for (Warp warp : warps) {
@@ -83,6 +83,11 @@ TEST_CASE("hardware bilinear filtering at gpuCoord equals the CPU linear lookup"
       shapes = {
           {{lo, hi, 9, warp}, {0.0, 1.0, 6, Warp::Sqrt}},
           {{lo, hi, 7, warp}, {0.0, 0.3, 4, Warp::Linear}, {lo, hi, 5, Warp::Linear}},
+      };
+    if (warp == Warp::LayerEta)  // only on axis 0, before an index axis 1 (eta = 1 inside)
+      shapes = {
+          {{lo, hi, 9, warp}, {1.0, 3.0, 6, Warp::Sqrt}},
+          {{lo, hi, 7, warp}, {0.5, 2.0, 4, Warp::Linear}, {lo, hi, 5, Warp::Linear}},
       };
     for (const auto& axes : shapes) {
       LutView lut;

@@ -62,7 +62,13 @@ TEST_CASE("A lookup at a node of any committed table returns the stored texel ex
         x[d] = t.axes[d].axis.node(static_cast<int>(k % t.axes[d].axis.size));
         k /= t.axes[d].axis.size;
       }
-      x[0] = t.axes[0].axis.node(static_cast<int>(i % t.axes[0].axis.size), v.layerScaleAt(x));
+      const Axis& a0 = t.axes[0].axis;
+      const int i0 = static_cast<int>(i % a0.size);
+      // A collapsed layer (r = 0, eta = 1) places its nodes up to t = 1/2 (root4-layer) or
+      // below 1 (layer-eta) at mu = 0, which maps to one t: no lookup lands on the others, the
+      // layer's limit (lut.h), read by lookups next to the collapse point.
+      x[0] = a0.node(i0, v.layerScaleAt(x));
+      if (a0.texel(x[0], v.layerScaleAt(x)) != i0) continue;
       float lin[8], cub[8];
       v.sample(x, lin, Filter::Linear);
       v.sample(x, cub, Filter::Cubic);

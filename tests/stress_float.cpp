@@ -215,10 +215,9 @@ double InterpolateDouble(const std::vector<double>& nodes, size_t nc, size_t c,
                          const std::vector<TableAxis>& axes, const double* x) {
   int idx[3][2] = {}, dims = static_cast<int>(axes.size());
   double w[3][2] = {{1, 0}, {1, 0}, {1, 0}};
-  // A root4-layer axis 0 follows axis 1's value (lut.h).
-  double c0 = dims >= 2 && axes[0].axis.warp == Warp::Root4Layer
-                  ? layerScale(axes[1].axis.lo, axes[1].axis.hi, x[1])
-                  : 1e-12;
+  // A layered axis 0 (root4-layer, layer-eta) follows axis 1's value (lut.h).
+  double c0 =
+      dims >= 2 ? layerScaleFor(axes[0].axis.warp, axes[1].axis.lo, axes[1].axis.hi, x[1]) : 1e-12;
   for (int d = 0; d < dims; ++d) {
     const Axis& a = axes[d].axis;
     if (a.size <= 1) continue;
@@ -257,7 +256,7 @@ double FloatTableError(const TableSpec& spec, int points, uint64_t seed, std::st
   std::vector<double> nodes(n * nc);
   for (size_t i = 0; i < n; ++i) {
     double x[3];
-    NodeCoordinates(spec, i, x);
+    NodeEvaluationPoint(spec, i, x);  // a collapsed layer's nodes hold the layer's limit
     IntegrationStats st;
     std::vector<double> v = EvaluateSpec(spec, x, st);
     for (size_t c = 0; c < nc; ++c) {

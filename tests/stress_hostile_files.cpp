@@ -167,6 +167,8 @@ struct Fixture {
                     t.axes.resize(1);
                     t.data.resize(5);
                     t.axes[0].axis.size = 5;
+                    // (the good table's layer-eta mu axis needs a second axis to load at all)
+                    t.axes[0].axis.warp = Warp::Root4;
                   }),
         withTable("out-of-range roughness axis",
                   [](Table& t) {

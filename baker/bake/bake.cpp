@@ -127,7 +127,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t i = r.begin(); i != r.end(); ++i) {
                             double x[3];
-                            NodeCoordinates(spec, i, x);
+                            NodeEvaluationPoint(spec, i, x);
                             IntegrationStats st;
                             std::vector<double> v = EvaluateSpec(spec, x, st);
                             for (size_t c = 0; c < nc; ++c)

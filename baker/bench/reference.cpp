@@ -62,13 +62,8 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
   ref.nodes.assign(texels * nc, 0);
   long long evals = ParallelEvals(texels, opt.threads, [&](size_t i) {
     double x[3] = {0, 0, 0};
-    size_t k = i;
-    int i0 = static_cast<int>(k % axes[0].size);
-    for (size_t d = 0; d < dims; ++d) {
-      x[d] = axes[d].node(static_cast<int>(k % axes[d].size));
-      k /= axes[d].size;
-    }
-    x[0] = axes[0].node(i0, LayerScaleOf(spec, x));  // a root4-layer axis 0 follows axis 1
+    // (a layered axis 0 follows axis 1; a collapsed layer's nodes hold the layer's limit)
+    NodeEvaluationPoint(spec, i, x);
     IntegrationStats st;
     std::vector<double> v = EvaluateSpec(spec, x, opt.tol, st);
     for (size_t c = 0; c < nc; ++c) ref.nodes[i * nc + c] = v[c];

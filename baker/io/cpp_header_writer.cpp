@@ -116,6 +116,8 @@ std::string warpEnumerator(Warp warp) {
       return "kiln::Warp::Root4Layer";
     case Warp::Angle:
       return "kiln::Warp::Angle";
+    case Warp::LayerEta:
+      return "kiln::Warp::LayerEta";
     case Warp::Log:
       return "kiln::Warp::Log";
   }

@@ -18,6 +18,8 @@ ParamInfo K() { return {"k", 0, 100, 0, "extinction coefficient k (conductor Fre
 std::vector<ModelInfo> BuildModels() {
   using D = IntegrationDomain;
   const char* micro = "alpha = r^2 (Disney 2012)";
+  // The microfacet lobes: r = 0 is the smooth limit in their integrals (QuantityInfo::smoothLimit).
+  const char* lobe = "alpha = max(r^2, 1e-12) for r > 0 (Disney 2012); r = 0: the mirror, exact";
   const char* sigma = "sigma = r (slope std. deviation, radians)";
   std::vector<ParamInfo> spec = {Rough(1, "perceptual roughness r, alpha = r^2"), F0(1), Eta(),
                                  K()};
@@ -140,17 +142,16 @@ std::vector<ModelInfo> BuildModels() {
        true,
        false,
        D::Light},
-      {"ggx", "GGX, height-correlated Smith (Walter 2007, Heitz 2014)", micro, spec, true, true,
+      {"ggx", "GGX, height-correlated Smith (Walter 2007, Heitz 2014)", lobe, spec, true, true,
        true, false, D::HalfVector},
-      {"ggx-separable", "GGX, separable Smith", micro, spec, true, true, true, false,
+      {"ggx-separable", "GGX, separable Smith", lobe, spec, true, true, true, false, D::HalfVector},
+      {"ggx-vcavity", "GGX, Cook-Torrance V-cavity G", lobe, spec, true, true, true, false,
        D::HalfVector},
-      {"ggx-vcavity", "GGX, Cook-Torrance V-cavity G", micro, spec, true, true, true, false,
+      {"beckmann", "Beckmann, height-correlated Smith", lobe, spec, true, true, true, false,
        D::HalfVector},
-      {"beckmann", "Beckmann, height-correlated Smith", micro, spec, true, true, true, false,
+      {"beckmann-separable", "Beckmann, separable Smith", lobe, spec, true, true, true, false,
        D::HalfVector},
-      {"beckmann-separable", "Beckmann, separable Smith", micro, spec, true, true, true, false,
-       D::HalfVector},
-      {"blinn-phong", "Blinn-Phong NDF s = 2/alpha^2 - 2, Beckmann Smith height-correlated", micro,
+      {"blinn-phong", "Blinn-Phong NDF s = 2/alpha^2 - 2, Beckmann Smith height-correlated", lobe,
        spec, true, false, true, false, D::HalfVector},
       {"blinn-phong-normalized",
        "normalised Blinn-Phong (tri-Ace, Gotanda 2010)",

@@ -58,12 +58,21 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return RhoChannels(spec, DirectionalAlbedo(ModelAt(spec.model, x[1]), x[0], opt, stats));
 }
 
+/// Roughness 0 of a microfacet lobe: a mirror reflects all of it, E = F = 1 at every mu.
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  out = RhoChannels(spec, RhoParts{1.0, 0.0});
+  return true;
+}
+
 std::string Method(const TableSpec& spec) {
   return AdaptiveMethod(IsSpecular(spec.model), false, spec.tol);
 }
 
-/// Albedo tables use F = 1 and rho = 1 unless a Fresnel parameter is given explicitly.
+/// Albedo tables use F = 1 and rho = 1 unless a Fresnel parameter is given explicitly. At
+/// roughness 0 (a microfacet lobe's mirror) E = F(mu), the model's Fresnel term at o.h = mu.
 std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  if (SmoothRequest(req, p)) return Full17(FresnelFromParams(p)(Clamp(req.mu, 0.0, 1.0)));
   RhoParts e = DirectionalAlbedo(RequestModel(req, p), req.mu, RequestOptions(req), stats);
   return Full17(e.At(p.rho.value_or(1)));
 }
@@ -83,6 +92,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
     q.method = Method;
     q.sceneKind = true;
     q.sceneAxes = {{"roughness", "roughness"}};

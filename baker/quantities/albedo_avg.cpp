@@ -64,7 +64,21 @@ std::string Method(const TableSpec& spec) {
   return AdaptiveMethod(IsSpecular(spec.model), true, spec.tol);
 }
 
+/// Roughness 0 of a microfacet lobe: E = 1 at every mu, so E_avg = 1.
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  out = RhoChannels(spec, RhoParts{1.0, 0.0});
+  return true;
+}
+
+/// At roughness 0 (a microfacet lobe's mirror) E_avg = 2 int F(mu) mu dmu of the model's
+/// Fresnel term (1 for F = 1).
 std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  if (SmoothRequest(req, p)) {
+    Fresnel F = FresnelFromParams(p);
+    return Full17(F.kind == Fresnel::Kind::One ? 1.0
+                                               : FresnelAverage(F, RequestOptions(req), stats));
+  }
   RhoParts e = AverageAlbedo(RequestModel(req, p), RequestOptions(req), stats);
   return Full17(e.At(p.rho.value_or(1)));
 }
@@ -84,6 +98,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
     q.method = Method;
     q.sceneKind = true;
     q.sceneAxes = {{"roughness", "roughness"}};

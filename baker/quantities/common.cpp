@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
+#include <type_traits>
+#include <variant>
 #include <stdexcept>
 
 #include "baker/integrate/fixed_rule_average.h"
@@ -262,6 +265,41 @@ std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, d
   SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
   RhoParts e = averaged ? AverageAlbedo(m, opt, stats) : DirectionalAlbedo(m, mu, opt, stats);
   return {e.lin};
+}
+
+namespace {
+template <class T>
+struct IsMicrofacetLobe : std::false_type {};
+template <class D>
+struct IsMicrofacetLobe<MicrofacetBRDF<D>> : std::true_type {};
+}  // namespace
+
+bool HasSmoothLimit(const std::string& model) {
+  const ModelInfo* m = FindModel(model);
+  if (!m || !FindParam(*m, "roughness")) return false;
+  AnyModel a = MakeModel(model, {});
+  return std::visit([](const auto& v) { return IsMicrofacetLobe<std::decay_t<decltype(v)>>::value; },
+                    a);
+}
+
+double CoordinateOf(const TableSpec& spec, const double* x, const char* name, double def) {
+  for (size_t i = 0; i < spec.axes.size(); ++i)
+    if (spec.axes[i].name == name) return x[i];
+  return Param(spec, name, def);
+}
+
+bool OnSmoothLimit(const TableSpec& spec, const double* x) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return CoordinateOf(spec, x, "roughness", nan) == 0.0 && HasSmoothLimit(spec.model);
+}
+
+bool SmoothRequest(const IntegrateRequest& request, const ModelParams& params) {
+  return params.roughness && *params.roughness == 0.0 && HasSmoothLimit(request.model);
+}
+
+std::array<double, 2> SmoothDfg(double mu) {
+  const double b = Pow5(1 - Clamp(mu, 0.0, 1.0));
+  return {1 - b, b};
 }
 
 AnyModel RequestModel(const IntegrateRequest& request, const ModelParams& params) {

@@ -110,6 +110,26 @@ std::string AverageFixedRuleMethod(const TableSpec& albedo);
 std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, double tol,
                                        bool averaged, IntegrationStats& stats);
 
+/// True when `model` is a microfacet lobe with a roughness (MicrofacetBRDF: ggx, ggx-separable,
+/// ggx-vcavity, beckmann, beckmann-separable, blinn-phong): at roughness exactly 0 its alpha is 0,
+/// a mirror, whose integrals have exact values (the smooth limit). Diffuse models are not.
+bool HasSmoothLimit(const std::string& model);
+
+/// The value of the axis named `name` at x, else params[name] of the spec, else `def`.
+double CoordinateOf(const TableSpec& spec, const double* x, const char* name, double def);
+
+/// True when x lies on the smooth limit of `spec`: roughness exactly 0 (an axis or a param)
+/// and HasSmoothLimit(spec.model).
+bool OnSmoothLimit(const TableSpec& spec, const double* x);
+
+/// True when a `kiln integrate` request is on the smooth limit: --roughness exactly 0 and a
+/// model with HasSmoothLimit.
+bool SmoothRequest(const IntegrateRequest& request, const ModelParams& params);
+
+/// The smooth-limit DFG terms at view cosine mu: a mirror reflects at o.h = mu, so
+/// A = 1 - (1 - mu)^5 and B = (1 - mu)^5.
+std::array<double, 2> SmoothDfg(double mu);
+
 /// The model of a `kiln integrate` request: throws "integrate NAME: needs --model" when none.
 AnyModel RequestModel(const IntegrateRequest& request, const ModelParams& params);
 

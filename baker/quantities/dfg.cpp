@@ -38,6 +38,14 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
+/// Roughness 0 of a microfacet lobe: the mirror reflects at o.h = mu (SmoothDfg).
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  std::array<double, 2> ab = SmoothDfg(x[0]);
+  out = DfgLayoutValues(spec, ab[0], ab[1]);
+  return true;
+}
+
 std::string Method(const TableSpec& spec) {
   return AdaptiveMethod(IsSpecular(spec.model), false, spec.tol);
 }
@@ -47,6 +55,10 @@ std::string SceneProblem(const ModelInfo& m) {
 }
 
 std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  if (SmoothRequest(req, p)) {
+    std::array<double, 2> ab = SmoothDfg(req.mu);
+    return Full17(ab[0]) + " " + Full17(ab[1]);
+  }
   auto ab = SplitSumDFG(RequestModel(req, p), req.mu, RequestOptions(req), stats);
   return Full17(ab[0]) + " " + Full17(ab[1]);
 }
@@ -66,6 +78,7 @@ const QuantityInfo& DfgQuantity() {
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = MicrofacetFixedRuleMethod;
     q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
     q.method = Method;
     q.sceneKind = true;
     q.sceneAxes = {{"roughness", "roughness"}};

@@ -1,6 +1,7 @@
 // fresnel-albedo: GGX's directional albedo with exact dielectric Fresnel at index eta, over
 // (mu, roughness, eta) -> E (dielectric layering, transmission).
 #include "baker/bench/monte_carlo.h"
+#include "baker/models/fresnel.h"
 #include "baker/quantities/common.h"
 
 namespace kiln {
@@ -30,6 +31,13 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return GgxFresnelAlbedoAt(spec, x, tol, false, stats);
 }
 
+/// Roughness 0: a smooth dielectric interface, E = FrDielectric(mu, eta).
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  out = {FrDielectric(CoordinateOf(spec, x, "mu", 0), CoordinateOf(spec, x, "eta", 1.5))};
+  return true;
+}
+
 std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, false, spec.tol); }
 
 std::string SceneProblem(const ModelInfo& m) {
@@ -53,6 +61,7 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.fixedRule = FresnelAlbedoFixedRuleAt;
     q.fixedRuleMethod = FresnelAlbedoFixedRuleMethod;
     q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
     q.method = Method;
     q.sceneKind = true;
     q.sceneModel = "ggx";

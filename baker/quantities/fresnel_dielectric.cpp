@@ -12,13 +12,15 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
                {"F"}, {"exact unpolarized dielectric Fresnel reflectance"}, std::move(axes));
 }
 
+/// The mu axis follows the layer of width c = sqrt(|eta^2 - 1|) at mu = 0 (F -> G(mu / c) as
+/// eta -> 1; for eta < 1, c is the critical cosine): the layer-eta warp (kiln/lut.h).
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"mu", 0, 1, 128, Warp::Root4}, DefaultEtaAxis()};
+  return {{"mu", 0, 1, 128, Warp::LayerEta}, DefaultEtaAxis()};
 }
 
-/// 128 x 128: the layer of width sqrt(eta - 1) at mu = 0 needs the root4 mu axis and a dense eta.
+/// 128 x 128, mu layer-eta x eta sqrt: the eta = 1 row holds the layer's limit G(t / (1 - t)).
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
-  return {MakeSpec("none", {{"mu", 0, 1, 128, Warp::Root4}, {"eta", 1, 3, 128, Warp::Sqrt}})};
+  return {MakeSpec("none", {{"mu", 0, 1, 128, Warp::LayerEta}, {"eta", 1, 3, 128, Warp::Sqrt}})};
 }
 
 std::vector<double> Evaluate(const TableSpec&, const double* x, double, IntegrationStats& stats) {

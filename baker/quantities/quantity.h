@@ -65,6 +65,11 @@ struct QuantityInfo {
   /// Throws std::invalid_argument for a model the kind cannot take.
   std::vector<double> (*evaluate)(const TableSpec& spec, const double* x, double tol,
                                   IntegrationStats& stats) = nullptr;
+  /// The smooth limit: when x has roughness exactly 0 and the model is a microfacet lobe
+  /// (alpha = 0, a mirror or smooth interface), writes the exact channel values there to `out`
+  /// and returns true; otherwise returns false (null: never). EvaluateSpec asks it first, so
+  /// neither the fixed rules nor the adaptive integrator see roughness 0.
+  bool (*smoothLimit)(const TableSpec& spec, const double* x, std::vector<double>& out) = nullptr;
   /// The method text (kiln.method) of the fixed rule, when it applies.
   std::string (*fixedRuleMethod)(const TableSpec& spec) = nullptr;
   /// The method text (kiln.method) when the fixed rule does not apply.

@@ -1,5 +1,6 @@
 #include "baker/tables/spec.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -13,6 +14,17 @@ std::string G17(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
+}
+
+/// True when the table has a point on the smooth limit: its quantity's smoothLimit accepts the
+/// lower corner of its axes (roughness 0 when the roughness axis starts there).
+bool SmoothLimitApplies(const TableSpec& spec) {
+  const QuantityInfo& q = Describe(spec.quantity);
+  if (!q.smoothLimit || spec.axes.size() > 3) return false;
+  double x[3] = {0, 0, 0};
+  for (size_t d = 0; d < spec.axes.size(); ++d) x[d] = spec.axes[d].lo;
+  std::vector<double> values;
+  return q.smoothLimit(spec, x, values);
 }
 
 }  // namespace
@@ -34,6 +46,9 @@ std::string TableSpec::Hash() const {
                      ParamsText();
   // The fixed rule's own version (its tuned node counts): its tables re-bake when it changes.
   if (UsesFixedRule(*this)) text += "|fixed-rule:2";
+  // Roughness 0 as the smooth limit (QuantityInfo::smoothLimit) changed the texels of the tables
+  // it applies to, and only theirs: they re-bake, the rest of the catalogue keeps its hash.
+  if (SmoothLimitApplies(*this)) text += "|smooth-limit:1";
   for (const std::string& c : channels) text += "|c:" + c;
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
@@ -104,16 +119,33 @@ TableSpec SpecFromTable(const Table& table) {
 }
 
 double LayerScaleOf(const TableSpec& spec, const double* x) {
-  if (spec.axes.size() < 2 || spec.axes[0].warp != Warp::Root4Layer) return 1e-12;
-  return layerScale(spec.axes[1].lo, spec.axes[1].hi, x[1]);
+  if (spec.axes.size() < 2) return 1e-12;
+  return layerScaleFor(spec.axes[0].warp, spec.axes[1].lo, spec.axes[1].hi, x[1]);
 }
 
 void PointAtWarped(const TableSpec& spec, const double* t, double* x) {
-  // A root4-layer axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative).
-  const bool layered = !spec.axes.empty() && spec.axes[0].warp == Warp::Root4Layer;
+  // A layered axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative).
+  const bool layered = spec.axes.size() >= 2 && isLayerWarp(spec.axes[0].warp);
   for (size_t d = 0; d < spec.axes.size(); ++d)
     if (d != 0 || !layered) x[d] = spec.axes[d].ToAxis().unwarped(t[d]);
   if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t[0], LayerScaleOf(spec, x));
+}
+
+bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x) {
+  PointAtWarped(spec, t, x);
+  if (spec.axes.size() < 2 || !isLayerWarp(spec.axes[0].warp)) return false;
+  const Axis a0 = spec.axes[0].ToAxis();
+  if (LayerScaleOf(spec, x) != 0.0 || !(t[0] < a0.collapsedStart())) return false;
+  // The smallest value of axis 1 past the collapse point where the layer has a scale: r = 1e-6
+  // (c = alpha = 1e-12, the floor every r in (0, 1e-6] shares), or the double next to eta = 1
+  // (c = 2.1e-8; F there is the layer's limit G(mu / c) to ~1e-8, FrDielectric has no
+  // cancellation).
+  if (spec.axes[0].warp == Warp::Root4Layer)
+    x[1] = 1e-6;
+  else
+    x[1] = std::nextafter(x[1], x[1] < spec.axes[1].hi ? spec.axes[1].hi : spec.axes[1].lo);
+  x[0] = a0.unwarped(t[0], LayerScaleOf(spec, x));
+  return true;
 }
 
 void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
@@ -128,19 +160,36 @@ void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
   PointAtWarped(spec, t, x);
 }
 
+void NodeEvaluationPoint(const TableSpec& spec, size_t index, double* x) {
+  double t[3] = {0, 0, 0};
+  for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) {
+    const AxisSpec& a = spec.axes[d];
+    int i = static_cast<int>(index % a.size);
+    t[d] = a.size > 1 ? static_cast<double>(i) / static_cast<double>(a.size - 1) : 0.0;
+    index /= a.size;
+  }
+  LayerLimitPointAtWarped(spec, t, x);
+}
+
 bool UsesFixedRule(const TableSpec& spec) {
   const QuantityInfo& q = Describe(spec.quantity);
   return q.usesFixedRule && q.usesFixedRule(spec);
 }
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  const QuantityInfo& q = Describe(spec.quantity);
+  std::vector<double> smooth;
+  if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
   if (UsesFixedRule(spec)) return Describe(spec.quantity).fixedRule(spec, x, stats);
   return EvaluateSpec(spec, x, spec.tol, stats);
 }
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
                                  IntegrationStats& stats) {
-  return Describe(spec.quantity).evaluate(spec, x, tol, stats);
+  const QuantityInfo& q = Describe(spec.quantity);
+  std::vector<double> smooth;
+  if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
+  return q.evaluate(spec, x, tol, stats);
 }
 
 }  // namespace kiln

@@ -55,8 +55,9 @@ TableSpec SpecFromTable(const Table& table);
 /// estimators fill in the rest.
 Table TableShell(const TableSpec& spec, const std::string& generator, const std::string& method);
 
-/// The layer scale of a root4-layer axis 0 at the point x (kiln::layerScale of axis 1's value;
-/// 1e-12 for any other warp).
+/// The layer scale of a layered axis 0 (root4-layer, layer-eta) at the point x
+/// (kiln::layerScaleFor of axis 1's value: 0 where the layer collapses, at roughness 0 or
+/// eta = 1 exactly; 1e-12 for any other warp).
 double LayerScaleOf(const TableSpec& spec, const double* x);
 
 /// The point x (axis units, one coordinate per axis) at warped coordinates t in [0, 1] per axis:
@@ -65,9 +66,24 @@ double LayerScaleOf(const TableSpec& spec, const double* x);
 /// lookup-error points and the verify search all go through it).
 void PointAtWarped(const TableSpec& spec, const double* t, double* x);
 
-/// Coordinates of texel `index` (axis 0 fastest) at the nodes of the spec's axes; a root4-layer
-/// axis 0 places its nodes by the value of axis 1 (lut.h, Warp::Root4Layer).
+/// Where the value stored for warped coordinates t is evaluated: PointAtWarped, except where
+/// the layer of a layered axis 0 has collapsed (layer scale 0: roughness 0, eta = 1) and t[0]
+/// lies below Axis::collapsedStart(). There the node holds the layer's limit, the value at the
+/// smallest axis-1 value that has a layer (root4-layer: r = 1e-6, alpha = 1e-12; layer-eta: the
+/// double next to eta = 1), at axis 0 placed with that scale; returns true for such a point.
+/// Lookups at 0 < r < r_1 (1 < eta < eta_1) then interpolate layer values with layer values,
+/// and a lookup at the collapse point itself reads only the nodes t >= collapsedStart() (which
+/// hold the smooth values, the value at mu = lo up to t = 1/2).
+bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x);
+
+/// Coordinates of texel `index` (axis 0 fastest) at the nodes of the spec's axes; a layered
+/// axis 0 places its nodes by the value of axis 1 (lut.h, Warp::Root4Layer, Warp::LayerEta).
+/// A lookup at these coordinates returns the texel.
 void NodeCoordinates(const TableSpec& spec, size_t index, double* x);
+
+/// Where the bake evaluates texel `index`: NodeCoordinates, moved to the layer's limit where
+/// the layer collapsed (LayerLimitPointAtWarped).
+void NodeEvaluationPoint(const TableSpec& spec, size_t index, double* x);
 
 /// True when the bake computes the table's texels with its quantity's fixed rule (today GGX dfg
 /// and albedo, integrate/fixed_rule_dfg.h) instead of adaptive quadrature.
@@ -80,12 +96,13 @@ bool UsesFixedRule(const TableSpec& spec);
 constexpr double kFixedRuleBound = 6e-7;
 
 /// The channel values of `spec` at a point x (one coordinate per axis, axis order) by the
-/// table's own bake method: the fixed rule where UsesFixedRule, else adaptive quadrature to
-/// spec.tol. Throws std::invalid_argument for an unknown model.
+/// table's own bake method: the quantity's smooth limit where it applies (roughness exactly 0
+/// of a microfacet model, QuantityInfo::smoothLimit), else the fixed rule where UsesFixedRule,
+/// else adaptive quadrature to spec.tol. Throws std::invalid_argument for an unknown model.
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats);
 
 /// The same values by adaptive quadrature to `tol`, whatever the bake method (the independent
-/// references of the bake and lookup error checks).
+/// references of the bake and lookup error checks); the smooth limit is exact at roughness 0.
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
                                  IntegrationStats& stats);
 

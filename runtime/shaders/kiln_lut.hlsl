@@ -11,7 +11,9 @@
 //
 // Mapping (the same as kiln::Axis::gpuCoord in kiln/lut.h):
 //     t = warp((x - lo) / (hi - lo))   (log: t = ln(x / lo) / ln(hi / lo)), x clamped to [lo, hi]
-//                                      (root4-layer: also of c = max(x1^2, 1e-12), x1 axis 1's value)
+//                                      (root4-layer: also of c = max(x1^2, 1e-12), c = 0 at x1 = 0;
+//                                       layer-eta: of c = sqrt(|x1^2 - 1|), c = 0 at x1 = 1;
+//                                       x1 axis 1's value, kilnLayerScale)
 //     s = t * (size - 1)               continuous node index
 //     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
 //
@@ -34,6 +36,7 @@
 #define KILN_WARP_ROOT4 4
 #define KILN_WARP_ROOT4_LAYER 5  // axis 0 only: follows the value of axis 1 (kiln/lut.h)
 #define KILN_WARP_ANGLE 6
+#define KILN_WARP_LAYER_ETA 7  // axis 0 only: follows the index of axis 1 (kiln/lut.h)
 
 struct KilnAxis {
     float lo;    // kiln.axis<i>.lo
@@ -42,11 +45,22 @@ struct KilnAxis {
     int warp;    // KILN_WARP_* from kiln.axis<i>.warp
 };
 
-// Layer scale c = max(r^2, 1e-12) of a root4-layer axis 0, r the value of axis 1
-// clamped to that axis.
+// Layer scale of a root4-layer axis 0, r the value of axis 1 clamped to that
+// axis: c = max(r^2, 1e-12) for r > 0, and c = 0 at r = 0 exactly (the smooth limit).
 float kilnLayerScale(float r, KilnAxis a1) {
     float rc = clamp(r, a1.lo, a1.hi);
-    return max(rc * rc, 1e-12);
+    return rc > 0.0 ? max(rc * rc, 1e-12) : 0.0;
+}
+
+// Layer scale of axis 0 (a0) at the value x1 of axis 1 (a1): kilnLayerScale for
+// root4-layer; c = max(sqrt(|x1^2 - 1|), 1e-12), 0 at x1 = 1 exactly, for
+// layer-eta; ignored (1e-12) for the other warps.
+float kilnLayerScale(float x1, KilnAxis a0, KilnAxis a1) {
+    if (a0.warp == KILN_WARP_ROOT4_LAYER) return kilnLayerScale(x1, a1);
+    if (a0.warp != KILN_WARP_LAYER_ETA) return 1e-12;
+    float ec = clamp(x1, a1.lo, a1.hi);
+    float c = sqrt(abs((ec - 1.0) * (ec + 1.0)));
+    return c > 0.0 ? max(c, 1e-12) : 0.0;
 }
 
 // Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi]. c: the layer
@@ -59,7 +73,14 @@ float kilnWarped(float x, KilnAxis a, float c) {
     if (a.warp == KILN_WARP_SQUARE) return y * y;
     if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
     if (a.warp == KILN_WARP_ANGLE) return 1.0 - acos(y) * 0.63661977236758134;  // 2 / pi
-    if (a.warp == KILN_WARP_ROOT4_LAYER) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
+    if (a.warp == KILN_WARP_ROOT4_LAYER) {
+        if (c > 0.0) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
+        return 0.5 * (sqrt(sqrt(y)) + 1.0);  // collapsed (r = 0): the outer half
+    }
+    if (a.warp == KILN_WARP_LAYER_ETA) {
+        if (c > 0.0) return y * (1.0 + c) / (y + c);
+        return y > 0.0 ? 1.0 : 0.0;  // collapsed (eta = 1)
+    }
     return y;
 }
 
@@ -87,7 +108,7 @@ float4 kilnSample1D(Texture2D<float4> lut, SamplerState linearClamp, float x, Ki
 // 2D table at x = (x0, x1): one hardware bilinear fetch.
 float4 kilnSample2D(Texture2D<float4> lut, SamplerState linearClamp, float2 x, KilnAxis a0,
                     KilnAxis a1) {
-    return lut.SampleLevel(linearClamp, float2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a1)), kilnCoord(x.y, a1)), 0.0);
+    return lut.SampleLevel(linearClamp, float2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1)), kilnCoord(x.y, a1)), 0.0);
 }
 
 // 3D table (slices along axis 2 stacked vertically) at x = (x0, x1, x2): a
@@ -96,7 +117,7 @@ float4 kilnSample2D(Texture2D<float4> lut, SamplerState linearClamp, float2 x, K
 // of the slice's first and last rows.
 float4 kilnSample3D(Texture2D<float4> lut, SamplerState linearClamp, float3 x, KilnAxis a0,
                     KilnAxis a1, KilnAxis a2) {
-    float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a1));
+    float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1));
     float s1 = kilnTexel(x.y, a1);
     float s2 = kilnTexel(x.z, a2);
     float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
@@ -124,12 +145,12 @@ float4 kilnBlendExact(Texture2D<float4> lut, float2 p) {
 
 // As kilnSample2D, with the blend in full float precision.
 float4 kilnSample2DExact(Texture2D<float4> lut, float2 x, KilnAxis a0, KilnAxis a1) {
-    return kilnBlendExact(lut, float2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a1)), kilnTexel(x.y, a1)));
+    return kilnBlendExact(lut, float2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1)), kilnTexel(x.y, a1)));
 }
 
 // As kilnSample3D, with the blends in full float precision.
 float4 kilnSample3DExact(Texture2D<float4> lut, float3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a1));
+    float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1));
     float s1 = kilnTexel(x.y, a1);
     float s2 = kilnTexel(x.z, a2);
     float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));

@@ -146,7 +146,7 @@ void readAttributes(const Imf::Header& h, Table& table) {
     const std::string warp = requireString(h, prefix + "warp");
     if (!warpFromName(warp.c_str(), a.axis.warp))
       throw Refusal(prefix + "warp is '" + warp +
-                    "', not one of linear, sqrt, square, log, root4, root4-layer, angle");
+                    "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta");
     std::string axisIssue = axisProblem(a.axis);
     if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
     if (!axisIssue.empty())

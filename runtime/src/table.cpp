@@ -76,9 +76,9 @@ bool validateTable(const Table& table, std::string& problem) {
       problem = label + ": " + axisIssue;
       return false;
     }
-    if (a.axis.warp == Warp::Root4Layer && (d != 0 || dims < 2)) {
-      problem = label +
-                ": the root4-layer warp couples axis 0 to axis 1; it is allowed "
+    if (isLayerWarp(a.axis.warp) && (d != 0 || dims < 2)) {
+      problem = label + ": the " + warpName(a.axis.warp) +
+                " warp couples axis 0 to axis 1; it is allowed "
                 "only on axis 0 of a table with two or more axes";
       return false;
     }

@@ -28,20 +28,36 @@ namespace kiln {
 ///   Log:    t = ln(x / lo) / ln(hi / lo)  (nodes uniform in ln x; needs 0 < lo < hi)
 ///   Root4:  t = y^(1/4)  (nodes very dense near lo: a layer of width w at lo is
 ///                         resolved once w^(1/4) >> 4 / N)
-///   Root4Layer: t = (y^(1/4) + y (1 + c) / (y + c)) / 2, c = max(r^2, 1e-12), where r
-///           is the value of axis 1 (clamped to that axis). Only on axis 0 of a table
+///   Root4Layer: t = (y^(1/4) + y (1 + c) / (y + c)) / 2, c = max(r^2, 1e-12) for r > 0,
+///           where r is the value of axis 1 (clamped to that axis). Only on axis 0 of a table
 ///           of two or more axes, a view-cosine axis before a roughness axis: near
 ///           grazing a microfacet albedo is a function of mu / alpha (alpha = r^2), a
 ///           layer whose width goes to 0 with the roughness. The second term reaches
 ///           half its range at y ~ c, so about a quarter of the nodes lie inside the
 ///           layer at every roughness and the corner (mu, r) -> (0, 0) interpolates
 ///           like the rest of the table; the first keeps root4's nodes in the bulk.
+///           At r = 0 exactly the layer has collapsed (c = 0, the smooth limit): every y,
+///           y = 0 included, maps to the outer half t = (y^(1/4) + 1) / 2, the limit of the
+///           formula as c -> 0+ for y > 0. A lookup at r = 0 reads only the nodes from
+///           t_s = floor((N - 1) / 2) / (N - 1) on (the last node at or below 1/2), which hold
+///           the smooth (mirror) values, those at t <= 1/2 the value at mu = 0; the nodes
+///           t < t_s of that row hold the layer's limit r -> 0+, read by 0 < r < r_1.
+///   LayerEta: t = y (1 + c) / (y + c), c = sqrt(|eta^2 - 1|) (floored at 1e-12), where eta
+///           is the value of axis 1 (clamped to that axis). Only on axis 0 of a table of two
+///           or more axes, a view-cosine axis before an index axis: as eta -> 1 a dielectric
+///           Fresnel term is G(mu / c), a layer of width c (for eta < 1, c is the cosine of
+///           the critical angle, the kink of total reflection). Half of the nodes lie inside
+///           mu < c at every eta, and mu / c at a fixed t tends to t / (1 - t) as c -> 0, so
+///           rows of neighbouring eta interpolate like values of one function. At eta = 1
+///           exactly (c = 0) y = 0 maps to t = 0 and every y > 0 to t = 1: the nodes t < 1 of
+///           that row hold the layer's limit G(t / (1 - t)), the last node the value at mu = 1.
 ///   Angle:  t = 1 - (2 / pi) acos(y)  (nodes uniform in the angle theta = acos(y):
 ///                         a function of theta_o, smooth in the angle, has a square-root
 ///                         point at y = 1 (mu = cos theta) that this resolves)
-enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle };
+enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle, LayerEta };
 
-/// The file/CLI name of a warp: "linear", "sqrt", "square", "log" or "root4".
+/// The file/CLI name of a warp: "linear", "sqrt", "square", "log", "root4", "root4-layer",
+/// "angle" or "layer-eta".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
   switch (warp) {
@@ -59,6 +75,8 @@ inline const char* warpName(Warp warp) noexcept {
       return "root4-layer";
     case Warp::Angle:
       return "angle";
+    case Warp::LayerEta:
+      return "layer-eta";
   }
   return "unknown";
 }
@@ -69,7 +87,7 @@ inline const char* warpName(Warp warp) noexcept {
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
   if (name == nullptr) return false;
   const Warp all[] = {Warp::Linear, Warp::Sqrt,       Warp::Square, Warp::Log,
-                      Warp::Root4,  Warp::Root4Layer, Warp::Angle};
+                      Warp::Root4,  Warp::Root4Layer, Warp::Angle,  Warp::LayerEta};
   for (Warp candidate : all) {
     if (std::strcmp(name, warpName(candidate)) == 0) {
       warp = candidate;
@@ -91,12 +109,39 @@ enum class Filter { Linear, Cubic };
 /// pi, for the Angle warp.
 constexpr double kPi = 3.14159265358979323846;
 
-/// The layer scale c = max(r^2, 1e-12) of the Root4Layer warp, from the value r
-/// of the axis it couples to (clamped to that axis; NaN maps to its lo).
+/// The layer scale of the Root4Layer warp, from the value r of the axis it couples
+/// to (clamped to that axis; NaN maps to its lo): c = max(r^2, 1e-12) for r > 0, and
+/// c = 0 at r = 0 exactly (the collapsed layer, the smooth limit).
 inline double layerScale(double lo, double hi, double r) noexcept {
   const double rc = !(r > lo) ? lo : (!(r < hi) ? hi : r);
+  if (rc == 0.0) return 0.0;
   const double c = rc * rc;
   return c > 1e-12 ? c : 1e-12;
+}
+
+/// The layer scale of the LayerEta warp, from the value eta of the axis it couples
+/// to (clamped to that axis; NaN maps to its lo): c = max(sqrt(|eta^2 - 1|), 1e-12)
+/// for eta != 1, and c = 0 at eta = 1 exactly (no interface: the layer collapsed).
+inline double etaLayerScale(double lo, double hi, double eta) noexcept {
+  const double ec = !(eta > lo) ? lo : (!(eta < hi) ? hi : eta);
+  const double c = std::sqrt(std::fabs((ec - 1.0) * (ec + 1.0)));
+  if (c == 0.0) return 0.0;
+  return c > 1e-12 ? c : 1e-12;
+}
+
+/// True for the warps that read another axis (Root4Layer, LayerEta): only on axis 0
+/// of a table of two or more axes, coupled to axis 1.
+inline bool isLayerWarp(Warp warp) noexcept {
+  return warp == Warp::Root4Layer || warp == Warp::LayerEta;
+}
+
+/// The layer scale of an axis 0 with warp `warp0` at the value x1 of axis 1 (`axis1`'s
+/// lo and hi clamp it): layerScale for Root4Layer, etaLayerScale for LayerEta, 1e-12
+/// (ignored) for the other warps.
+inline double layerScaleFor(Warp warp0, double lo1, double hi1, double x1) noexcept {
+  if (warp0 == Warp::Root4Layer) return layerScale(lo1, hi1, x1);
+  if (warp0 == Warp::LayerEta) return etaLayerScale(lo1, hi1, x1);
+  return 1e-12;
 }
 
 /// One axis of a table: `size` nodes over [lo, hi] placed by `warp`.
@@ -126,15 +171,29 @@ struct Axis {
     return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c);
   }
 
-  /// The Root4Layer warp of y in [0, 1] (see Warp).
+  /// The Root4Layer warp of y in [0, 1] (see Warp), c > 0.
   static double layerWarp(double y, double c) noexcept {
     return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
   }
 
+  /// From which node on a collapsed layer (c = 0) holds smooth values: for
+  /// Root4Layer t_s = floor((N - 1) / 2) / (N - 1), the last node at or below 1/2
+  /// (1/2 when N is odd; the lookups at c = 0 map to t >= 1/2, so they read these
+  /// nodes only); 1 for LayerEta (its last node); 0 for the other warps. The nodes
+  /// t < t_s of a collapsed row hold the layer's limit.
+  double collapsedStart() const noexcept {
+    if (warp == Warp::LayerEta) return 1.0;
+    if (warp != Warp::Root4Layer || size < 2) return 0.0;
+    const int n1 = size - 1;
+    return static_cast<double>(n1 / 2) / static_cast<double>(n1);
+  }
+
   /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
-  /// (clamp to edge); a NaN x maps to t = 0.
+  /// (clamp to edge); a NaN x maps to t = 0 (to 1/2 for a Root4Layer axis at
+  /// c = 0).
   double warped(double x, double c = 1e-12) const noexcept {
-    if (!(x > lo)) return 0.0;  // also catches NaN
+    const bool collapsed = c == 0.0 && warp == Warp::Root4Layer;
+    if (!(x > lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
     if (!(x < hi)) return 1.0;
     double t = 0.0;
     switch (warp) {
@@ -156,8 +215,18 @@ struct Axis {
         t = std::sqrt(std::sqrt((x - lo) / (hi - lo)));
         break;
       case Warp::Root4Layer:
-        t = layerWarp((x - lo) / (hi - lo), c);
+        if (collapsed) {
+          t = 0.5 * (std::sqrt(std::sqrt((x - lo) / (hi - lo))) + 1.0);
+        } else {
+          t = layerWarp((x - lo) / (hi - lo), c);
+        }
         break;
+      case Warp::LayerEta: {
+        if (!(c > 0.0)) return 1.0;  // collapsed: every x > lo
+        const double y = (x - lo) / (hi - lo);
+        t = y * (1.0 + c) / (y + c);
+        break;
+      }
       case Warp::Angle:
         t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi);
         break;
@@ -168,12 +237,22 @@ struct Axis {
 
   /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
   /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
-  /// form: safeguarded Newton to the last bits (deterministic).
+  /// form: safeguarded Newton to the last bits (deterministic). A collapsed layer
+  /// (c = 0) returns lo for every t <= 1/2 (Root4Layer) or t < 1 (LayerEta).
   double unwarped(double t, double c = 1e-12) const noexcept {
     if (!(t > 0.0)) return lo;
     if (!(t < 1.0)) return hi;
     switch (warp) {
+      case Warp::LayerEta: {
+        if (!(c > 0.0)) return lo;
+        return lo + (hi - lo) * (c * t / (1.0 + c - t));
+      }
       case Warp::Root4Layer: {
+        if (c == 0.0) {
+          if (!(t > 0.5)) return lo;
+          const double s = 2.0 * t - 1.0;
+          return lo + (hi - lo) * ((s * s) * (s * s));
+        }
         // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
         // smooth with slope >= 1/2, safeguarded as rtsafe (Numerical Recipes 9.4): a
         // bisection of the bracket [sa, sb] whenever a step would leave it or would not
@@ -261,21 +340,23 @@ struct LutView {
   }
 
   /// True when data is set, channels >= 1, dims is 1..3, every used axis is
-  /// valid(), and a Root4Layer warp sits only on axis 0 of a view of 2+ axes.
+  /// valid(), and a layer warp (Root4Layer, LayerEta) sits only on axis 0 of a
+  /// view of 2+ axes.
   /// sample() and at() return zeros on an invalid view.
   bool valid() const noexcept {
     if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
     for (int d = 0; d < dims; ++d) {
       if (!axis[d].valid()) return false;
-      if (axis[d].warp == Warp::Root4Layer && (d != 0 || dims < 2)) return false;
+      if (isLayerWarp(axis[d].warp) && (d != 0 || dims < 2)) return false;
     }
     return true;
   }
 
-  /// The layer scale of axis 0 at the point x (Root4Layer; 1e-12 otherwise).
+  /// The layer scale of axis 0 at the point x (layerScaleFor; 1e-12 when axis 0
+  /// has no layer warp).
   double layerScaleAt(const double* x) const noexcept {
-    if (dims < 2 || axis[0].warp != Warp::Root4Layer) return 1e-12;
-    return layerScale(axis[1].lo, axis[1].hi, x[1]);
+    if (dims < 2) return 1e-12;
+    return layerScaleFor(axis[0].warp, axis[1].lo, axis[1].hi, x[1]);
   }
 
   /// Stored value of channel c at node (i0, i1, i2). Indices are clamped to
