@@ -188,7 +188,25 @@ TEST_CASE("The search reports the same for -j 1 and -j 2", "[verify][search]") {
   CHECK(j1.exitCode == j2.exitCode);
   CHECK(j1.out == j2.out);
   CHECK(test::CountLines(j2.err) == 3);  // a line per table and the total
+  CHECK(j2.err.find("burley-albedo") != std::string::npos);
+  CHECK(j2.err.find("declared") != std::string::npos);
+  auto quiet = test::RunKiln("verify " + dir + " -j 2 --quiet");
+  CHECK(quiet.out == j2.out);
+  CHECK(quiet.err == j2.err.substr(j2.err.find("kiln: error:") == std::string::npos
+                                       ? j2.err.size()
+                                       : j2.err.find("kiln: error:")));
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("kiln verify refuses a budget out of [0, 1e7] in one line", "[verify][search][cli]") {
+  const std::string table = std::string(KILN_SOURCE_DIR) + "/luts/lambert-albedo.exr";
+  for (const char* arg : {"--budget -1", "--budget 10000001", "--budget nan", "--tol 0"}) {
+    auto r = test::RunKiln("verify " + table + " " + arg);
+    INFO(arg << ": " << r.err);
+    CHECK(r.exitCode != 0);
+    CHECK(test::CountLines(r.err) == 1);
+    CHECK(r.err.find(std::string(arg).substr(0, std::string(arg).find(' '))) != std::string::npos);
+  }
 }
 
 TEST_CASE("Every committed table: the search finds nothing above its declared bound",

@@ -14,8 +14,8 @@
 namespace kiln {
 namespace {
 
-/// Golden-section iterations per axis and sweep of the climb (2 + this many evaluations; the
-/// bracket shrinks by 0.618^8 = 0.021 of its width).
+/// Golden-section iterations per axis and sweep of the climb (2 + this many evaluations, and one
+/// more at a bracket end on the cell's face; the bracket shrinks by 0.618^8 = 0.021 of its width).
 constexpr int kGoldenIterations = 8;
 /// Sweeps over the axes of the climb, and the half-width of the bracket around the current best
 /// in each (cell-local coordinates).
@@ -191,7 +191,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
 
   const std::vector<std::array<double, 3>> probes = ProbePoints(D);
   const long long P = static_cast<long long>(probes.size());
-  const long long C = kSweeps * D * (kGoldenIterations + 2);
+  const long long C = kSweeps * D * (kGoldenIterations + 3);  // at most
   LookupErrorReport rep;
   rep.allCells = static_cast<long long>(allCells);
 
@@ -319,6 +319,10 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
             f2 = f(a, x2);
           }
         }
+        // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
+        // golden section never evaluates its bracket's ends.
+        if (lo == 0.0) f(a, 0.0);
+        if (hi == 1.0) f(a, 1.0);
       }
     return cl;
   };

@@ -14,6 +14,7 @@
 
 #include "baker/bake/lookup_error.h"
 #include "baker/cli/commands.h"
+#include "baker/models/registry.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln::cli {
@@ -83,9 +84,10 @@ void RegisterVerify(CLI::App& app) {
   sub->add_option("--cells", args->cells,
                   "search at most this many cells (0: as the budget allows)")
       ->capture_default_str();
-  sub->add_option("--tol", args->tol,
-                  "reference by adaptive quadrature to this tolerance (default: the bake's own "
-                  "method, its fixed rule where it has one)");
+  auto* oTol =
+      sub->add_option("--tol", args->tol,
+                      "reference by adaptive quadrature to this tolerance (default: the bake's own "
+                      "method, its fixed rule where it has one)");
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_option("--filter", args->filter,
                   "measure with this filter instead of the declared one (then only reported, "
@@ -96,7 +98,7 @@ void RegisterVerify(CLI::App& app) {
                 "no progress on stderr");
   sub->add_flag("-q,--quiet", args->quiet,
                 "no progress line per table on stderr and no bar (errors only)");
-  sub->callback([args] {
+  sub->callback([args, oTol] {
     // Caps on the work (each point is one integral).
     if (args->budget < 0 || args->budget > kMaxVerifyPoints)
       throw std::invalid_argument("verify: --budget " + std::to_string(args->budget) +
@@ -107,7 +109,7 @@ void RegisterVerify(CLI::App& app) {
     if (args->points < 0 || args->points > kMaxVerifyPoints)
       throw std::invalid_argument("verify: --points " + std::to_string(args->points) +
                                   " must be in [0, 1e7]");
-    if (args->tol != 0 && !(args->tol >= 1e-12 && args->tol <= 1e-4))
+    if (oTol->count() && !(args->tol >= 1e-12 && args->tol <= 1e-4))
       throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-12, 1e-4]");
     CheckThreads("verify", args->threads);
@@ -150,6 +152,20 @@ void RegisterVerify(CLI::App& app) {
         fail(e.what());  // an unknown quantity, or unreadable params (SpecFromTable says which)
         continue;
       }
+      // An axis over a model parameter must stay inside its range (the evaluators clamp, so the
+      // search would compare the texels with the clamped model).
+      std::string outside;
+      if (const ModelInfo* m = FindModel(spec.model))
+        for (const AxisSpec& a : spec.axes)
+          for (const ParamInfo& q : m->params)
+            if (q.name == a.name && (a.lo < q.lo || a.hi > q.hi) && outside.empty())
+              outside = "axis " + a.name + " [" + FullPrecision(a.lo) + ", " + FullPrecision(a.hi) +
+                        "] is outside model '" + spec.model + "''s range [" + FullPrecision(q.lo) +
+                        ", " + FullPrecision(q.hi) + "]";
+      if (!outside.empty()) {
+        fail(outside);
+        continue;
+      }
       std::string filter = args->filter.empty() ? t.lookupError.filter : args->filter;
       bool checked = filter == t.lookupError.filter;
       LookupErrorReport rep;
@@ -160,6 +176,7 @@ void RegisterVerify(CLI::App& app) {
         for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) lo[d] = spec.axes[d].lo;
         IntegrationStats stats;
         size_t channels = EvaluateSpec(spec, lo, stats).size();
+
         if (channels != t.channels.size()) {
           if (bar) ClearBar();
           fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity +
