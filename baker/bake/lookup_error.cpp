@@ -216,7 +216,8 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   const double probeShare = allProbes <= callBudget * kProbeShare || C == 0 ? 1.0 : kProbeShare;
   std::vector<Sample> probeSamples;
   while (calls < allProbes && !spent(probeShare)) {
-    long long chunk = std::min({std::max(16LL, calls / 8), allProbes - calls, callBudget - calls});
+    long long chunk =
+        std::min({std::max({8LL, P, calls / 8}), allProbes - calls, callBudget - calls});
     if (chunk <= 0) break;
     size_t base = probeSamples.size();
     probeSamples.resize(base + static_cast<size_t>(chunk));
@@ -326,13 +327,14 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
       }
     return cl;
   };
-  // Climbs, in chunks of cells, until the budget is spent; at least one cell climbs.
+  // Climbs, in chunks of cells, until the budget is spent; at least one cell climbs (two when the
+  // probes left budget).
   std::vector<Climb> climbed;
   while (C > 0 && climbed.size() < rank.size() && (climbed.empty() || !spent(1.0))) {
     size_t chunk = std::min(rank.size() - climbed.size(), std::max<size_t>(2, climbed.size() / 8));
     if (!climbed.empty() && callBudget - calls < C) break;
     chunk = climbed.empty()
-                ? std::min<size_t>(chunk, 2)
+                ? std::min<size_t>(chunk, spent(1.0) ? 1 : 2)
                 : std::min<size_t>(chunk, static_cast<size_t>((callBudget - calls) / C));
     size_t base = climbed.size();
     climbed.resize(base + chunk);
