@@ -23,7 +23,7 @@ long long MTimeNs(const std::string& path) {
 BakeOptions Fast() {
   BakeOptions o;
   o.threads = 2;
-  o.lookupRandomPoints = 20;
+  o.lookupBudget = 20;
   return o;
 }
 }  // namespace

@@ -255,7 +255,7 @@ TEST_CASE("kiln verify refuses every hostile file, and checks the good ones in t
           "[stress][hostile][cli]") {
   Fixture fx;
   for (const Hostile& h : fx.refused) {
-    std::string args = "verify " + Quote(h.path) + " --points 20 -j 2";
+    std::string args = "verify " + Quote(h.path) + " --points 20 -j 2 --quiet";
     auto r = RunKilnFor(60, args);
     INFO(h.name << ": " << Describe(args, r));
     CHECK(IsCleanRefusal(r, /*allowStdout=*/true));  // the report table goes to stdout
@@ -270,7 +270,7 @@ TEST_CASE("kiln verify refuses every hostile file, and checks the good ones in t
     if (std::filesystem::is_regular_file(h.path))
       std::filesystem::copy_file(
           h.path, mixed / ("z-" + std::filesystem::path(h.path).filename().string()));
-  auto r = RunKilnFor(60, "verify " + Quote(mixed.path.string()) + " --points 20 -j 2");
+  auto r = RunKilnFor(60, "verify " + Quote(mixed.path.string()) + " --points 20 -j 2 --quiet");
   INFO(Describe("verify <mixed folder>", r));
   CHECK(IsCleanRefusal(r, true));
   CHECK(r.out.find(mixed / "a-good.exr") != std::string::npos);
@@ -288,7 +288,7 @@ TEST_CASE(
     "[stress][hostile][cli]") {
   Fixture fx;
   for (const Hostile& h : fx.absurd) {
-    std::string args = "verify " + Quote(h.path) + " --points 20 -j 2";
+    std::string args = "verify " + Quote(h.path) + " --points 20 -j 2 --quiet";
     auto r = RunKilnFor(60, args);
     INFO(h.name << ": " << Describe(args, r));
     CHECK(IsCleanRefusal(r, true));
@@ -301,7 +301,7 @@ TEST_CASE(
   for (const Hostile& h : fx.absurd)
     std::filesystem::copy_file(h.path, mixed / std::filesystem::path(h.path).filename().string());
   std::filesystem::copy_file(fx.good, mixed / "zz-good.exr");
-  auto r = RunKilnFor(120, "verify " + Quote(mixed.path.string()) + " --points 20 -j 2");
+  auto r = RunKilnFor(120, "verify " + Quote(mixed.path.string()) + " --points 20 -j 2 --quiet");
   INFO(Describe("verify <absurd folder>", r));
   CHECK(IsCleanRefusal(r, true));
   for (const Hostile& h : fx.absurd)
@@ -446,7 +446,7 @@ TEST_CASE("kiln verify of a table whose mu axis ends at a subnormal terminates",
   t.axes[0].axis.lo = 0;
   t.axes[0].axis.hi = 1e-320;
   WriteRaw(dir / "subnormal.exr", KilnHeader(t), t);
-  std::string args = "verify " + Quote(dir / "subnormal.exr") + " --points 20 -j 2";
+  std::string args = "verify " + Quote(dir / "subnormal.exr") + " --points 20 -j 2 --quiet";
   auto r = RunKilnFor(120, args);
   INFO(Describe(args, r));
   CHECK((r.exitCode == 0 || IsCleanRefusal(r, true)));

@@ -155,7 +155,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
     t.bakeError = estimate + 0x1p-24;
   else
     t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
-  if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupRandomPoints, opt.threads);
+  if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
   auto t2 = std::chrono::steady_clock::now();
   if (stats) {
     stats->evals = 0;
@@ -166,26 +166,24 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   return t;
 }
 
-void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, int threads) {
-  // At bake time: at most 4096 cell centres (strided) and as many random points as cells, at
-  // most randomPoints; `kiln verify` re-measures with every cell centre and 100,000 points.
-  size_t cells = 1;
-  for (const AxisSpec& a : spec.axes) cells *= static_cast<size_t>(std::max(1, a.size - 1));
-  long long random = static_cast<long long>(
-      std::min<size_t>(static_cast<size_t>(std::max(0, randomPoints)), cells));
-  LookupErrorReport rep = MeasureLookupError(spec, table.view(), random, 0, threads, Filter::Linear,
-                                             4096, /*alsoCubic=*/true);
+void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads) {
+  // The search kiln verify repeats (lookup_error.h), against the bake's own method.
+  LookupSearchOptions opt;
+  opt.budget = budget;
+  opt.threads = threads;
+  opt.alsoCubic = true;
+  LookupErrorReport rep = MeasureLookupError(spec, table.view(), opt);
   table.lookupError.max = rep.max * kDeclaredBoundMargin;
   table.lookupError.rms = rep.rms;
   table.lookupError.filter = "linear";
   table.lookupError.cubicMax = rep.cubicMax;
   table.lookupError.cubicRms = rep.cubicRms;
   char buf[256];
-  std::snprintf(
-      buf, sizeof buf,
-      "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max over %lld points "
-      "(cell centres + random)",
-      rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin, rep.points);
+  std::snprintf(buf, sizeof buf,
+                "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max of a "
+                "search of %lld of %lld cells (%lld climbed), %lld points",
+                rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin,
+                rep.cells, rep.allCells, rep.climbed, rep.points);
   table.lookupError.where = buf;
 }
 

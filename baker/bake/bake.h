@@ -13,8 +13,8 @@ namespace kiln {
 struct BakeOptions {
   int threads = 0;                 ///< 0: all cores
   bool progress = false;           ///< redraw a progress bar on stderr (meant for a terminal)
-  bool measureLookupError = true;  ///< measure the interpolation error at cell centres
-  int lookupRandomPoints = 1000;   ///< extra random points for that measurement
+  bool measureLookupError = true;  ///< search the lookup error (lookup_error.h) and declare it
+  long long lookupBudget = 0;      ///< reference evaluations of that search (0: its default)
 };
 
 struct BakeStats {
@@ -26,10 +26,11 @@ struct BakeStats {
 /// Bakes `spec` into a table (metadata and texels). Bit-identical for any thread count.
 Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats = nullptr);
 
-/// Measures a table's lookup error (linear filter) against EvaluateSpec at every cell centre
-/// and `randomPoints` fixed-seed random points; fills table.lookupError with the declared bound
-/// (kDeclaredBoundMargin x the measured max) and the rms.
-void MeasureLookupError(const TableSpec& spec, Table& table, int randomPoints, int threads);
+/// Searches a table's lookup error (linear filter) against EvaluateSpec (lookup_error.h, at
+/// most `budget` reference evaluations, 0: the search's default) and fills table.lookupError
+/// with the declared bound (kDeclaredBoundMargin x the max found), the rms over the probe
+/// points and the cubic filter's max and rms at the same points.
+void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads);
 
 /// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically; the EXR's
 /// blocks are compressed on `threads` threads (0: all cores; same bytes for any count).

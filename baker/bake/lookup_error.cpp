@@ -4,11 +4,54 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <thread>
 
 namespace kiln {
+namespace {
+
+/// Golden-section iterations per axis and sweep of the climb (2 + this many evaluations, and one
+/// more at a bracket end on the cell's face; the bracket shrinks by 0.618^8 = 0.021 of its width).
+constexpr int kGoldenIterations = 8;
+/// Sweeps over the axes of the climb, and the half-width of the bracket around the current best
+/// in each (cell-local coordinates).
+constexpr double kSweepHalfWidth[] = {0.25, 0.0625};
+constexpr int kSweeps = 2;
+/// Share of the budget the probes take when not every cell can be probed (the rest climbs).
+constexpr double kProbeShare = 0.6;
+
+/// One measured point: the error, with the cubic filter, and whether it lies in the path-
+/// dependent corner (first cell of axis 1 of a table over mu).
+struct Sample {
+  double err = 0, cubic = 0;
+  bool inCorner = false;
+  long long integrand = 0;
+  double x[3] = {0, 0, 0};  ///< the point, axis units
+};
+
+/// Cell-local probe points u in [0, 1]^D over the D axes with more than one node.
+std::vector<std::array<double, 3>> ProbePoints(int D) {
+  std::vector<std::array<double, 3>> p;
+  p.push_back({0.5, 0.5, 0.5});
+  for (int m = 0; m < (1 << D); ++m) {
+    std::array<double, 3> u{0.5, 0.5, 0.5};
+    for (int a = 0; a < D; ++a) u[a] = (m >> a) & 1 ? 0.8 : 0.2;
+    p.push_back(u);
+  }
+  for (int a = 0; a < D; ++a)
+    for (double s : {0.05, 0.95}) {
+      std::array<double, 3> u{0.5, 0.5, 0.5};
+      u[a] = s;
+      p.push_back(u);
+    }
+  return p;
+}
+
+}  // namespace
 
 std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
   std::string s;
@@ -21,90 +64,326 @@ std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
   return s;
 }
 
-LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
-                                     long long randomPoints, double refTol, int threads,
-                                     Filter filter, long long maxCells, bool alsoCubic) {
-  size_t dims = spec.axes.size();
-  size_t allCells = 1;
-  for (const AxisSpec& a : spec.axes) allCells *= static_cast<size_t>(std::max(1, a.size - 1));
-  size_t cells = maxCells > 0 ? std::min(allCells, static_cast<size_t>(maxCells)) : allCells;
-  size_t total = cells + static_cast<size_t>(std::max(0LL, randomPoints));
-  LookupErrorReport rep;
-  std::vector<double> err(total, 0);
-  std::vector<char> inCorner(total, 0);
-  std::vector<double> errCubic(alsoCubic ? total : 0, 0);
-  auto point = [&](size_t i, double* x) {
-    size_t k = i < cells ? i * allCells / cells : 0;  // evenly strided when cells < allCells
-    uint64_t s = 0x9E3779B97F4A7C15ull * (i - cells + 1);
-    double t[3] = {0, 0, 0};
-    for (size_t d = 0; d < dims; ++d) {
-      int cellsHere = std::max(1, spec.axes[d].size - 1);
-      double texel;
-      if (i < cells) {
-        texel = static_cast<double>(k % cellsHere) + 0.5;
-        k /= cellsHere;
-      } else {
-        s ^= s >> 31;
-        s *= 0xBF58476D1CE4E5B9ull;
-        s ^= s >> 29;
-        texel = static_cast<double>(s >> 11) * (1.0 / 9007199254740992.0) * cellsHere;
+std::vector<double> CellErrorEstimates(const LutView& view) {
+  const int dims = view.dims;
+  int n[3] = {view.size(0), view.size(1), view.size(2)};
+  int nc[3];
+  for (int d = 0; d < 3; ++d) nc[d] = std::max(1, n[d] - 1);
+  // Per axis, per node: max over channels of |second difference| along that axis; an end node
+  // takes its neighbour's (the one stencil that reaches it).
+  size_t nodes = static_cast<size_t>(n[0]) * n[1] * n[2];
+  std::vector<double> sd[3];
+  for (int d = 0; d < dims; ++d) {
+    sd[d].assign(nodes, 0.0);
+    if (n[d] < 3) continue;
+    for (int i2 = 0; i2 < n[2]; ++i2)
+      for (int i1 = 0; i1 < n[1]; ++i1)
+        for (int i0 = 0; i0 < n[0]; ++i0) {
+          int i[3] = {i0, i1, i2};
+          int j = std::min(std::max(i[d], 1), n[d] - 2);  // stencil centre
+          int lo[3] = {i0, i1, i2}, mid[3] = {i0, i1, i2}, hi[3] = {i0, i1, i2};
+          lo[d] = j - 1;
+          mid[d] = j;
+          hi[d] = j + 1;
+          double m = 0;
+          for (int c = 0; c < view.channels; ++c) {
+            double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
+                   f2 = view.at(hi[0], hi[1], hi[2], c);
+            m = std::max(m, std::abs(f0 - 2 * f1 + f2));
+          }
+          sd[d][i0 + static_cast<size_t>(n[0]) * (i1 + static_cast<size_t>(n[1]) * i2)] = m;
+        }
+  }
+  size_t cells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
+  std::vector<double> est(cells, 0.0);
+  for (size_t k = 0; k < cells; ++k) {
+    int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
+                static_cast<int>(k / nc[0] / nc[1])};
+    double e = 0;
+    for (int d = 0; d < dims; ++d) {
+      double m = 0;
+      for (int corner = 0; corner < 8; ++corner) {
+        int i[3];
+        for (int a = 0; a < 3; ++a) i[a] = std::min(c[a] + ((corner >> a) & 1), n[a] - 1);
+        m = std::max(
+            m, sd[d][i[0] + static_cast<size_t>(n[0]) * (i[1] + static_cast<size_t>(n[1]) * i[2])]);
       }
-      t[d] = spec.axes[d].size > 1 ? texel / (spec.axes[d].size - 1) : 0;
+      e += m / 8;  // h^2 f'' / 8 with h = 1 node spacing
+    }
+    est[k] = e;
+  }
+  return est;
+}
+
+LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
+                                     const LookupSearchOptions& opt) {
+  const size_t dims = spec.axes.size();
+  int n[3] = {1, 1, 1}, nc[3] = {1, 1, 1};
+  std::vector<int> active;  // axes with more than one node
+  for (size_t d = 0; d < dims && d < 3; ++d) {
+    n[d] = std::max(1, spec.axes[d].size);
+    nc[d] = std::max(1, n[d] - 1);
+    if (n[d] > 1) active.push_back(static_cast<int>(d));
+  }
+  const int D = static_cast<int>(active.size());
+  const size_t allCells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
+  std::vector<double> est = CellErrorEstimates(view);
+  est.resize(allCells, 0.0);
+
+  // The order in which cells are searched: corners, then edge and other cells alternately, each
+  // by estimate descending (index on ties).
+  std::vector<size_t> corners, edges, others;
+  for (size_t k = 0; k < allCells; ++k) {
+    int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
+                static_cast<int>(k / nc[0] / nc[1])};
+    int atEnd = 0;
+    for (int a : active) atEnd += c[a] == 0 || c[a] == nc[a] - 1;
+    if (atEnd == D)
+      corners.push_back(k);
+    else if (atEnd >= D - 1)
+      edges.push_back(k);
+    else
+      others.push_back(k);
+  }
+  auto byEstimate = [&](size_t a, size_t b) {
+    return est[a] > est[b] || (est[a] == est[b] && a < b);
+  };
+  std::sort(edges.begin(), edges.end(), byEstimate);
+  std::sort(others.begin(), others.end(), byEstimate);
+  std::vector<size_t> order = corners;
+  for (size_t i = 0; i < std::max(edges.size(), others.size()); ++i) {
+    if (i < edges.size()) order.push_back(edges[i]);
+    if (i < others.size()) order.push_back(others[i]);
+  }
+  if (opt.maxCells > 0 && order.size() > static_cast<size_t>(opt.maxCells))
+    order.resize(static_cast<size_t>(opt.maxCells));
+
+  auto evaluate = [&](size_t cell, const std::array<double, 3>& u, double* x) {
+    int c[3] = {static_cast<int>(cell % nc[0]), static_cast<int>(cell / nc[0] % nc[1]),
+                static_cast<int>(cell / nc[0] / nc[1])};
+    double t[3] = {0, 0, 0};
+    for (int i = 0; i < D; ++i) {
+      int a = active[i];
+      double ua = std::min(1.0, std::max(0.0, u[i]));
+      t[a] = std::min(1.0, (c[a] + ua) / static_cast<double>(n[a] - 1));
     }
     PointAtWarped(spec, t, x);
-  };
-  int n = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
-  tbb::task_arena arena(n);
-  arena.execute([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, total, 1), [&](const tbb::blocked_range<size_t>& r) {
-          for (size_t i = r.begin(); i != r.end(); ++i) {
-            double x[3] = {0, 0, 0};
-            point(i, x);
-            IntegrationStats st;
-            std::vector<double> exact =
-                refTol > 0 ? EvaluateSpec(spec, x, refTol, st) : EvaluateSpec(spec, x, st);
-            // One float per channel of the table, and at least one per exact value (a table with
-            // fewer channels than its quantity then compares the missing ones against 0).
-            std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
-            view.sample(x, got.data(), filter);
-            double m = 0;
-            for (size_t c = 0; c < exact.size(); ++c) m = std::max(m, std::abs(got[c] - exact[c]));
-            err[i] = m;
-            if (alsoCubic) {
-              view.sample(x, got.data(), Filter::Cubic);
-              double mc = 0;
-              for (size_t c = 0; c < exact.size(); ++c)
-                mc = std::max(mc, std::abs(got[c] - exact[c]));
-              errCubic[i] = mc;
-            }
-            inCorner[i] =
-                dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
-          }
-        });
-  });
-  size_t worst = 0;
-  double sum = 0;
-  for (size_t i = 0; i < total; ++i) {
-    if (err[i] > err[worst]) worst = i;
-    if (!inCorner[i]) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, err[i]);
-    sum += err[i] * err[i];
-  }
-  rep.max = err[worst];
-  rep.rms = std::sqrt(sum / static_cast<double>(total));
-  if (alsoCubic) {
-    double sumCubic = 0;
-    rep.cubicMax = 0;
-    for (double e : errCubic) {
-      rep.cubicMax = std::max(rep.cubicMax, e);
-      sumCubic += e * e;
+    IntegrationStats st;
+    std::vector<double> exact =
+        opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st) : EvaluateSpec(spec, x, st);
+    // One float per channel of the table, and at least one per exact value (a table with fewer
+    // channels than its quantity then compares the missing ones against 0).
+    std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
+    view.sample(x, got.data(), opt.filter);
+    Sample s;
+    for (size_t ch = 0; ch < exact.size(); ++ch)
+      s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
+    if (opt.alsoCubic) {
+      view.sample(x, got.data(), Filter::Cubic);
+      for (size_t ch = 0; ch < exact.size(); ++ch)
+        s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
     }
-    rep.cubicRms = std::sqrt(sumCubic / static_cast<double>(total));
+    s.inCorner = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
+    s.integrand = st.evals;
+    std::copy(x, x + 3, s.x);
+    return s;
+  };
+
+  const std::vector<std::array<double, 3>> probes = ProbePoints(D);
+  const long long P = static_cast<long long>(probes.size());
+  const long long C = kSweeps * D * (kGoldenIterations + 3);  // at most
+  LookupErrorReport rep;
+  rep.allCells = static_cast<long long>(allCells);
+
+  // The budget, in reference evaluations and (automatic budget only) integrand evaluations,
+  // spent in chunks whose sizes depend on what was spent before, never on timing or threads.
+  const long long callBudget = opt.budget > 0 ? opt.budget : kLookupBudgetCalls;
+  const long long integrandBudget = opt.budget > 0 ? 0 : kLookupBudgetIntegrand;
+  rep.budget = callBudget;
+  long long calls = 0, integrand = 0;
+  auto spent = [&](double share) {
+    return calls >= static_cast<long long>(share * static_cast<double>(callBudget)) ||
+           (integrandBudget > 0 &&
+            integrand >= static_cast<long long>(share * static_cast<double>(integrandBudget)));
+  };
+  int threads =
+      opt.threads > 0 ? opt.threads : static_cast<int>(std::thread::hardware_concurrency());
+  tbb::task_arena arena(threads);
+
+  // Probes, cell after cell in search order, until kProbeShare of the budget is spent (all of it
+  // when every cell is probed within it).
+  const long long allProbes = static_cast<long long>(order.size()) * P;
+  const double probeShare = allProbes <= callBudget * kProbeShare || C == 0 ? 1.0 : kProbeShare;
+  std::vector<Sample> probeSamples;
+  while (calls < allProbes && !spent(probeShare)) {
+    long long chunk =
+        std::min({std::max({8LL, P, calls / 8}), allProbes - calls, callBudget - calls});
+    if (chunk <= 0) break;
+    size_t base = probeSamples.size();
+    probeSamples.resize(base + static_cast<size_t>(chunk));
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(base, probeSamples.size(), 1),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t i = r.begin(); i != r.end(); ++i) {
+                            double x[3];
+                            probeSamples[i] = evaluate(order[i / P], probes[i % P], x);
+                          }
+                        });
+    });
+    for (size_t i = base; i < probeSamples.size(); ++i) integrand += probeSamples[i].integrand;
+    calls += chunk;
   }
-  rep.points = static_cast<long long>(total);
-  double x[3];
-  point(worst, x);
-  rep.where.assign(x, x + dims);
+  const long long probeCalls = calls;
+  order.resize(static_cast<size_t>((probeCalls + P - 1) / P));
+
+  // Random points, uniform in warped coordinates (a fixed seed per index).
+  std::vector<Sample> randomSamples(static_cast<size_t>(std::max(0LL, opt.randomPoints)));
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, randomSamples.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i) {
+                          uint64_t h = 0x9E3779B97F4A7C15ull * (i + 1);
+                          size_t cell = 0, stride = 1;
+                          std::array<double, 3> u{0.5, 0.5, 0.5};
+                          for (int a = 0; a < 3; ++a) {
+                            h ^= h >> 31;
+                            h *= 0xBF58476D1CE4E5B9ull;
+                            h ^= h >> 29;
+                            double texel = static_cast<double>(h >> 11) * 0x1p-53 * nc[a];
+                            int c = std::min(nc[a] - 1, static_cast<int>(texel));
+                            cell += stride * static_cast<size_t>(c);
+                            stride *= static_cast<size_t>(nc[a]);
+                            for (int i2 = 0; i2 < D; ++i2)
+                              if (active[i2] == a) u[i2] = texel - c;
+                          }
+                          double x[3];
+                          randomSamples[i] = evaluate(cell, u, x);
+                        }
+                      });
+  });
+  probeSamples.insert(probeSamples.end(), randomSamples.begin(), randomSamples.end());
+
+  // Climbs, in the cells whose worst probe erred most.
+  std::vector<double> cellMax(order.size(), 0.0);
+  std::vector<size_t> cellBestProbe(order.size(), 0);
+  for (size_t i = 0; i < static_cast<size_t>(probeCalls); ++i)
+    if (i % P == 0 || probeSamples[i].err > cellMax[i / P]) {
+      cellMax[i / P] = probeSamples[i].err;
+      cellBestProbe[i / P] = i % P;
+    }
+  std::vector<size_t> rank(order.size());
+  for (size_t i = 0; i < rank.size(); ++i) rank[i] = i;
+  std::stable_sort(rank.begin(), rank.end(),
+                   [&](size_t a, size_t b) { return cellMax[a] > cellMax[b]; });
+  struct Climb {
+    Sample best;
+    std::array<double, 3> u{};
+    long long evals = 0, integrand = 0;
+  };
+  auto climbCell = [&](size_t slot) {
+    size_t cell = order[slot];
+    Climb cl;
+    cl.u = probes[cellBestProbe[slot]];
+    cl.best = probeSamples[slot * P + cellBestProbe[slot]];
+    double x[3];
+    auto f = [&](int axis, double v) {
+      std::array<double, 3> u = cl.u;
+      u[axis] = v;
+      Sample s = evaluate(cell, u, x);
+      ++cl.evals;
+      cl.integrand += s.integrand;
+      if (s.err > cl.best.err) {
+        cl.best = s;
+        cl.u = u;
+      }
+      return s.err;
+    };
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
+    for (int sweep = 0; sweep < kSweeps; ++sweep)
+      for (int a = 0; a < D; ++a) {
+        double centre = cl.u[a], w = kSweepHalfWidth[sweep];
+        double lo = std::max(0.0, centre - w), hi = std::min(1.0, centre + w);
+        double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+        double f1 = f(a, x1), f2 = f(a, x2);
+        for (int it = 0; it < kGoldenIterations; ++it) {
+          if (f1 > f2) {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = f(a, x1);
+          } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = f(a, x2);
+          }
+        }
+        // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
+        // golden section never evaluates its bracket's ends.
+        if (lo == 0.0) f(a, 0.0);
+        if (hi == 1.0) f(a, 1.0);
+      }
+    return cl;
+  };
+  // Climbs, in chunks of cells, until the budget is spent; at least one cell climbs (two when the
+  // probes left budget).
+  std::vector<Climb> climbed;
+  while (C > 0 && climbed.size() < rank.size() && (climbed.empty() || !spent(1.0))) {
+    size_t chunk = std::min(rank.size() - climbed.size(), std::max<size_t>(2, climbed.size() / 8));
+    if (!climbed.empty() && callBudget - calls < C) break;
+    chunk = climbed.empty()
+                ? std::min<size_t>(chunk, spent(1.0) ? 1 : 2)
+                : std::min<size_t>(chunk, static_cast<size_t>((callBudget - calls) / C));
+    size_t base = climbed.size();
+    climbed.resize(base + chunk);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed.size(), 1),
+                        [&](const tbb::blocked_range<size_t>& r) {
+                          for (size_t j = r.begin(); j != r.end(); ++j)
+                            climbed[j] = climbCell(rank[j]);
+                        });
+    });
+    for (size_t j = base; j < climbed.size(); ++j) {
+      calls += climbed[j].evals;
+      integrand += climbed[j].integrand;
+    }
+  }
+
+  // Deterministic reductions, in search order.
+  double sum = 0, sumCubic = 0;
+  long long worstProbe = 0;
+  for (size_t i = 0; i < probeSamples.size(); ++i) {
+    const Sample& s = probeSamples[i];
+    if (s.err > probeSamples[static_cast<size_t>(worstProbe)].err)
+      worstProbe = static_cast<long long>(i);
+    if (!s.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, s.err);
+    sum += s.err * s.err;
+    sumCubic += s.cubic * s.cubic;
+    rep.cubicMax = std::max(rep.cubicMax, s.cubic);
+  }
+  rep.max = probeSamples[static_cast<size_t>(worstProbe)].err;
+  const Sample& w = probeSamples[static_cast<size_t>(worstProbe)];
+  rep.where.assign(w.x, w.x + dims);
+  long long points = static_cast<long long>(probeSamples.size());
+  for (const Climb& cl : climbed) {
+    points += cl.evals;
+    if (!cl.best.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, cl.best.err);
+    if (cl.best.err > rep.max) {
+      rep.max = cl.best.err;
+      rep.where.assign(cl.best.x, cl.best.x + dims);
+    }
+  }
+  const double count = static_cast<double>(std::max<size_t>(1, probeSamples.size()));
+  rep.rms = std::sqrt(sum / count);
+  if (opt.alsoCubic)
+    rep.cubicRms = std::sqrt(sumCubic / count);
+  else
+    rep.cubicMax = -1;
+  rep.points = points;
+  rep.cells = static_cast<long long>(order.size());
+  rep.climbed = static_cast<long long>(climbed.size());
   return rep;
 }
 

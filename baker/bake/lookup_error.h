@@ -1,7 +1,10 @@
-// The lookup error of a table: interpolated value against the exact integral, measured at every
-// cell centre (where multilinear interpolation errs most) and at fixed-seed random points.
+// The lookup error of a table: interpolated value against the reference, found by a search that
+// ranks the cells by the interpolation error the table's own node values predict, always takes
+// the cells on the domain's corners and edges, and climbs to the local maximum inside each
+// (README "Lookup error"). The bake declares its bound from it and `kiln verify` repeats it.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "baker/tables/spec.h"
 #include "kiln/lut.h"
@@ -9,31 +12,68 @@
 namespace kiln {
 
 struct LookupErrorReport {
-  double max = 0, rms = 0;
+  double max = 0;  ///< the largest |lookup - reference| found (max over channels)
+  double rms = 0;  ///< over the fixed probe points of the searched cells
   /// Max outside the first cell of the second axis (roughness < r_1 or eta < eta_1) of a table
   /// over mu: there (mu -> 0, roughness -> 0) or (mu -> 0, eta -> 1) is a path-dependent limit
   /// (E ~ g(mu / alpha), F ~ g(mu / sqrt(eta - 1))) that no tensor grid interpolates
   /// (README "Lookup error"). Equal to max for other tables.
   double maxOutsideCorner = 0;
   std::vector<double> where;            ///< the parameter values of the worst point, axis order
-  double cubicMax = -1, cubicRms = -1;  ///< with the cubic filter at the same points (alsoCubic)
-  long long points = 0;
+  double cubicMax = -1, cubicRms = -1;  ///< with the cubic filter at the probe points (alsoCubic)
+  long long points = 0;                 ///< reference evaluations (probes + climbs)
+  long long cells = 0;                  ///< cells probed
+  long long climbed = 0;                ///< cells in which the search climbed
+  long long allCells = 0;               ///< cells of the table
+  long long budget = 0;                 ///< the reference evaluations the search was allowed
   std::string WhereText(const TableSpec& spec) const;  ///< "mu=0.0001 roughness=0.01"
 };
 
-/// Measures |view.sample(x, filter) - EvaluateSpec(spec, x, refTol)| (max over channels) at every
-/// cell centre and `randomPoints` random points (uniform in texel space, fixed seed), with oneTBB;
-/// refTol = 0 takes the table's own bake method (EvaluateSpec(spec, x)) as the reference.
-/// Deterministic: same result for any thread count. maxCells > 0 checks only that many cell
-/// centres, evenly strided (a quick check of a large or costly table). alsoCubic also samples
-/// every point with the cubic filter (cubicMax, cubicRms), for the cost of the lookups only.
-LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
-                                     long long randomPoints, double refTol, int threads,
-                                     Filter filter = Filter::Linear, long long maxCells = 0,
-                                     bool alsoCubic = false);
+/// How hard the search looks.
+struct LookupSearchOptions {
+  /// Most reference evaluations per table. 0: the automatic budget, at most kLookupBudgetCalls
+  /// reference and kLookupBudgetIntegrand integrand evaluations (IntegrationStats::evals, so a
+  /// costly adaptive reference gets fewer points; counted, never timed: deterministic).
+  long long budget = 0;
+  long long maxCells = 0;  ///< search at most this many cells (0: as the budget allows)
+  /// Also this many fixed-seed random points, uniform in warped coordinates (outside the budget;
+  /// counted in max, rms and points).
+  long long randomPoints = 0;
+  double refTol = 0;  ///< > 0: adaptive quadrature to refTol as the reference
+  int threads = 0;    ///< 0: all cores
+  Filter filter = Filter::Linear;
+  bool alsoCubic = false;  ///< also sample the probe points with the cubic filter
+};
 
-/// The bound a baked table declares: the measured max times this margin (random points between
-/// the measured ones can exceed it slightly; kiln verify checks with 100x more points).
+/// The automatic budget: most reference evaluations per table (closed forms reach it).
+constexpr long long kLookupBudgetCalls = 200000;
+/// The automatic budget: most integrand evaluations per table (adaptive references; about 1-2 s
+/// of one core; the probes and the first climbs finish their chunk, so a search can overrun it).
+constexpr long long kLookupBudgetIntegrand = 20000000;
+
+/// The derivative-based estimate of the linear-interpolation error of every cell (axis 0
+/// fastest; cells per axis = nodes - 1): per axis, h^2 f'' / 8 taken from the node values as
+/// |f(i-1) - 2 f(i) + f(i+1)| / 8 in warped coordinates at both nodes of the cell along that axis
+/// (so a kink, whose second difference jumps, shows in the cells on either side), the max over
+/// the cell's corners and the channels, summed over the axes.
+std::vector<double> CellErrorEstimates(const LutView& view);
+
+/// Searches the table for its largest |view.sample(x, filter) - reference(x)| (max over
+/// channels), reference = EvaluateSpec(spec, x, stats) (the bake's own method) or, with
+/// opt.refTol > 0, adaptive quadrature to refTol. Cells searched, in order until the budget is
+/// spent: the domain's corner cells, then the cells along the domain's edges (first or last
+/// cell on all axes but at most one) and the others alternately, each by CellErrorEstimates
+/// descending. In each: fixed probe points (centre, the 2^d points at 0.2 / 0.8 of the cell,
+/// the 2d points at 0.05 / 0.95 of the cell on one axis and 0.5 on the others). Then in the
+/// cells whose probes erred most: coordinate-wise golden section from the worst probe, in the
+/// cell's warped coordinates, clamped to the cell, to a local maximum. Every point is placed by
+/// PointAtWarped. Deterministic: the same report for any thread count (oneTBB).
+LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
+                                     const LookupSearchOptions& opt);
+
+/// The bound a baked table declares: the searched max times this margin, for local maxima the
+/// climb stops short of and cells the budget did not reach (kiln verify repeats the search and
+/// checks max <= bound + the reference's own tolerance).
 constexpr double kDeclaredBoundMargin = 1.5;
 
 }  // namespace kiln

@@ -1,8 +1,11 @@
-// kiln verify: re-measures each table's lookup error against direct evaluation.
+// kiln verify: repeats the bake's lookup-error search (lookup_error.h) on each table and checks
+// the max it finds against the bound the table declares.
 #include <dirent.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cerrno>
 #include <cstring>
 #include <cstdio>
@@ -11,13 +14,27 @@
 
 #include "baker/bake/lookup_error.h"
 #include "baker/cli/commands.h"
+#include "baker/models/registry.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln::cli {
 namespace {
 
-/// The most cell centres and the most random points verify takes per table.
+/// The most reference evaluations, cells and random points verify takes per table.
 constexpr long long kMaxVerifyPoints = 10000000;
+
+/// The one-line bar on a terminal: tables done of all, and the one being searched.
+void DrawBar(size_t done, size_t total, const std::string& name) {
+  constexpr int kBar = 30;
+  int filled = total ? static_cast<int>(kBar * done / total) : kBar;
+  std::fprintf(stderr, "\r%-32s [%s%s] %zu/%zu", name.c_str(), std::string(filled, '#').c_str(),
+               std::string(kBar - filled, '.').c_str(), done, total);
+  std::fflush(stderr);
+}
+void ClearBar() {
+  std::fprintf(stderr, "\r%*s\r", 32 + 3 + 30 + 2 + 2 * 20 + 1, "");
+  std::fflush(stderr);
+}
 
 std::vector<std::string> ExrFiles(const std::string& path) {
   struct stat st {};
@@ -45,39 +62,54 @@ std::vector<std::string> ExrFiles(const std::string& path) {
 void RegisterVerify(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "verify",
-      "re-measure each table's lookup error at every cell centre and random points; "
-      "exit 1 when one exceeds its declared bound");
+      "repeat the bake's lookup-error search on each table (corner and edge cells, the cells the "
+      "node values rank worst, a climb to the local maximum in each); exit 1 when one exceeds "
+      "its declared bound");
   struct Args {
     std::vector<std::string> paths;
-    long long points = 100000, cells = 0;
-    double tol = 1e-7;
+    long long budget = 0, points = 0, cells = 0;
+    double tol = 0;
     int threads = 0;
     std::string filter;
-    bool json = false;
+    bool json = false, quiet = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("paths", args->paths, "tables or folders of tables")->required();
-  sub->add_option("--points", args->points, "random points per table, besides every cell centre")
+  sub->add_option("--budget", args->budget,
+                  "reference evaluations of the search per table (0: the bake's budget, fewer "
+                  "for a costly reference; README \"Lookup error\")")
       ->capture_default_str();
-  sub->add_option("--cells", args->cells, "check at most this many cell centres, strided (0: all)")
+  sub->add_option("--points", args->points, "random points per table, besides the search")
       ->capture_default_str();
-  sub->add_option("--tol", args->tol, "tolerance of the direct evaluation")->capture_default_str();
+  sub->add_option("--cells", args->cells,
+                  "search at most this many cells (0: as the budget allows)")
+      ->capture_default_str();
+  auto* oTol =
+      sub->add_option("--tol", args->tol,
+                      "reference by adaptive quadrature to this tolerance (default: the bake's own "
+                      "method, its fixed rule where it has one)");
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_option("--filter", args->filter,
                   "measure with this filter instead of the declared one (then only reported, "
                   "not checked against the bound)")
       ->check(CLI::IsMember({"linear", "cubic"}));
   sub->add_flag("--json", args->json,
-                "print the results as one JSON object on stdout (keys: README, Command line)");
-  sub->callback([args] {
-    // Caps on the work (each point is one integral, and 17 bytes of bookkeeping).
+                "print the results as one JSON object on stdout (keys: README, Command line); "
+                "no progress on stderr");
+  sub->add_flag("-q,--quiet", args->quiet,
+                "no progress line per table on stderr and no bar (errors only)");
+  sub->callback([args, oTol] {
+    // Caps on the work (each point is one integral).
+    if (args->budget < 0 || args->budget > kMaxVerifyPoints)
+      throw std::invalid_argument("verify: --budget " + std::to_string(args->budget) +
+                                  " must be in [0, 1e7]");
     if (args->cells < 0 || args->cells > kMaxVerifyPoints)
       throw std::invalid_argument("verify: --cells " + std::to_string(args->cells) +
                                   " must be in [0, 1e7]");
     if (args->points < 0 || args->points > kMaxVerifyPoints)
       throw std::invalid_argument("verify: --points " + std::to_string(args->points) +
                                   " must be in [0, 1e7]");
-    if (!(args->tol >= 1e-12 && args->tol <= 1e-4))
+    if (oTol->count() && !(args->tol >= 1e-12 && args->tol <= 1e-4))
       throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-12, 1e-4]");
     CheckThreads("verify", args->threads);
@@ -85,12 +117,18 @@ void RegisterVerify(CLI::App& app) {
     for (const std::string& p : args->paths)
       for (const std::string& f : ExrFiles(p)) files.push_back(f);
     if (files.empty()) throw std::invalid_argument("verify: no .exr files found");
+    // A line per table on stderr (terminal or not), the redrawn bar only on a terminal;
+    // --quiet and --json (stdout is then one JSON object with the same numbers): neither.
+    FILE* log = args->quiet || args->json ? nullptr : stderr;
+    const bool bar = log && isatty(STDERR_FILENO);
     int failed = 0;
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     if (!args->json)
       std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
                   "where (max)");
-    for (const std::string& f : files) {
+    auto start = std::chrono::steady_clock::now();
+    for (size_t fi = 0; fi < files.size(); ++fi) {
+      const std::string& f = files[fi];
       // A file that does not load, or whose metadata cannot be evaluated (unreadable params,
       // unknown model or quantity, channels the quantity does not have), fails on its own line;
       // the other files are still checked.
@@ -114,28 +152,65 @@ void RegisterVerify(CLI::App& app) {
         fail(e.what());  // an unknown quantity, or unreadable params (SpecFromTable says which)
         continue;
       }
+      // An axis over a model parameter must stay inside its range (the evaluators clamp, so the
+      // search would compare the texels with the clamped model).
+      std::string outside;
+      if (const ModelInfo* m = FindModel(spec.model))
+        for (const AxisSpec& a : spec.axes)
+          for (const ParamInfo& q : m->params)
+            if (q.name == a.name && (a.lo < q.lo || a.hi > q.hi) && outside.empty())
+              outside = "axis " + a.name + " [" + FullPrecision(a.lo) + ", " + FullPrecision(a.hi) +
+                        "] is outside model '" + spec.model + "''s range [" + FullPrecision(q.lo) +
+                        ", " + FullPrecision(q.hi) + "]";
+      if (!outside.empty()) {
+        fail(outside);
+        continue;
+      }
       std::string filter = args->filter.empty() ? t.lookupError.filter : args->filter;
       bool checked = filter == t.lookupError.filter;
       LookupErrorReport rep;
+      if (bar) DrawBar(fi, files.size(), t.name);
+      auto t0 = std::chrono::steady_clock::now();
       try {
         double lo[3] = {0, 0, 0};
         for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) lo[d] = spec.axes[d].lo;
         IntegrationStats stats;
-        size_t channels = EvaluateSpec(spec, lo, args->tol, stats).size();
+        size_t channels = EvaluateSpec(spec, lo, stats).size();
+
         if (channels != t.channels.size()) {
+          if (bar) ClearBar();
           fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity +
                "' has " + std::to_string(channels));
           continue;
         }
-        rep = MeasureLookupError(spec, t.view(), args->points, args->tol, args->threads,
-                                 filter == "cubic" ? Filter::Cubic : Filter::Linear, args->cells);
+        LookupSearchOptions opt;
+        opt.budget = args->budget;
+        opt.maxCells = args->cells;
+        opt.randomPoints = args->points;
+        opt.refTol = args->tol;
+        opt.threads = args->threads;
+        opt.filter = filter == "cubic" ? Filter::Cubic : Filter::Linear;
+        rep = MeasureLookupError(spec, t.view(), opt);
       } catch (const std::exception& e) {
+        if (bar) ClearBar();
         fail(e.what());
         continue;
       }
-      // The direct evaluation itself is only good to tol: allow that much on top of the bound.
+      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      // The reference itself is only good to its tolerance (--tol, or the table's own, plus the
+      // bake error the texels declare): allow that much on top of the bound.
+      double refTol = args->tol > 0 ? args->tol : spec.tol;
       bool ok = !checked ||
-                (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + args->tol + t.bakeError);
+                (t.lookupError.max >= 0 && rep.max <= t.lookupError.max + refTol + t.bakeError);
+      if (bar) ClearBar();
+      if (log) {
+        std::fprintf(log, "%-36s max %.3e  declared %.3e  %6.2f s  %s\n", t.name.c_str(), rep.max,
+                     t.lookupError.max, seconds,
+                     !checked ? "(not checked)"
+                     : ok     ? "ok"
+                              : "EXCEEDS");
+        std::fflush(log);
+      }
       if (args->json)
         rows.push_back({{"file", f},
                         {"ok", ok},
@@ -147,13 +222,20 @@ void RegisterVerify(CLI::App& app) {
                         {"declared", t.lookupError.max},
                         {"off_corner", rep.maxOutsideCorner},
                         {"where", rep.WhereText(spec)},
-                        {"points", rep.points}});
+                        {"points", rep.points},
+                        {"cells", rep.cells},
+                        {"climbed", rep.climbed},
+                        {"budget", rep.budget},
+                        {"seconds", seconds}});
       else
         std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
                     t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
                     ok ? "" : "  EXCEEDS BOUND");
+      std::fflush(stdout);
       if (!ok) ++failed;
     }
+    double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (log) std::fprintf(log, "%zu tables in %.1f s\n", files.size(), total);
     if (args->json) {
       nlohmann::ordered_json doc;
       doc["tables"] = rows;
