@@ -54,7 +54,7 @@ std::vector<CatalogueBenchRow> RunCatalogueBench(const CatalogueBenchOptions& op
     auto t0 = std::chrono::steady_clock::now();
     for (size_t i : SampledTexels(spec.TexelCount(), opt.samples)) {
       double x[3];
-      NodeCoordinates(spec, i, x);
+      NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats is;
       std::vector<double> ref = EvaluateSpec(spec, x, opt.refTol, is);
       for (size_t c = 0; c < nc; ++c) {

@@ -1,6 +1,8 @@
 // False-colour PNG previews, with a minimal dependency-free PNG encoder.
 #include "baker/io/png_writer.h"
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,8 +16,6 @@ namespace kiln {
 
 namespace {
 
-/// Largest payload of one stored deflate block.
-constexpr std::size_t kStoredBlockMax = 65535;
 /// Gap between channel panels, in pixels, and its grey level.
 constexpr int kPanelGap = 4;
 constexpr std::uint8_t kGapGrey = 40;
@@ -46,17 +46,6 @@ std::uint32_t crc32(const CrcTable& table, const std::string& bytes, std::size_t
   return c ^ 0xFFFFFFFFu;
 }
 
-/// Adler-32 checksum (zlib) of `bytes`.
-std::uint32_t adler32(const std::vector<std::uint8_t>& bytes) {
-  constexpr std::uint32_t kMod = 65521;
-  std::uint32_t a = 1, b = 0;
-  for (std::uint8_t byte : bytes) {
-    a = (a + byte) % kMod;
-    b = (b + a) % kMod;
-  }
-  return (b << 16) | a;
-}
-
 void appendBigEndian32(std::string& out, std::uint32_t v) {
   out += static_cast<char>((v >> 24) & 0xFFu);
   out += static_cast<char>((v >> 16) & 0xFFu);
@@ -73,24 +62,14 @@ void appendChunk(std::string& png, const CrcTable& crc, const char type[4],
   appendBigEndian32(png, crc32(crc, png, typeStart));
 }
 
-/// A zlib stream holding `raw` in stored (uncompressed) deflate blocks.
-std::string zlibStored(const std::vector<std::uint8_t>& raw) {
-  std::string z;
-  z += static_cast<char>(0x78);  // CMF: deflate, 32K window
-  z += static_cast<char>(0x01);  // FLG: no dictionary, check bits
-  std::size_t pos = 0;
-  do {
-    const std::size_t length = std::min(kStoredBlockMax, raw.size() - pos);
-    const bool last = pos + length == raw.size();
-    z += static_cast<char>(last ? 1 : 0);  // BFINAL, BTYPE = 00 (stored)
-    z += static_cast<char>(length & 0xFFu);
-    z += static_cast<char>((length >> 8) & 0xFFu);
-    z += static_cast<char>(~length & 0xFFu);
-    z += static_cast<char>((~length >> 8) & 0xFFu);
-    z.append(reinterpret_cast<const char*>(raw.data()) + pos, length);
-    pos += length;
-  } while (pos < raw.size());
-  appendBigEndian32(z, adler32(raw));
+/// A zlib stream of `raw` (deflate at level 9, zlib's compress2: deterministic for a given zlib).
+std::string zlibStream(const std::vector<std::uint8_t>& raw) {
+  uLongf size = compressBound(static_cast<uLong>(raw.size()));
+  std::string z(size, '\0');
+  if (compress2(reinterpret_cast<Bytef*>(z.data()), &size, raw.data(),
+                static_cast<uLong>(raw.size()), 9) != Z_OK)
+    throw std::runtime_error("PNG: zlib could not compress the image");
+  z.resize(size);
   return z;
 }
 
@@ -137,7 +116,7 @@ std::string encodePngImage(int width, int height, int bitDepth, int colourType,
   header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
   appendChunk(png, crc, "IHDR", header);
   for (const auto& [keyword, value] : text) appendChunk(png, crc, "tEXt", keyword + '\0' + value);
-  appendChunk(png, crc, "IDAT", zlibStored(raw));
+  appendChunk(png, crc, "IDAT", zlibStream(raw));
   appendChunk(png, crc, "IEND", std::string());
   return png;
 }

@@ -11,18 +11,17 @@
 namespace kiln {
 
 /// Encodes an 8-bit RGB image (rgb holds width * height * 3 bytes, rows top
-/// to bottom) as a complete PNG file: IHDR, one IDAT holding a zlib stream of
-/// stored (uncompressed) deflate blocks with its Adler-32, IEND, each chunk
-/// with its CRC-32. Throws std::invalid_argument on a size mismatch or an
-/// empty image.
+/// to bottom) as a complete PNG file: IHDR, one IDAT holding the rows (filter
+/// None) deflated by zlib at level 9, IEND, each chunk with its CRC-32. Throws
+/// std::invalid_argument on a size mismatch or an empty image.
 std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>& rgb);
 
 /// Encodes an image as a complete PNG file: IHDR (`bitDepth` 8 or 16, `colourType` 0 grey, 2
 /// RGB, 4 grey + alpha or 6 RGBA, no interlace), one tEXt chunk per (keyword, text) pair in
-/// order (keyword 1..79 bytes; neither may contain a NUL), one IDAT of stored deflate blocks,
-/// IEND. `pixels` holds the rows top to bottom, samples interleaved, 16-bit samples big-endian
-/// (PNG's order). Throws std::invalid_argument on a size mismatch, an empty image, an
-/// unsupported depth or type, or a bad keyword.
+/// order (keyword 1..79 bytes; neither may contain a NUL), one IDAT (rows with filter None,
+/// deflated by zlib at level 9), IEND. `pixels` holds the rows top to bottom, samples interleaved,
+/// 16-bit samples big-endian (PNG's order). Throws std::invalid_argument on a size mismatch, an
+/// empty image, an unsupported depth or type, or a bad keyword.
 std::string encodePngImage(int width, int height, int bitDepth, int colourType,
                            const std::vector<std::uint8_t>& pixels,
                            const std::vector<std::pair<std::string, std::string>>& text);
