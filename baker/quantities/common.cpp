@@ -253,14 +253,7 @@ std::vector<double> GgxFresnelAlbedoAt(const TableSpec& spec, const double* x, d
                                        bool averaged, IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
-  double mu = 0, r = Param(spec, "roughness", 0), eta = Param(spec, "eta", 1.5);
-  int i = 0;
-  for (const AxisSpec& a : spec.axes) {
-    if (a.name == "mu") mu = x[i];
-    if (a.name == "roughness") r = x[i];
-    if (a.name == "eta") eta = x[i];
-    ++i;
-  }
+  const auto [mu, r, eta] = FresnelAlbedoPoint(spec, x);
   AnyModel m = ModelAt("ggx", r);
   SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
   RhoParts e = averaged ? AverageAlbedo(m, opt, stats) : DirectionalAlbedo(m, mu, opt, stats);
@@ -278,8 +271,8 @@ bool HasSmoothLimit(const std::string& model) {
   const ModelInfo* m = FindModel(model);
   if (!m || !FindParam(*m, "roughness")) return false;
   AnyModel a = MakeModel(model, {});
-  return std::visit([](const auto& v) { return IsMicrofacetLobe<std::decay_t<decltype(v)>>::value; },
-                    a);
+  return std::visit(
+      [](const auto& v) { return IsMicrofacetLobe<std::decay_t<decltype(v)>>::value; }, a);
 }
 
 double CoordinateOf(const TableSpec& spec, const double* x, const char* name, double def) {

@@ -148,26 +148,30 @@ bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x) 
   return true;
 }
 
-void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
-  double t[3] = {0, 0, 0};
+namespace {
+
+/// The warped coordinates i / (N - 1) of texel `index` (axis 0 fastest): exactly 0 and 1 at the
+/// ends, where unwarped returns lo and hi exactly.
+void NodeWarpedCoordinates(const TableSpec& spec, size_t index, double* t) {
   for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) {
     const AxisSpec& a = spec.axes[d];
     int i = static_cast<int>(index % a.size);
-    // i / (N - 1) is exactly 0 and 1 at the ends, where unwarped returns lo and hi exactly.
     t[d] = a.size > 1 ? static_cast<double>(i) / static_cast<double>(a.size - 1) : 0.0;
     index /= a.size;
   }
+}
+
+}  // namespace
+
+void NodeCoordinates(const TableSpec& spec, size_t index, double* x) {
+  double t[3] = {0, 0, 0};
+  NodeWarpedCoordinates(spec, index, t);
   PointAtWarped(spec, t, x);
 }
 
 void NodeEvaluationPoint(const TableSpec& spec, size_t index, double* x) {
   double t[3] = {0, 0, 0};
-  for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) {
-    const AxisSpec& a = spec.axes[d];
-    int i = static_cast<int>(index % a.size);
-    t[d] = a.size > 1 ? static_cast<double>(i) / static_cast<double>(a.size - 1) : 0.0;
-    index /= a.size;
-  }
+  NodeWarpedCoordinates(spec, index, t);
   LayerLimitPointAtWarped(spec, t, x);
 }
 
