@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -149,6 +150,8 @@ TEST_CASE("damaged texture files are refused with a reason", "[io][roundtrip][ho
   CHECK_THROWS_WITH(DecodePng16(corrupt), Catch::Contains("CRC"));
   CHECK_THROWS_WITH(DecodePng16(png.substr(0, png.size() - 12)), Catch::Contains("IEND"));
   CHECK_THROWS_WITH(DecodeKtx2(png), Catch::Contains("not a KTX2"));
+  CHECK_THROWS_WITH(DecodeDds(std::string("DDS xxxx"), nlohmann::ordered_json::object()),
+                    Catch::Contains("header size"));
 }
 
 TEST_CASE("kiln reads every format it bakes, skips it when up to date, and keeps an entry per file",
@@ -205,5 +208,12 @@ TEST_CASE("kiln reads every format it bakes, skips it when up to date, and keeps
   CHECK(lonely.exitCode != 0);
   CHECK(lonely.err.find("manifest.json must be beside it") != std::string::npos);
   CHECK(CountLines(lonely.err) == 1);
+  // A file shorter than the sniffed bytes is read to its end, and refused for what it is.
+  {
+    std::ofstream(dir + "/short.png", std::ios::binary) << std::string("\x89PNG\r\n\x1a\n", 8);
+    CommandResult tiny = RunKiln("inspect " + dir + "/short.png");
+    CHECK(tiny.exitCode != 0);
+    CHECK(tiny.err.find("truncated PNG") != std::string::npos);
+  }
   std::filesystem::remove_all(dir);
 }

@@ -405,9 +405,11 @@ Table LoadAnyTable(const std::string& path) {
   in.read(head, sizeof head);
   const TableFileKind kind = SniffTableFile(std::string(head, static_cast<size_t>(in.gcount())));
   if (kind == TableFileKind::Exr || kind == TableFileKind::Unknown) return loadTable(path);
+  in.clear();  // a file shorter than the 12 bytes read ended the stream
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
-  if (size < 0 || static_cast<std::uint64_t>(size) > kMaxValues * 4 + (64u << 20))
+  if (size < 0) throw fail("cannot tell its size");
+  if (static_cast<std::uint64_t>(size) > kMaxValues * 4 + (64u << 20))
     throw fail("larger than any table kiln writes");
   std::string bytes(static_cast<std::size_t>(size), '\0');
   in.seekg(0);
