@@ -12,6 +12,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/bake/lookup_error.h"
+#include "baker/quantities/quantity.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
 #include "kiln/exr_loader.h"
@@ -110,13 +111,16 @@ TEST_CASE(
     "The search finds the conductor's layer at n = 1 within 10%, where cell centres and random "
     "points miss it by more than 2x",
     "[verify][search]") {
-  // fresnel-conductor at 32^3 nodes (the catalogue's size): for k -> 0 the reflectance jumps
-  // across n = 1 (total reflection below it at grazing mu), inside the cell n in [0.98, 1.11].
-  // The worst case by a scan concentrated on that layer: 512 mu values x n = 1 +- 10^-7..10^-1
-  // (129 values) x k = 0 and 10^-7..10^-0.5 (33 values), in axis units.
-  CatalogueOptions copt;
-  copt.size = 32;
-  TableSpec spec = CatalogueTable("fresnel-conductor", copt);
+  // fresnel-conductor at 32^3 nodes on its former axes (n in [0.1, 4], k in [0, 8], beyond
+  // the metals the catalogue's table now covers): for k -> 0 the reflectance jumps across
+  // n = 1 (total reflection below it at grazing mu), inside the cell n in [0.98, 1.11]; the
+  // stored residual keeps that kink. The worst case by a scan concentrated on that layer:
+  // 512 mu values x n = 1 +- 10^-7..10^-1 (129 values) x k = 0 and 10^-7..10^-0.5 (33 values),
+  // in axis units.
+  TableSpec spec = Describe(Quantity::FresnelConductor)
+                       .makeSpec("none", {{"mu", 0, 1, 32, Warp::Root4},
+                                          {"n", 0.1, 4, 32, Warp::Linear},
+                                          {"k", 0, 8, 32, Warp::Linear}});
   BakeOptions o = TwoThreads();
   o.measureLookupError = false;
   Table t = BakeTable(spec, o);

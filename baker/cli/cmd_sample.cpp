@@ -36,6 +36,22 @@ void RegisterSample(CLI::App& app) {
                                   " axes, got " + std::to_string(args->x.size()) + " coordinates");
     for (double v : args->x)
       if (!std::isfinite(v)) throw std::invalid_argument("sample: coordinates must be finite");
+    auto Short = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.6g", v);
+      return std::string(buf);
+    };
+    if (storedForm(t) == StoredForm::ConductorResidual) {
+      // Defined on its axes only (the metals in the visible): refuse, do not clamp.
+      std::string domain;
+      for (const TableAxis& a : t.axes)
+        domain += std::string(domain.empty() ? "" : ", ") + a.name + " in [" + Short(a.axis.lo) +
+                  ", " + Short(a.axis.hi) + "]";
+      for (std::size_t d = 0; d < t.axes.size(); ++d)
+        if (args->x[d] < t.axes[d].axis.lo || args->x[d] > t.axes[d].axis.hi)
+          throw std::invalid_argument("sample: " + t.axes[d].name + " " + Short(args->x[d]) +
+                                      " is outside the domain of '" + args->file + "': " + domain);
+    }
     std::vector<double> out(t.channels.size());
     sampleQuantity(t, args->x.data(), out.data(), args->cubic ? Filter::Cubic : Filter::Linear);
     std::string line;

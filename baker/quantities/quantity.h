@@ -84,6 +84,10 @@ struct QuantityInfo {
   /// Why a material of model `material` cannot ask for this kind, one line ("" when it can;
   /// null: every model can).
   std::string (*sceneProblem)(const ModelInfo& material) = nullptr;
+  /// When set, the default axes are the kind's whole domain: the planner refuses a material
+  /// whose sceneAxes values leave them, and this says what the domain is (e.g. "metals in the
+  /// visible"). Null: the planner may extend an axis to a material's value.
+  const char* sceneDomain = nullptr;
   /// The planner drops an axis cut to one value into the spec's params (evaluate reads it
   /// there), instead of keeping a 2-node slice.
   bool readsParams = false;

@@ -115,6 +115,13 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
                          ? ValueRange::Between(a.lo, a.hi)
                          : found->second;
       if (a.name == "mu" && found == need.ranges.end()) continue;
+      const QuantityInfo& q = Describe(need.kind);
+      if (q.sceneDomain && found != need.ranges.end() && !found->second.whole &&
+          (v.lo < a.lo || v.hi > a.hi))
+        throw std::invalid_argument("plan: " + need.reason + ": " + a.name + " " + v.Text() +
+                                    " is outside " + q.name + "'s domain " + a.name + " in [" +
+                                    ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
+                                    q.sceneDomain + ")");
       auto have = g->ranges.find(a.name);
       g->ranges[a.name] = have == g->ranges.end() ? v : have->second.Union(v);
     }

@@ -3,7 +3,8 @@
 //
 // A table may be looked up on coordinates derived from the physical ones (e.g. cos(phi) instead
 // of phi) and may store a bounded, smooth multiple of its quantity (e.g. f max(mu_l, mu_o)
-// instead of a BRDF f that grows without bound at the horizon). The form is read from the
+// instead of a BRDF f that grows without bound at the horizon, or the exact conductor Fresnel
+// term minus a closed form that carries its grazing dip). The form is read from the
 // file's kiln.quantity and axis names, so files that store the quantity itself keep working.
 // Header-only; needs kiln/table.h (no OpenEXR).
 #pragma once
@@ -31,7 +32,22 @@ enum class StoredForm {
   /// kiln.quantity "blinn-phong-normalization" with channels exact_ratio, approx_ratio: each is
   /// the factor divided by its linear part (s + 2) / (8 pi).
   BlinnPhongRatio,
+  /// kiln.quantity "fresnel-conductor" with channel F_residual, on axes (mu, n, k): the exact
+  /// conductor reflectance F minus conductorFresnelApprox(mu, n, k), the closed form that
+  /// carries the grazing dip; the quantity is the sample plus that closed form.
+  ConductorResidual,
 };
+
+/// The textbook approximation of the conductor Fresnel reflectance at eta = n + i k and
+/// cos(theta) = mu in [0, 1]: the mean of r_s = (e - 2 n mu + mu^2) / (e + 2 n mu + mu^2) and
+/// r_p = (e mu^2 - 2 n mu + 1) / (e mu^2 + 2 n mu + 1), e = n^2 + k^2. Exact at mu = 1 and at
+/// mu = 0 (F = 1); what fresnel-conductor tables store is the exact F minus this.
+inline double conductorFresnelApprox(double mu, double n, double k) {
+  const double e = n * n + k * k, mu2 = mu * mu;
+  const double rs = (e - 2.0 * n * mu + mu2) / (e + 2.0 * n * mu + mu2);
+  const double rp = (e * mu2 - 2.0 * n * mu + 1.0) / (e * mu2 + 2.0 * n * mu + 1.0);
+  return 0.5 * (rs + rp);
+}
 
 /// The stored form of a table of kiln.quantity `quantity` whose axis 0 and axis 2 are named
 /// `axis0` and `axis2` ("" when absent) and whose channel 0 is `channel0`.
@@ -41,6 +57,8 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
   if (quantity == "brdf" && axis2 == "cos_phi") return StoredForm::BrdfCosPhi;
   if (quantity == "blinn-phong-normalization" && channel0 == "exact_ratio")
     return StoredForm::BlinnPhongRatio;
+  if (quantity == "fresnel-conductor" && channel0 == "F_residual")
+    return StoredForm::ConductorResidual;
   return StoredForm::Plain;
 }
 
@@ -97,6 +115,16 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
   }
   table.view().sample(x, buf, filter);
   for (int c = 0; c < n; ++c) out[c] = static_cast<double>(buf[c]);
+  if (form == StoredForm::ConductorResidual && dims == 3) {
+    // Add back the closed form at the point the lookup clamped to.
+    double c[3];
+    for (int d = 0; d < 3; ++d) {
+      const Axis& a = table.axes[static_cast<std::size_t>(d)].axis;
+      c[d] = std::min(std::max(x[d], a.lo), a.hi);
+    }
+    out[0] += conductorFresnelApprox(c[0], c[1], c[2]);
+    return;
+  }
   if (dims >= 1) {
     const Axis& a0 = table.axes[0].axis;
     quantityFromStored(form, x, a0.lo, a0.hi, out, n);
