@@ -44,7 +44,10 @@ TEST_CASE("The 2D slice holds the 3D table's values at that IOR", "[scene]") {
   TableSpec full = CatalogueTable("ggx-fresnel-albedo");
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
-      double x[3] = {d.axes[0].ToAxis().node(i), d.axes[1].ToAxis().node(j), 1.5};
+      // Where the bake evaluates node (i, j) (the mu axis follows the roughness).
+      double x[3] = {0, 0, 1.5};
+      NodeEvaluationPoint(d, static_cast<size_t>(j * 3 + i), x);
+      x[2] = 1.5;
       IntegrationStats st;
       double exact = EvaluateSpec(full, x, st)[0];
       CHECK(t.data[static_cast<size_t>(j * 3 + i)] == Approx(exact).margin(1e-6));
@@ -59,6 +62,9 @@ TEST_CASE("One roughness and one IOR: a 1D table over mu", "[scene]") {
   REQUIRE(t);
   REQUIRE(t->spec.axes.size() == 1);
   CHECK(t->spec.axes[0].name == "mu");
+  // The catalogue's mu axis follows the roughness (root4-layer); with the roughness a
+  // parameter there is no axis to read it from: root4, and the table is a valid 1D view.
+  CHECK(t->spec.axes[0].warp == Warp::Root4);
   CHECK(t->spec.params.at("roughness") == 0.1);
   CHECK(t->spec.params.at("eta") == 1.33);
 }
@@ -70,6 +76,8 @@ TEST_CASE("Dispersion spreads the IOR: ior -+ (ior - 1) 0.025 dispersion", "[sce
                      "KHR_materials_ior": {"ior": 1.5}, "KHR_materials_dispersion": {"dispersion": 2}}})"));
   const PlannedTable* t = FindTable(plan, "ggx-fresnel-albedo-r0-ior1.475-1.525");
   REQUIRE(t);
+  // mu over eta: no layer warp reading the eta axis as a roughness.
+  CHECK(!isLayerWarp(t->spec.axes[0].warp));
   CHECK(t->spec.axes.size() == 2);  // mu, eta (2 nodes: 0.05 is narrower than one catalogue cell)
   CHECK(FindAxis(t->spec, "eta")->size == 2);
 }

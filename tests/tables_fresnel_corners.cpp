@@ -1,12 +1,14 @@
 // The committed Fresnel tables against direct evaluation, densely in their hard corners: the
 // layer of width sqrt(eta^2 - 1) at mu = 0 as eta -> 1 (fresnel-dielectric), the cell corners,
-// and eta = 1 and mu = 0 exactly. Nothing may exceed 1e-3 nor the file's declared bound.
+// and eta = 1 and mu = 0 exactly. Nothing may exceed 1e-3 nor the file's declared bound
+// (ggx-fresnel-albedo: its declared bound; its first eta cell is not below 1e-3 yet).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/models/fresnel.h"
 #include "kiln/exr_loader.h"
 #include "test_util.h"
@@ -78,4 +80,57 @@ TEST_CASE("fresnel-dielectric: below 1e-3 and its declared bound over the whole 
   CHECK(w.points > 100000);
   CHECK(w.err < 1e-3);
   CHECK(w.err <= t.lookupError.max);
+}
+
+TEST_CASE("ggx-fresnel-albedo: a dense scan of its corners stays within its declared bound",
+          "[tables][fresnel]") {
+  Table t = loadTable(std::string(KILN_SOURCE_DIR) + "/luts/ggx-fresnel-albedo.exr");
+  const LutView v = t.view();
+  // mu follows the GGX layer mu ~ alpha = r^2 (root4-layer coupled to roughness).
+  REQUIRE(v.axis[0].warp == Warp::Root4Layer);
+  double worst = 0, wmu = 0, wr = 0, weta = 0;
+  long points = 0;
+  auto probe = [&](double mu, double r, double eta) {
+    const double x[3] = {mu, r, eta};
+    float got = 0;
+    v.sample(x, &got);
+    // Roughness 0 is the smooth interface, E = F(mu, eta); else the bake's fixed rule.
+    const double ref = r == 0 ? FrDielectric(mu, eta) : FixedRuleGGXFresnelAlbedo(mu, r * r, eta);
+    const double e = std::abs(got - ref);
+    ++points;
+    if (e > worst) {
+      worst = e;
+      wmu = mu;
+      wr = r;
+      weta = eta;
+    }
+  };
+  test::Rng rng(13);
+  for (int i = 0; i < 24000; ++i) {
+    const double a = rng.Uniform(), b = rng.Uniform(), c = rng.Uniform();
+    switch (i % 3) {
+      case 0:  // anywhere
+        probe(a, b, 1 + 2 * c);
+        break;
+      case 1:  // the corner mu, r -> 0, eta -> 1
+        probe(std::pow(10.0, -10 * a), std::pow(10.0, -6 * b), 1 + std::pow(10.0, -15 * c));
+        break;
+      default: {  // next to a node of every axis (the cell corners)
+        const int i1 = static_cast<int>(b * (v.axis[1].size - 1));
+        const int i2 = static_cast<int>(c * (v.axis[2].size - 1));
+        const double r = std::min(1.0, v.axis[1].node(i1) + rng.Uniform() * 1e-7);
+        const double eta = std::min(3.0, v.axis[2].node(i2) + rng.Uniform() * 1e-9);
+        const int i0 = static_cast<int>(a * (v.axis[0].size - 1));
+        const double mu = v.axis[0].node(i0, layerScale(0.0, 1.0, r)) * (1 + 1e-6 * rng.Uniform());
+        probe(std::min(1.0, mu), r, eta);
+      }
+    }
+  }
+  for (double eta : {1.0, std::nextafter(1.0, 2.0), 1 + 1e-6, 1.5, 3.0})
+    for (double r : {0.0, 1e-6, 1e-3, 0.5, 1.0})
+      for (double mu : {1e-12, 1e-6, 0.5, 1.0}) probe(mu, r, eta);
+  INFO("worst " << worst << " at mu " << wmu << " r " << wr << " eta - 1 " << weta - 1 << " over "
+                << points << " points; declared " << t.lookupError.max);
+  CHECK(points > 24000);
+  CHECK(worst <= t.lookupError.max);
 }

@@ -19,9 +19,15 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
   return {{"mu", 0, 1, 48, Warp::Root4}, DefaultRoughnessAxis("ggx"), DefaultEtaAxis()};
 }
 
-/// 48 x 48 x 24: a 3D table, smaller per axis than the 2D ones.
+/// 48 x 48 x 24: a 3D table, smaller per axis than the 2D ones. mu takes root4-layer (coupled
+/// to roughness, like the 2D microfacet tables): near grazing E is a function of mu / alpha,
+/// which a plain root4 axis does not follow for r below its second node (the roughness-0 rows
+/// hold the smooth limit F(mu, eta) and, below Axis::collapsedStart(), the layer's limit). The
+/// Fresnel layer of width sqrt(eta^2 - 1) at eta -> 1 is not followed by this warp: E there is a
+/// function of mu / alpha and sqrt(eta^2 - 1) / alpha, so the first eta cell still errs.
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<AxisSpec> axes = DefaultAxes("ggx");
+  axes[0].warp = Warp::Root4Layer;
   axes[1].size = 48;
   return {MakeSpec("ggx", axes)};
 }

@@ -62,6 +62,15 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
       axes.push_back(cut->narrowed);
     }
   }
+  // A layered mu axis (root4-layer, layer-eta) reads axis 1: when that axis became a parameter
+  // (a single roughness of ggx-fresnel-albedo), its layer scale is fixed and axis 1 is another
+  // parameter or gone, so mu takes root4 (a layer warp on a 1D table or coupled to the wrong
+  // axis would be invalid or wrong).
+  const bool axis1Dropped =
+      std::any_of(cuts.begin(), cuts.end(), [](const Cut& c) { return c.axis == 1 && c.drop; });
+  if (axis1Dropped && !axes.empty() && isLayerWarp(spec.axes[0].warp) &&
+      axes[0].name == spec.axes[0].name)
+    axes[0].warp = Warp::Root4;
   spec.axes = axes;
   for (const Cut& c : cuts) spec.name += "-" + c.tag;
 }
