@@ -9,16 +9,8 @@
 
 using kiln::test::ReadFile;
 using kiln::test::RunKiln;
+using kiln::test::TempDir;
 using nlohmann::json;
-
-namespace {
-std::string TempDir(const char* tag) {
-  std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-}  // namespace
 
 TEST_CASE("kiln plan --json lists each table with its state, axes and reasons", "[cli][json]") {
   std::string dir = TempDir("plan_json");

@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -20,6 +21,14 @@ inline std::string ReadFile(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// A fresh, empty folder /tmp/kiln_test_TAG_PID for one test (removed first if it exists).
+inline std::string TempDir(const char* tag) {
+  std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 /// Runs `kiln ARGS` (ARGS is shell-quoted by the caller) with stdin closed.

@@ -24,14 +24,6 @@ using namespace kiln::test;
 
 namespace {
 
-/// A fresh folder under /tmp for one test.
-std::string TempDir(const char* tag) {
-  std::string dir = "/tmp/kiln_roundtrip_" + std::string(tag) + "_" + std::to_string(getpid());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
 void CheckSameDescription(const Table& got, const Table& want) {
   CHECK(got.name == want.name);
   CHECK(got.model == want.model);

@@ -19,15 +19,9 @@
 #include "test_util.h"
 
 using namespace kiln;
+using kiln::test::TempDir;
 
 namespace {
-
-std::string TempDir(const char* tag) {
-  std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 BakeOptions TwoThreads() {
   BakeOptions o;
