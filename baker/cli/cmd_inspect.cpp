@@ -10,6 +10,7 @@
 #include <set>
 
 #include "baker/cli/commands.h"
+#include "baker/io/table_json.h"
 #include "baker/io/texture_readers.h"
 #include "baker/io/atomic_write.h"
 #include "baker/io/png_writer.h"
@@ -29,13 +30,7 @@ std::string InspectJson(const std::string& file, const Table& t, const std::stri
   doc["model"] = t.model;
   doc["quantity"] = t.quantity;
   doc["params"] = t.params;
-  doc["axes"] = ordered_json::array();
-  for (const TableAxis& a : t.axes)
-    doc["axes"].push_back({{"name", a.name},
-                           {"lo", a.axis.lo},
-                           {"hi", a.axis.hi},
-                           {"size", a.axis.size},
-                           {"warp", warpName(a.axis.warp)}});
+  doc["axes"] = AxesJson(t.axes);
   doc["method"] = t.method;
   doc["tolerance"] = t.tolerance;
   doc["bake_error"] = t.bakeError;

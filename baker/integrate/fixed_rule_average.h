@@ -39,19 +39,15 @@ constexpr double kMinAngleLayer = 0.1;
 /// mu = 0 (alpha for a microfacet albedo).
 template <class V>
 void FixedCosineAverageNodes(double layer, V&& visit) {
-  static const auto rule = [] {
-    std::pair<std::vector<double>, std::vector<double>> r;
-    GaussLegendre01(kCosineAverageNodes, r.first, r.second);
-    return r;
-  }();
+  const GaussRule01& rule = CachedGaussLegendre01(kCosineAverageNodes);
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 1e-2); b < 1; b *= 4) breaks.push_back(b);
   breaks.push_back(1);
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
     for (int i = 0; i < kCosineAverageNodes; ++i) {
-      double mu = a + h * rule.first[i];
-      visit(mu, 2 * rule.second[i] * h * mu);
+      double mu = a + h * rule.x[i];
+      visit(mu, 2 * rule.w[i] * h * mu);
     }
   }
 }
@@ -87,11 +83,7 @@ std::vector<double> FixedCosineAverageChannels(E&& e, double layer) {
 /// x, from `layer` (clamped to [1e-4, 0.1]) up to pi/2. e is called in ascending mu.
 template <class E>
 std::vector<double> FixedCosineAverageAngle(E&& e, double layer) {
-  static const auto rule = [] {
-    std::pair<std::vector<double>, std::vector<double>> r;
-    GaussLegendre01(kCosineAverageNodes, r.first, r.second);
-    return r;
-  }();
+  const GaussRule01& rule = CachedGaussLegendre01(kCosineAverageNodes);
   const double halfPi = 1.5707963267948966;
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 0.1); b < halfPi; b *= 4) breaks.push_back(b);
@@ -100,10 +92,10 @@ std::vector<double> FixedCosineAverageAngle(E&& e, double layer) {
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
     for (int i = 0; i < kCosineAverageNodes; ++i) {
-      double x = a + h * rule.first[i], mu = std::sin(x);
+      double x = a + h * rule.x[i], mu = std::sin(x);
       std::vector<double> v = e(mu);
       sum.resize(v.size(), 0.0);
-      double w = 2 * rule.second[i] * h * mu * std::cos(x);
+      double w = 2 * rule.w[i] * h * mu * std::cos(x);
       for (size_t c = 0; c < v.size(); ++c) sum[c] += w * v[c];
     }
   }

@@ -42,15 +42,10 @@ constexpr double kMinScale = 1e-4;
 /// Geometric ratio of the graded panels.
 constexpr double kRatio = 4;
 
-/// Gauss-Legendre nodes and weights on [0, 1] for n = 1..64, built once.
-const std::pair<std::vector<double>, std::vector<double>>& Rule01(int n) {
-  static const std::vector<std::pair<std::vector<double>, std::vector<double>>> rules = [] {
-    std::vector<std::pair<std::vector<double>, std::vector<double>>> r(65);
-    for (int k = 1; k <= 64; ++k) GaussLegendre01(k, r[k].first, r[k].second);
-    return r;
-  }();
+/// Gauss-Legendre nodes and weights on [0, 1] for n = 1..64 (CachedGaussLegendre01).
+const GaussRule01& Rule01(int n) {
   if (n < 1 || n > 64) throw std::invalid_argument("diffuse fixed rule: node count must be 1..64");
-  return rules[n];
+  return CachedGaussLegendre01(n);
 }
 
 /// Appends the nodes and weights of an n-point rule on every panel of `breaks` to (x, w).
@@ -61,8 +56,8 @@ void PanelRule(const std::vector<double>& breaks, int n, std::vector<double>& x,
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
     if (!(h > 0)) continue;
     for (int i = 0; i < n; ++i) {
-      x.push_back(a + h * rule.first[i]);
-      w.push_back(h * rule.second[i]);
+      x.push_back(a + h * rule.x[i]);
+      w.push_back(h * rule.w[i]);
     }
   }
 }

@@ -77,18 +77,8 @@ constexpr double kGradeBelow = 0.25;
 /// Bound of r g over GGX's (r <= 4/e, g <= sqrt(pi)): scales the weights that pick light azimuths.
 constexpr double kWeightBound = 3;
 
-/// Gauss-Legendre rules on [0, 1] with 1..kMaxNodes nodes, built once.
-struct Rule {
-  std::vector<double> x, w;
-};
-const Rule& Gauss(int n) {
-  static const std::vector<Rule> rules = [] {
-    std::vector<Rule> r(kMaxNodes + 1);
-    for (int k = 1; k <= kMaxNodes; ++k) GaussLegendre01(k, r[k].x, r[k].w);
-    return r;
-  }();
-  return rules[std::min(std::max(n, 1), kMaxNodes)];
-}
+/// Gauss-Legendre rules on [0, 1] with 1..kMaxNodes nodes (clamped), built once.
+const GaussRule01& Gauss(int n) { return CachedGaussLegendre01(std::min(n, kMaxNodes)); }
 
 /// mu Lambda(mu) of GGX, sin = sqrt(1 - mu^2) given, without cancellation (alpha / 2 at mu = 0).
 inline double MuLambdaGGX(double mu, double sin, double a) {
@@ -156,7 +146,7 @@ inline void Add(Context& k, double c, double t, double weight) {
 
 /// A plain Gauss panel of n nodes over t in [t0, t0 + len].
 inline void PlainPanel(Context& k, double c, double pw, double t0, double len, int n) {
-  const Rule& g = Gauss(n);
+  const GaussRule01& g = Gauss(n);
   for (size_t i = 0; i < g.x.size(); ++i) Add(k, c, t0 + len * g.x[i], pw * len * g.w[i]);
 }
 
@@ -166,7 +156,7 @@ inline void PlainPanel(Context& k, double c, double pw, double t0, double len, i
 inline void GradedPanel(Context& k, double c, double pw, double end, double dir, double len,
                         double e, int base, double perEFold) {
   const double h = std::log1p(len / e), em = std::expm1(h);
-  const Rule& g = Gauss(base + static_cast<int>(std::ceil(perEFold * h - 1e-9)));
+  const GaussRule01& g = Gauss(base + static_cast<int>(std::ceil(perEFold * h - 1e-9)));
   for (size_t i = 0; i < g.x.size(); ++i) {
     const double x = len * std::expm1(h * g.x[i]) / em;
     Add(k, c, end + dir * x, pw * len * h * g.w[i] * std::exp(h * g.x[i]) / em);
@@ -192,7 +182,7 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
       kMaxNodes, static_cast<int>(std::ceil(
                      opt.outerNodes * (kOuterBase + (1 - kOuterBase) * std::min(Y, kYRef) / kYRef) +
                      opt.outerNodes * std::max(0.0, Y - kYRef) / kYRef - 1e-9)));
-  const Rule& go = Gauss(nOuter);
+  const GaussRule01& go = Gauss(nOuter);
   const double invMu = mu > 0 ? 1 / mu : 0;
   for (size_t io = 0; io < go.x.size(); ++io) {
     const double y = Y * go.x[io];

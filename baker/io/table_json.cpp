@@ -2,19 +2,23 @@
 
 namespace kiln {
 
+nlohmann::ordered_json AxesJson(const std::vector<TableAxis>& axes) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const TableAxis& a : axes)
+    out.push_back({{"name", a.name},
+                   {"lo", a.axis.lo},
+                   {"hi", a.axis.hi},
+                   {"size", a.axis.size},
+                   {"warp", warpName(a.axis.warp)}});
+  return out;
+}
+
 void AppendTableDescription(nlohmann::ordered_json& j, const Table& t) {
   j["model"] = t.model;
   j["quantity"] = t.quantity;
   j["channels"] = t.channels;
   j["channel_meanings"] = t.channelMeanings;
-  nlohmann::ordered_json axes = nlohmann::ordered_json::array();
-  for (const TableAxis& a : t.axes)
-    axes.push_back({{"name", a.name},
-                    {"lo", a.axis.lo},
-                    {"hi", a.axis.hi},
-                    {"size", a.axis.size},
-                    {"warp", warpName(a.axis.warp)}});
-  j["axes"] = axes;
+  j["axes"] = AxesJson(t.axes);
   j["params"] = t.params;
   j["method"] = t.method;
   j["tolerance"] = t.tolerance;

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "baker/io/texture_writers.h"
 #include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
 
@@ -92,25 +93,21 @@ void ReadTexels(Table& t, const std::string& bytes, std::uint64_t at, bool half)
     Bad("truncated texel data (" + std::to_string(need) + " bytes expected at byte " +
         std::to_string(at) + ", the file has " + std::to_string(bytes.size()) + ")");
   const std::size_t rowValues = static_cast<std::size_t>(t.size(0)) * t.channels.size();
-  const bool flip = FlipsY(t);
-  const int size1 = t.size(1), size2 = t.size(2);
   std::size_t p = static_cast<std::size_t>(at);
-  for (int k = 0; k < size2; ++k)
-    for (int i = 0; i < size1; ++i) {
-      const int row = k * size1 + (flip ? size1 - 1 - i : i);
-      float* out = t.data.data() + static_cast<std::size_t>(row) * rowValues;
-      for (std::size_t v = 0; v < rowValues; ++v, p += typeSize) {
-        if (half) {
-          ::half h;
-          h.setBits(static_cast<std::uint16_t>(static_cast<unsigned char>(bytes[p]) |
-                                               (static_cast<unsigned char>(bytes[p + 1]) << 8)));
-          out[v] = static_cast<float>(h);
-        } else {
-          std::uint32_t b = Reader{bytes}.U32(p);
-          std::memcpy(&out[v], &b, 4);
-        }
+  for (int row : FileRowOrder(t, FlipsY(t))) {
+    float* out = t.data.data() + static_cast<std::size_t>(row) * rowValues;
+    for (std::size_t v = 0; v < rowValues; ++v, p += typeSize) {
+      if (half) {
+        ::half h;
+        h.setBits(static_cast<std::uint16_t>(static_cast<unsigned char>(bytes[p]) |
+                                             (static_cast<unsigned char>(bytes[p + 1]) << 8)));
+        out[v] = static_cast<float>(h);
+      } else {
+        std::uint32_t b = Reader{bytes}.U32(p);
+        std::memcpy(&out[v], &b, 4);
       }
     }
+  }
 }
 
 void Validate(const Table& t) {
@@ -345,14 +342,7 @@ Table DecodePng16(const std::string& bytes) {
     Bad("the image data does not inflate to " + std::to_string(raw.size()) + " bytes");
   const std::size_t bpp = static_cast<std::size_t>(samples) * 2;
   std::vector<std::uint8_t> prev(stride, 0), cur(stride);
-  const std::vector<int> rows = [&] {
-    std::vector<int> order;
-    const bool flip = FlipsY(t);
-    for (int k = 0; k < t.size(2); ++k)
-      for (int i = 0; i < t.size(1); ++i)
-        order.push_back(k * t.size(1) + (flip ? t.size(1) - 1 - i : i));
-    return order;
-  }();
+  const std::vector<int> rows = FileRowOrder(t, FlipsY(t));
   for (std::uint32_t y = 0; y < height; ++y) {
     const std::uint8_t* in = raw.data() + y * (stride + 1);
     const int filter = in[0];

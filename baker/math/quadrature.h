@@ -35,6 +35,25 @@ inline void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<doubl
   }
 }
 
+/// A Gauss-Legendre rule on [0, 1]: nodes x (ascending) and weights w.
+struct GaussRule01 {
+  std::vector<double> x, w;
+};
+
+/// The most nodes CachedGaussLegendre01 keeps.
+constexpr int kMaxCachedGaussNodes = 64;
+
+/// The n-point rule of GaussLegendre01, n clamped to [1, kMaxCachedGaussNodes]; all of them are
+/// built once, on first use (a function-local static: thread-safe), and shared by the fixed rules.
+inline const GaussRule01& CachedGaussLegendre01(int n) {
+  static const std::vector<GaussRule01> rules = [] {
+    std::vector<GaussRule01> r(kMaxCachedGaussNodes + 1);
+    for (int k = 1; k <= kMaxCachedGaussNodes; ++k) GaussLegendre01(k, r[k].x, r[k].w);
+    return r;
+  }();
+  return rules[n < 1 ? 1 : n > kMaxCachedGaussNodes ? kMaxCachedGaussNodes : n];
+}
+
 template <std::size_t N>
 std::array<double, N>& operator+=(std::array<double, N>& a, const std::array<double, N>& b) {
   for (std::size_t c = 0; c < N; ++c) a[c] += b[c];

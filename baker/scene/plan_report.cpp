@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "baker/bake/bake.h"
+#include "baker/io/table_json.h"
 #include "baker/scene/scene_json.h"
 
 namespace kiln {
@@ -158,13 +159,7 @@ std::string FormatPlanJson(const Plan& plan, const std::string& dir) {
     e["quantity"] = Describe(s.quantity).name;
     e["model"] = s.model;
     e["channels"] = s.channels;
-    e["axes"] = ordered_json::array();
-    for (const AxisSpec& a : s.axes)
-      e["axes"].push_back({{"name", a.name},
-                           {"lo", a.lo},
-                           {"hi", a.hi},
-                           {"size", a.size},
-                           {"warp", warpName(a.warp)}});
+    e["axes"] = AxesJson(s.TableAxes());
     e["params"] = ordered_json::object();
     for (const auto& [k, v] : s.params) e["params"][k] = v;
     e["texels"] = s.TexelCount();
