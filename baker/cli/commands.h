@@ -47,5 +47,7 @@ void RegisterBake(CLI::App& app);
 void RegisterInspect(CLI::App& app);
 void RegisterSample(CLI::App& app);
 void RegisterVerify(CLI::App& app);
+/// kiln atlas [--out DIR] [--only a,b] [--grid N] [-j N]: the error atlas (baker/atlas/atlas.h).
+void RegisterAtlas(CLI::App& app);
 
 }  // namespace kiln::cli
