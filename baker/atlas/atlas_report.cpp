@@ -135,7 +135,9 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
        "pi the mirror side).\n\n";
   s += "Per pair: `<name>.csv` (columns mu, roughness, E_ref, E_cheap, dE, max_df, argmax_mu_i, "
        "argmax_phi_i) and `<name>.png` (dE and max_df over (mu, roughness); max_df on a log10 "
-       "scale where it spans more than three decades).\n\n";
+       "scale where it spans more than three decades, zeros floored six decades below its "
+       "maximum). Method and mappings: [docs/models.md, \"Error atlas\"](../models.md#error-atlas)."
+       "\n\n";
   s += "| pair | cheap | reference | roughness axis | worst abs(dE) | at (mu, r) | worst max_df | "
        "at (mu, r) | argmax (mu_i, phi_i) |\n";
   s += "|---|---|---|---|---|---|---|---|---|\n";
