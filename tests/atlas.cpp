@@ -218,3 +218,20 @@ TEST_CASE("atlas: the CLI writes every file, atomically, and refuses bad input",
   CHECK(CountLines(grid.err) == 1);
   std::filesystem::remove_all(dir);
 }
+
+TEST_CASE("atlas: docs/atlas is what `kiln atlas --out docs/atlas` writes", "[atlas]") {
+  // One pair recomputed at the committed grid, and a row in the README for every pair: adding a
+  // pair or changing the method without regenerating docs/atlas fails here.
+  AtlasOptions opt;
+  opt.threads = 2;
+  const std::string dir = std::string(KILN_SOURCE_DIR) + "/docs/atlas/";
+  CHECK(AtlasCsv(ComputeAtlas(PairNamed("fujii"), opt)) == ReadFile(dir + "fujii.csv"));
+  const std::string readme = ReadFile(dir + "README.md");
+  CHECK(readme.find("`kiln atlas --out docs/atlas`") != std::string::npos);
+  for (const AtlasPair& p : AtlasPairs()) {
+    INFO(p.name);
+    CHECK(readme.find("| [" + p.name + "](" + p.name + ".png) |") != std::string::npos);
+    CHECK(std::filesystem::is_regular_file(dir + p.name + ".csv"));
+    CHECK(std::filesystem::is_regular_file(dir + p.name + ".png"));
+  }
+}
