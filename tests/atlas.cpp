@@ -235,3 +235,25 @@ TEST_CASE("atlas: docs/atlas is what `kiln atlas --out docs/atlas` writes", "[at
     CHECK(std::filesystem::is_regular_file(dir + p.name + ".png"));
   }
 }
+
+TEST_CASE("atlas: the search is never beaten by a 301 x 301 scan, every pair", "[atlas][long]") {
+  // ~15 s: a 6 x 6 grid of (mu, r) per pair; the search must reach what the dense scan finds.
+  for (const AtlasPair& pair : AtlasPairs())
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b) {
+        double mu = (a + 0.5) / 6, r = pair.lo + (pair.hi - pair.lo) * b / 5;
+        HemisphereMax m = AtlasMaxDf(pair, mu, r, MaxSearchOptions{});
+        AnyModel cheap = AtlasModel(pair.cheap, r), ref = AtlasModel(pair.ref, r);
+        double dense = 0;
+        for (int i = 0; i <= 300; ++i)
+          for (int j = 0; j <= 300; ++j) {
+            double t = i * (Pi / 2) / 300, p = j * Pi / 300;
+            Vec3 wi = SphericalDirection(std::sin(t), std::cos(t), p);
+            double d = AtlasF(pair.cheap, cheap, ViewDirection(mu), wi) -
+                       AtlasF(pair.ref, ref, ViewDirection(mu), wi);
+            dense = std::max(dense, std::abs(d) * wi.z);
+          }
+        INFO(pair.name << " mu " << mu << " r " << r);
+        CHECK(m.value >= dense * (1 - 1e-6));
+      }
+}

@@ -193,7 +193,9 @@ HemisphereMax MaxOverHemisphere(const std::function<double(double, double)>& g,
     double step = step0;
     while (step >= opt.minStep) {
       bool moved = false;
-      const double dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+      // Diagonals too: a ridge along a kink (theta_i = theta_o) is climbed along its length.
+      const double dirs[8][2] = {{1, 0}, {-1, 0},  {0, 1},  {0, -1},
+                                 {1, 1}, {-1, -1}, {1, -1}, {-1, 1}};
       for (const auto& d : dirs) {
         double t = Clamp(cur.theta + d[0] * step, 0.0, thetaMax);
         double p = Clamp(cur.phi + d[1] * step, 0.0, phiMax);
@@ -224,6 +226,11 @@ HemisphereMax AtlasMaxDf(const AtlasPair& pair, double mu, double r, const MaxSe
   // lobe is narrower than the grid.
   double theta_o = std::acos(Clamp(mu, 0.0, 1.0));
   std::vector<std::pair<double, double>> seeds = {{theta_o, Pi}, {0, 0}};
+  // The diffuse models bend where theta_i = theta_o and at phi_i = pi/2: seeds along both.
+  for (int k = 0; k <= 24; ++k) {
+    seeds.push_back({theta_o, k * Pi / 24});
+    seeds.push_back({k * (Pi / 2) / 24, Pi / 2});
+  }
   for (double w = 1e-3; w < 0.4; w *= 3)
     for (int k = 0; k < 8; ++k) {
       double a = k * Pi / 4;

@@ -69,7 +69,7 @@ double FujiiSigmaPrime(double sigma);
 struct MaxSearchOptions {
   int thetaNodes = 24;    ///< grid nodes in theta_i (cell centres over [0, pi/2])
   int phiNodes = 25;      ///< grid nodes in phi_i (ends included over [0, pi])
-  int starts = 4;         ///< best grid nodes and seeds refined by a pattern search
+  int starts = 6;         ///< best grid nodes and seeds refined by a pattern search
   double minStep = 1e-7;  ///< the pattern search stops below this step (radians)
 };
 
@@ -79,7 +79,8 @@ struct HemisphereMax {
 };
 
 /// Maximises g over the hemisphere: the grid of `opt` plus the `seeds` (theta, phi), then a
-/// compass pattern search (steps halved down to opt.minStep) from the opt.starts best of them.
+/// pattern search over the 8 compass and diagonal directions (steps halved down to opt.minStep)
+/// from the opt.starts best of them.
 /// Deterministic. A NaN of g counts as -inf.
 HemisphereMax MaxOverHemisphere(const std::function<double(double theta, double phi)>& g,
                                 const MaxSearchOptions& opt,
@@ -128,7 +129,7 @@ double AtlasAlbedo(const AtlasSide& side, double mu, double r, double tol,
                    std::string* method = nullptr);
 
 /// max over wi of |f_cheap - f_ref| mu_i at view mu and atlas roughness r (seeds: the grid, the
-/// mirror direction and rings around it).
+/// mirror direction and rings around it, the rows theta_i = theta_o and phi_i = pi/2).
 HemisphereMax AtlasMaxDf(const AtlasPair& pair, double mu, double r, const MaxSearchOptions& opt);
 
 /// The whole grid of one pair (CheckAtlasPair first), in parallel on opt.threads: the same
