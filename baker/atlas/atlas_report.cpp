@@ -129,7 +129,8 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
        "models at a grazing light stay comparable. Found by a search: a " +
        std::to_string(opt.search.thetaNodes) + " x " + std::to_string(opt.search.phiNodes) +
        " grid in (theta_i, phi_i) over [0, pi/2] x [0, pi] (the models are isotropic) plus the "
-       "mirror direction and rings around it, then a compass search down to " +
+       "mirror direction, rings around it and the rows theta_i = theta_o and phi_i = pi/2, then "
+       "a pattern search (axis and diagonal steps) down to " +
        G(opt.search.minStep) + " rad from the " + std::to_string(opt.search.starts) +
        " best points. `argmax_mu_i`, `argmax_phi_i` give where (phi_i = 0 on the view's side, "
        "pi the mirror side).\n\n";
