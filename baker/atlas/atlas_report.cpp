@@ -66,7 +66,10 @@ std::string AtlasPng(const AtlasResult& r) {
   const int width = 2 * panelW + 16, height = top + imgH + 80;
   std::vector<std::uint8_t> img(static_cast<size_t>(width) * height * 3, 24);
   auto sideText = [](const AtlasSide& x) {
-    return x.params.empty() ? x.model : x.model + " " + x.params;
+    std::string t = x.params.empty() ? x.model : x.model + " " + x.params;
+    if (x.rescale == AtlasRescale::BlinnPhong204) t += " (s+2.04)/(8 pi)";
+    if (x.map == AtlasRoughnessMap::FujiiSigmaPrime) t += " with sigma prime = B/A";
+    return t;
   };
   DrawText(img, width, height, 8, 6,
            r.pair.name + ":  " + sideText(r.pair.cheap) + "  vs  " + sideText(r.pair.ref), kWhite);
