@@ -29,15 +29,15 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
           {"eta", kEtaMin, kEtaMax, 24, Warp::Sqrt}};
 }
 
-/// 80 x 46 x 15 (55,200 texels; 55,296 for the 48 x 48 x 24 before), storing E_residual = E -
+/// 48 x 64 x 18 (55,296 texels, as the 48 x 48 x 24 before), storing E_residual = E -
 /// fresnelAlbedoClosedForm (kiln/stored.h): the closed form carries the Fresnel layer (F(mu,
-/// eta) at r = 0, a residual of 0 there) and the drop of E(0) with alpha, so what is left
-/// interpolates about 2x better than E (the same grid storing E: 2x the lookup error). mu takes
-/// root4-layer (coupled to roughness, like the 2D microfacet tables): near grazing E is a
-/// function of mu / alpha, which a plain root4 axis does not follow for r below its second node
-/// (the roughness-0 rows hold the smooth limit and, below Axis::collapsedStart(), the layer's
-/// limit); half of mu's nodes lie in that layer, hence the most nodes on mu. The three axes err
-/// about alike at this split (README "Why these sizes and warps").
+/// eta) at r = 0, a residual of 0 there), the drop of E(0) with alpha and the dip of E inside
+/// the GGX layer, so what is left interpolates 7x better than E (docs/models.md "Albedo with
+/// exact Fresnel"). mu takes root4-layer (coupled to roughness, like the 2D microfacet tables:
+/// the roughness-0 rows hold the smooth limit and, below Axis::collapsedStart(), the layer's
+/// limit). With the layer's dip in the closed form, mu needs fewer nodes than roughness and eta
+/// (scans of this split and of 40 x 70 x 19, 56 x 58 x 17, 64 x 54 x 16: the axes err alike
+/// here).
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<AxisSpec> axes = DefaultAxes("ggx");
   axes[0].warp = Warp::Root4Layer;
