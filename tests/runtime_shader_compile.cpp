@@ -51,7 +51,8 @@ out vec4 color;
 void main() {
     color = kilnSample1D(lut1, x.x, a0) + kilnSample2D(lut2, x.xy, a0, a1)
           + kilnSample3D(lut3, x, a0, a1, a2) + kilnSample2DExact(lut2, x.xy, a0, a1)
-          + kilnSample3DExact(lut3, x, a0, a1, a2);
+          + kilnSample3DExact(lut3, x, a0, a1, a2)
+          + kilnSample3D(lut3, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z);
 }
 )";
 
@@ -61,7 +62,8 @@ cbuffer Axes { KilnAxis a0; KilnAxis a1; KilnAxis a2; };
 float4 main(float3 x : TEXCOORD0) : SV_Target {
     return kilnSample1D(lut1, linearClamp, x.x, a0) + kilnSample2D(lut2, linearClamp, x.xy, a0, a1)
          + kilnSample3D(lut3, linearClamp, x, a0, a1, a2) + kilnSample2DExact(lut2, x.xy, a0, a1)
-         + kilnSample3DExact(lut3, x, a0, a1, a2);
+         + kilnSample3DExact(lut3, x, a0, a1, a2)
+         + kilnSample3D(lut3, linearClamp, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z);
 }
 )";
 

@@ -282,9 +282,10 @@ double FloatTableError(const TableSpec& spec, int points, uint64_t seed, std::st
     for (size_t c = 0; c < nc; ++c) {
       double ref = InterpolateDouble(nodes, nc, c, t.axes, x), e = RelErr(out[c], ref);
       if (std::abs(ref) < 1e-30) e = std::abs(out[c] - ref);
-      // A residual against a closed form (fresnel-conductor's F_residual) crosses 0: its error
-      // is measured on the quantity's scale, 1 (F is in [0, 1]).
-      if (spec.channels[c] == "F_residual") e = std::abs(out[c] - ref);
+      // A residual against a closed form (fresnel-conductor's F_residual, ggx-fresnel-albedo's
+      // E_residual) crosses 0: its error is measured on the quantity's scale, 1 (F, E in [0, 1]).
+      if (spec.channels[c] == "F_residual" || spec.channels[c] == "E_residual")
+        e = std::abs(out[c] - ref);
       if (e > worst) {
         worst = e;
         where = spec.name + " channel " + spec.channels[c] + " at x0 = " + std::to_string(x[0]);

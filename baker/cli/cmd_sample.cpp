@@ -7,6 +7,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/io/texture_readers.h"
+#include "baker/quantities/quantity.h"
 #include "kiln/exr_loader.h"
 #include "kiln/stored.h"
 
@@ -41,8 +42,11 @@ void RegisterSample(CLI::App& app) {
       std::snprintf(buf, sizeof buf, "%.6g", v);
       return std::string(buf);
     };
-    if (storedForm(t) == StoredForm::ConductorResidual) {
-      // Defined on its axes only (the metals in the visible): refuse, do not clamp.
+    // A kind whose axes are its whole domain (QuantityInfo::sceneDomain: the metals in the
+    // visible of fresnel-conductor, the real dielectrics of fresnel-albedo) is defined on its
+    // axes only: refuse, do not clamp.
+    const QuantityInfo* kind = FindQuantity(t.quantity);
+    if (storedForm(t) == StoredForm::ConductorResidual || (kind && kind->sceneDomain)) {
       std::string domain;
       for (const TableAxis& a : t.axes)
         domain += std::string(domain.empty() ? "" : ", ") + a.name + " in [" + Short(a.axis.lo) +

@@ -194,7 +194,12 @@ void MaterialReader::Read() {
       Note(Kind::NoTable, "KHR_materials_ior",
            "ior 0 (specular-glossiness compatibility): F = 1, the dielectric albedo is "
            "ggx-albedo's");
+    } else if (ior == 1 && !iorAnimated) {
+      Note(Kind::NoTable, "KHR_materials_ior",
+           "ior 1 (no interface): F = 0, the dielectric layer reflects nothing");
     } else {
+      // ggx-fresnel-albedo covers eta in [1.3, 3] (its sceneDomain): the planner refuses
+      // 1 < ior < 1.3 in one line.
       ValueRange eta = ValueRange::Exactly(ior);
       if (iorAnimated) {
         eta = ValueRange::Whole();

@@ -158,4 +158,32 @@ highp vec4 kilnSample3DExact(highp sampler2D lut, highp vec3 x, KilnAxis a0, Kil
     return mix(c0, c1, s2 - k0);
 }
 
+// The exact dielectric Fresnel reflectance (unpolarized) at cos(theta_i) = mu (clamped to
+// [0, 1]) and relative index eta >= 1, cancellation-free (kiln::dielectricFresnel).
+highp float kilnFresnelDielectric(highp float mu, highp float eta) {
+    highp float m = clamp(mu, 0.0, 1.0);
+    highp float e = (eta - 1.0) * (eta + 1.0);
+    highp float cos2t = (m * m + e) / (eta * eta);
+    if (cos2t <= 0.0) return 1.0;
+    highp float cost = sqrt(cos2t);
+    highp float a = m + eta * cost;
+    highp float b = eta * m + cost;
+    highp float rPerp = -e / (a * a);
+    highp float rParl = e * ((eta * eta + 1.0) * m * m - 1.0) / (eta * eta * b * b);
+    return min(1.0, 0.5 * (rParl * rParl + rPerp * rPerp));
+}
+
+// The closed form g a ggx-fresnel-albedo file with channel E_residual stores E against
+// (kiln::fresnelAlbedoClosedForm, runtime/FORMAT.md "Stored forms"): E = sample + g at the
+// view cosine mu, perceptual roughness r and index eta of the lookup (clamped to the axes).
+highp float kilnFresnelAlbedoClosedForm(highp float mu, highp float r, highp float eta) {
+    highp float m = clamp(mu, 0.0, 1.0);
+    highp float rc = clamp(r, 0.0, 1.0);
+    if (!(rc > 0.0)) return kilnFresnelDielectric(m, eta);
+    highp float alpha = max(rc * rc, 1e-12);
+    highp float s = m / alpha;
+    highp float h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+    return kilnFresnelDielectric(sqrt(m * m + alpha * alpha), eta) * h / (1.0 + 10.0 * alpha);
+}
+
 #endif  // KILN_LUT_GLSL

@@ -162,4 +162,32 @@ float4 kilnSample3DExact(Texture2D<float4> lut, float3 x, KilnAxis a0, KilnAxis 
     return lerp(c0, c1, s2 - k0);
 }
 
+// The exact dielectric Fresnel reflectance (unpolarized) at cos(theta_i) = mu (clamped to
+// [0, 1]) and relative index eta >= 1, cancellation-free (kiln::dielectricFresnel).
+float kilnFresnelDielectric(float mu, float eta) {
+    float m = clamp(mu, 0.0, 1.0);
+    float e = (eta - 1.0) * (eta + 1.0);
+    float cos2t = (m * m + e) / (eta * eta);
+    if (cos2t <= 0.0) return 1.0;
+    float cost = sqrt(cos2t);
+    float a = m + eta * cost;
+    float b = eta * m + cost;
+    float rPerp = -e / (a * a);
+    float rParl = e * ((eta * eta + 1.0) * m * m - 1.0) / (eta * eta * b * b);
+    return min(1.0, 0.5 * (rParl * rParl + rPerp * rPerp));
+}
+
+// The closed form g a ggx-fresnel-albedo file with channel E_residual stores E against
+// (kiln::fresnelAlbedoClosedForm, runtime/FORMAT.md "Stored forms"): E = sample + g at the
+// view cosine mu, perceptual roughness r and index eta of the lookup (clamped to the axes).
+float kilnFresnelAlbedoClosedForm(float mu, float r, float eta) {
+    float m = clamp(mu, 0.0, 1.0);
+    float rc = clamp(r, 0.0, 1.0);
+    if (!(rc > 0.0)) return kilnFresnelDielectric(m, eta);
+    float alpha = max(rc * rc, 1e-12);
+    float s = m / alpha;
+    float h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+    return kilnFresnelDielectric(sqrt(m * m + alpha * alpha), eta) * h / (1.0 + 10.0 * alpha);
+}
+
 #endif  // KILN_LUT_HLSL

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,67 @@ enum class StoredForm {
   /// conductor reflectance F minus conductorFresnelApprox(mu, n, k), the closed form that
   /// carries the grazing dip; the quantity is the sample plus that closed form.
   ConductorResidual,
+  /// kiln.quantity "fresnel-albedo" with channel E_residual, on axes (mu, roughness, eta) or a
+  /// slice of them (an axis cut to one value is in kiln.params): GGX's albedo with exact
+  /// dielectric Fresnel E minus fresnelAlbedoClosedForm(mu, roughness, eta), the closed form
+  /// that carries the Fresnel layer at grazing; the quantity is the sample plus that form.
+  FresnelAlbedoResidual,
 };
+
+/// The exact dielectric Fresnel reflectance (unpolarized) at cos(theta_i) = mu in [0, 1] (clamped)
+/// and relative index eta >= 1, in the cancellation-free form: with e = eta^2 - 1 and
+/// cos_t = sqrt((mu^2 + e) / eta^2), r_perp = -e / (mu + eta cos_t)^2 and
+/// r_parl = e ((eta^2 + 1) mu^2 - 1) / (eta^2 (eta mu + cos_t)^2); F = (r_perp^2 + r_parl^2) / 2.
+/// F = 1 at mu = 0 for eta > 1; F = 0 at eta = 1 for mu > 0.
+inline double dielectricFresnel(double mu, double eta) {
+  const double m = std::min(std::max(mu, 0.0), 1.0);
+  const double e = (eta - 1.0) * (eta + 1.0);
+  const double cos2t = (m * m + e) / (eta * eta);
+  if (cos2t <= 0.0) return 1.0;
+  const double cost = std::sqrt(cos2t);
+  const double a = m + eta * cost, b = eta * m + cost;
+  const double rPerp = -e / (a * a);
+  const double rParl = e * ((eta * eta + 1.0) * m * m - 1.0) / (eta * eta * b * b);
+  return std::min(1.0, 0.5 * (rParl * rParl + rPerp * rPerp));
+}
+
+/// The closed form a fresnel-albedo table in the FresnelAlbedoResidual form stores its E
+/// against, at view cosine mu, perceptual roughness r (clamped to [0, 1]) and index eta:
+///     g = dielectricFresnel(sqrt(mu^2 + alpha^2), eta) h(mu / alpha) / (1 + 10 alpha),
+///     h(s) = 1 - 0.211 s / (1 + 0.4 s + 0.3 s^2 + 0.25 s^3),
+/// with alpha = max(r^2, 1e-12) for r > 0 (the floor of layerScale, which the table's mu axis
+/// and the bake's rule share) and g = dielectricFresnel(mu, eta) at r = 0 (the smooth
+/// interface: the residual is 0 there). The Fresnel factor follows the Fresnel layer of width
+/// sqrt(eta^2 - 1) at grazing and, inside the GGX layer (mu below alpha), reads F at a cosine
+/// of the order of alpha, as the microfacets see it; h is a fit (within 2e-3) of the dip of
+/// height-correlated GGX's albedo in its layer, E(mu = s alpha) as alpha -> 0 (1 at s = 0,
+/// 0.89 at s ~ 1.3, back to 1 as s grows); 1 / (1 + 10 alpha) fades it where E no longer
+/// follows F (alpha -> 1). Any smooth g would be exact (the table stores E - g); this one
+/// leaves a residual that interpolates 7x better than E (docs/models.md).
+inline double fresnelAlbedoClosedForm(double mu, double r, double eta) {
+  const double m = std::min(std::max(mu, 0.0), 1.0);
+  const double rc = std::min(std::max(r, 0.0), 1.0);
+  if (!(rc > 0.0)) return dielectricFresnel(m, eta);
+  const double alpha = std::max(rc * rc, 1e-12);
+  const double s = m / alpha;
+  const double h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+  return dielectricFresnel(std::sqrt(m * m + alpha * alpha), eta) * h / (1.0 + 10.0 * alpha);
+}
+
+/// The value of key `key` in a kiln.params string "key=value;key=value", or `def`.
+inline double storedParam(const std::string& params, const std::string& key, double def) {
+  std::size_t at = 0;
+  while (at < params.size()) {
+    std::size_t end = params.find(';', at);
+    if (end == std::string::npos) end = params.size();
+    const std::string item = params.substr(at, end - at);
+    const std::size_t eq = item.find('=');
+    if (eq != std::string::npos && item.substr(0, eq) == key)
+      return std::strtod(item.c_str() + eq + 1, nullptr);
+    at = end + 1;
+  }
+  return def;
+}
 
 /// The textbook approximation of the conductor Fresnel reflectance at eta = n + i k and
 /// cos(theta) = mu in [0, 1]: the mean of r_s = (e - 2 n mu + mu^2) / (e + 2 n mu + mu^2) and
@@ -59,6 +120,8 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
     return StoredForm::BlinnPhongRatio;
   if (quantity == "fresnel-conductor" && channel0 == "F_residual")
     return StoredForm::ConductorResidual;
+  if (quantity == "fresnel-albedo" && channel0 == "E_residual")
+    return StoredForm::FresnelAlbedoResidual;
   return StoredForm::Plain;
 }
 
@@ -123,6 +186,21 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
       c[d] = std::min(std::max(x[d], a.lo), a.hi);
     }
     out[0] += conductorFresnelApprox(c[0], c[1], c[2]);
+    return;
+  }
+  if (form == StoredForm::FresnelAlbedoResidual) {
+    // Add back the closed form at the point the lookup clamped to; an axis the table does
+    // not have (a slice) is read from kiln.params.
+    double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
+           eta = storedParam(table.params, "eta", 1.5);
+    for (int d = 0; d < dims; ++d) {
+      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
+      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
+      if (ta.name == "mu") mu = v;
+      if (ta.name == "roughness") r = v;
+      if (ta.name == "eta") eta = v;
+    }
+    out[0] += fresnelAlbedoClosedForm(mu, r, eta);
     return;
   }
   if (dims >= 1) {
