@@ -65,6 +65,7 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = FresnelAlbedoFixedRuleApplies;
     q.fixedRule = FresnelAlbedoFixedRuleAt;
+    q.searchRule = FresnelAlbedoSearchRuleAt;
     q.fixedRuleMethod = FresnelAlbedoFixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
