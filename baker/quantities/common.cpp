@@ -272,14 +272,20 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
     x[0] = mu;
     IntegrationStats st;
     std::vector<double> v = search ? SearchReference(albedo, x, st) : EvaluateSpec(albedo, x, st);
-    stats.evals += st.evals;
+    // The search's form takes kSearchAverageNodes per panel: each inner evaluation is charged
+    // for the kCosineAverageNodes / kSearchAverageNodes the bake's rule takes in its place.
+    stats.evals += search ? std::llround(static_cast<double>(st.evals) * kCosineAverageNodes /
+                                         kSearchAverageNodes)
+                          : st.evals;
     innerBound = std::max(innerBound, search  ? st.errorEstimate
                                       : fixed ? st.errorEstimate
                                               : 10 * std::max(st.errorEstimate, albedo.tol));
     return v;
   };
-  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer)
-                                                   : FixedCosineAverageAngle(e, kMinAngleLayer);
+  const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
+  std::vector<double> r = IsSpecular(albedo.model)
+                              ? FixedCosineAverageChannels(e, layer, nodes)
+                              : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;
 }

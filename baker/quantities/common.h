@@ -115,9 +115,10 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 /// rule where it has one, adaptive quadrature to albedo.tol otherwise). Microfacet models: the
 /// mu rule with the layer alpha (and sqrt(|eta - 1|) with an eta axis); diffuse models: the angle
 /// rule. Sets stats.errorEstimate to the declared bound: the inner one plus kCosineAverageBound.
-/// With `search`: the search's form (QuantityInfo::searchRule), the same mu rule over E by
-/// SearchReference(albedo); errorEstimate is then the inner rule's distance bound from the bake's
-/// (the mu rule's weights sum to 1), evals as the inner rule charges them.
+/// With `search`: the search's form (QuantityInfo::searchRule), the same panels with
+/// kSearchAverageNodes per panel over E by SearchReference(albedo), each inner evaluation charged
+/// kCosineAverageNodes / kSearchAverageNodes times; errorEstimate is then the inner rule's distance
+/// bound from the bake's (the mu rule's weights sum to 1), evals as the inner rule charges them.
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
                                      IntegrationStats& stats, bool search = false);
 
