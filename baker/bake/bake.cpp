@@ -173,17 +173,23 @@ void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, i
   opt.threads = threads;
   opt.alsoCubic = true;
   LookupErrorReport rep = MeasureLookupError(spec, table.view(), opt);
-  table.lookupError.max = rep.max * kDeclaredBoundMargin;
+  table.lookupError.max = (rep.max + rep.referenceError) * kDeclaredBoundMargin;
   table.lookupError.rms = rep.rms;
   table.lookupError.filter = "linear";
   table.lookupError.cubicMax = rep.cubicMax;
   table.lookupError.cubicRms = rep.cubicRms;
-  char buf[256];
+  // The bound's formula: "max", or "(max + D)" with D the search reference's distance from the
+  // bake's method (a verification-grade rule, QuantityInfo::searchRule).
+  char term[96] = "max";
+  if (rep.referenceError > 0)
+    std::snprintf(term, sizeof term, "(max + %.2g, its reference's distance from the bake rule)",
+                  rep.referenceError);
+  char buf[384];
   std::snprintf(buf, sizeof buf,
-                "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x max of a "
+                "max %.3g at %s, %.3g outside the first cell of axis 1; bound = %.2g x %s of a "
                 "search of %lld of %lld cells (%lld climbed), %lld points",
                 rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin,
-                rep.cells, rep.allCells, rep.climbed, rep.points);
+                term, rep.cells, rep.allCells, rep.climbed, rep.points);
   table.lookupError.where = buf;
 }
 

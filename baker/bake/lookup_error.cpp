@@ -30,6 +30,7 @@ struct Sample {
   double err = 0, cubic = 0;
   bool inCorner = false;
   long long integrand = 0;
+  double refError = 0;      ///< the reference's distance bound from the bake's method here
   double x[3] = {0, 0, 0};  ///< the point, axis units
 };
 
@@ -170,7 +171,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     PointAtWarped(spec, t, x);
     IntegrationStats st;
     std::vector<double> exact =
-        opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st) : EvaluateSpec(spec, x, st);
+        opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st) : SearchReference(spec, x, st);
     // One float per channel of the table, and at least one per exact value (a table with fewer
     // channels than its quantity then compares the missing ones against 0).
     std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
@@ -185,6 +186,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     }
     s.inCorner = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
     s.integrand = st.evals;
+    s.refError = opt.refTol > 0 ? 0.0 : st.errorEstimate;
     std::copy(x, x + 3, s.x);
     return s;
   };
@@ -279,6 +281,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     Sample best;
     std::array<double, 3> u{};
     long long evals = 0, integrand = 0;
+    double refError = 0;
   };
   auto climbCell = [&](size_t slot) {
     size_t cell = order[slot];
@@ -292,6 +295,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
       Sample s = evaluate(cell, u, x);
       ++cl.evals;
       cl.integrand += s.integrand;
+      cl.refError = std::max(cl.refError, s.refError);
       if (s.err > cl.best.err) {
         cl.best = s;
         cl.u = u;
@@ -361,6 +365,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     if (!s.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, s.err);
     sum += s.err * s.err;
     sumCubic += s.cubic * s.cubic;
+    rep.referenceError = std::max(rep.referenceError, s.refError);
     rep.cubicMax = std::max(rep.cubicMax, s.cubic);
   }
   rep.max = probeSamples[static_cast<size_t>(worstProbe)].err;
@@ -369,6 +374,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   long long points = static_cast<long long>(probeSamples.size());
   for (const Climb& cl : climbed) {
     points += cl.evals;
+    rep.referenceError = std::max(rep.referenceError, cl.refError);
     if (!cl.best.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, cl.best.err);
     if (cl.best.err > rep.max) {
       rep.max = cl.best.err;

@@ -26,6 +26,10 @@ struct LookupErrorReport {
   long long climbed = 0;                ///< cells in which the search climbed
   long long allCells = 0;               ///< cells of the table
   long long budget = 0;                 ///< the reference evaluations the search was allowed
+  /// How far the search's reference may lie from the bake's method at the points it evaluated
+  /// (SearchReference's errorEstimate, max over the points; 0 for the bake's own method or an
+  /// adaptive reference): the true max can exceed `max` by this much.
+  double referenceError = 0;
   std::string WhereText(const TableSpec& spec) const;  ///< "mu=0.0001 roughness=0.01"
 };
 
@@ -59,8 +63,9 @@ constexpr long long kLookupBudgetIntegrand = 20000000;
 std::vector<double> CellErrorEstimates(const LutView& view);
 
 /// Searches the table for its largest |view.sample(x, filter) - reference(x)| (max over
-/// channels), reference = EvaluateSpec(spec, x, stats) (the bake's own method) or, with
-/// opt.refTol > 0, adaptive quadrature to refTol. Cells searched, in order until the budget is
+/// channels), reference = SearchReference(spec, x, stats) (the bake's method, or its cheaper
+/// verification-grade form, QuantityInfo::searchRule; their distance in rep.referenceError) or,
+/// with opt.refTol > 0, adaptive quadrature to refTol. Cells searched, in order until the budget is
 /// spent: the domain's corner cells, then the cells along the domain's edges (first or last
 /// cell on all axes but at most one) and the others alternately, each by CellErrorEstimates
 /// descending. In each: fixed probe points (centre, the 2^d points at 0.2 / 0.8 of the cell,
@@ -71,9 +76,10 @@ std::vector<double> CellErrorEstimates(const LutView& view);
 LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
                                      const LookupSearchOptions& opt);
 
-/// The bound a baked table declares: the searched max times this margin, for local maxima the
-/// climb stops short of and cells the budget did not reach (kiln verify repeats the search and
-/// checks max <= bound + the reference's own tolerance).
+/// The bound a baked table declares: (the searched max + the reference's distance from the bake's
+/// method, referenceError) times this margin, for local maxima the climb stops short of and
+/// cells the budget did not reach (kiln verify repeats the search and checks max <= bound + the
+/// reference's own tolerance).
 constexpr double kDeclaredBoundMargin = 1.5;
 
 }  // namespace kiln

@@ -34,18 +34,22 @@ constexpr double kCosineAverageBound = 1e-8;
 /// adaptive quadrature at 1e-10 for every catalogue diffuse model, the tests print each).
 constexpr double kMinAngleLayer = 0.1;
 
+/// Gauss-Legendre nodes per panel of the lookup-error search's form of the averages (the same
+/// panels; tests/lookup_search_reference.cpp holds it within kSearchRuleBound of the bake's).
+constexpr int kSearchAverageNodes = 6;
+
 /// Calls visit(mu, weight) at every node of the rule above, in ascending mu, with weights that
 /// include the factor 2 mu: E_avg = sum of weight e(mu). `layer` is the width of e's layer at
-/// mu = 0 (alpha for a microfacet albedo).
+/// mu = 0 (alpha for a microfacet albedo); `nodes` per panel.
 template <class V>
-void FixedCosineAverageNodes(double layer, V&& visit) {
-  const GaussRule01& rule = CachedGaussLegendre01(kCosineAverageNodes);
+void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes) {
+  const GaussRule01& rule = CachedGaussLegendre01(nodes);
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 1e-2); b < 1; b *= 4) breaks.push_back(b);
   breaks.push_back(1);
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
-    for (int i = 0; i < kCosineAverageNodes; ++i) {
+    for (int i = 0; i < nodes; ++i) {
       double mu = a + h * rule.x[i];
       visit(mu, 2 * rule.w[i] * h * mu);
     }
@@ -65,14 +69,15 @@ double FixedCosineAverage(E&& e, double layer) {
 /// The channel-valued form of FixedCosineAverage: e(mu) -> std::vector<double> (the same size at
 /// every node), averaged channel by channel with the same nodes and weights.
 template <class E>
-std::vector<double> FixedCosineAverageChannels(E&& e, double layer) {
+std::vector<double> FixedCosineAverageChannels(E&& e, double layer,
+                                               int nodes = kCosineAverageNodes) {
   std::vector<double> sum;
   auto one = [&](double mu, double weight) {
     std::vector<double> v = e(mu);
     sum.resize(v.size(), 0.0);
     for (size_t c = 0; c < v.size(); ++c) sum[c] += weight * v[c];
   };
-  FixedCosineAverageNodes(layer, one);
+  FixedCosineAverageNodes(layer, one, nodes);
   return sum;
 }
 
@@ -82,8 +87,8 @@ std::vector<double> FixedCosineAverageChannels(E&& e, double layer) {
 /// x = pi/2, and near x = 0 (mu ~ x) the same layer as in mu, so the same geometric panels in
 /// x, from `layer` (clamped to [1e-4, 0.1]) up to pi/2. e is called in ascending mu.
 template <class E>
-std::vector<double> FixedCosineAverageAngle(E&& e, double layer) {
-  const GaussRule01& rule = CachedGaussLegendre01(kCosineAverageNodes);
+std::vector<double> FixedCosineAverageAngle(E&& e, double layer, int nodes = kCosineAverageNodes) {
+  const GaussRule01& rule = CachedGaussLegendre01(nodes);
   const double halfPi = 1.5707963267948966;
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 0.1); b < halfPi; b *= 4) breaks.push_back(b);
@@ -91,7 +96,7 @@ std::vector<double> FixedCosineAverageAngle(E&& e, double layer) {
   std::vector<double> sum;
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
-    for (int i = 0; i < kCosineAverageNodes; ++i) {
+    for (int i = 0; i < nodes; ++i) {
       double x = a + h * rule.x[i], mu = std::sin(x);
       std::vector<double> v = e(mu);
       sum.resize(v.size(), 0.0);

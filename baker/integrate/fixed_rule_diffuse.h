@@ -31,4 +31,14 @@ bool DiffuseRuleGradesGrazing(const AnyModel& model);
 /// to adaptive quadrature at 1e-10; the measured worst is printed there).
 constexpr double kDiffuseRuleBound = 1e-7;
 
+/// The lookup-error search's node counts (a verification-grade reference, issue #13): 6 x 4 per
+/// panel (theta_l x phi), within 6.6e-7 of the bake's rule (burley at mu = 0, r = 1) for every
+/// catalogue diffuse model at 0.375 of its evaluations (tests/lookup_search_reference.cpp; the
+/// search adds kSearchRuleBound, fixed_rule_microfacet.h, to what it finds).
+constexpr DiffuseRuleOptions kSearchDiffuseRuleOptions = {6, 4};
+
+/// The bake rule's evaluations per search-rule evaluation, at most (8 x 8 against 6 x 4 nodes
+/// per panel: 64 / 24 = 2.67): the search charges each of its evaluations this many.
+constexpr double kSearchDiffuseCharge = 2.6;
+
 }  // namespace kiln

@@ -43,6 +43,27 @@ MicrofacetRuleOptions TunedMicrofacetRuleOptions(const FixedRuleModel& model);
 /// The node counts the bake uses for ggx-fresnel-albedo.
 MicrofacetRuleOptions TunedFresnelRuleOptions();
 
+/// The lookup-error search's node counts for `model` (a verification-grade reference, issue #13):
+/// about half the bake's evaluations, within kSearchRuleBound of the bake's rule
+/// (tests/lookup_search_reference.cpp holds both on dense grids, corners included).
+MicrofacetRuleOptions SearchMicrofacetRuleOptions(const FixedRuleModel& model);
+
+/// The same for ggx-fresnel-albedo.
+MicrofacetRuleOptions SearchFresnelRuleOptions();
+
+/// How far a search rule (this one, the diffuse one, the averages over them) may lie from the
+/// bake's rule at any point, absolute: the search adds it to the max it finds before it declares.
+constexpr double kSearchRuleBound = 2e-6;
+
+/// The bake rule's integrand evaluations per search-rule evaluation of `model`, at most: the
+/// search charges each of its evaluations this many, so that its budget, counted in the bake
+/// rule's evaluations, buys at least the points it bought with the bake rule
+/// (tests/lookup_search_reference.cpp measures the ratio on a grid: 1.90 for ggx-separable,
+/// 2.04 to 2.07 for the others).
+double SearchMicrofacetCharge(const FixedRuleModel& model);
+/// The same for ggx-fresnel-albedo (measured 1.72).
+constexpr double kSearchFresnelCharge = 1.7;
+
 /// Split-sum DFG (A, B) of `model` at view cosine mu in [0, 1] and alpha > 0 (clamped to
 /// MinAlpha), by the fixed rule with node counts `opt`; evals (optional) accumulates the
 /// integrand evaluations. Deterministic: the same arguments give the same bits.

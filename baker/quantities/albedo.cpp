@@ -46,6 +46,13 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return {ab[0] + ab[1]};
 }
 
+/// The lookup-error search's form of FixedRule (DiffuseSearchRuleAt, MicrofacetSearchRuleAt).
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (DiffuseFixedRuleApplies(spec)) return DiffuseSearchRuleAt(spec, x, stats);
+  std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
+  return {ab[0] + ab[1]};
+}
+
 std::string FixedRuleMethod(const TableSpec& spec) {
   return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
                                        : MicrofacetFixedRuleMethod(spec);
@@ -90,6 +97,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

@@ -56,6 +56,11 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return AverageFixedRule(AlbedoSpecFor(spec), x, stats);
 }
 
+/// The lookup-error search's form: the same mu rule over the albedo's search rule.
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  return AverageFixedRule(AlbedoSpecFor(spec), x, stats, true);
+}
+
 std::string FixedRuleMethod(const TableSpec& spec) {
   return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
@@ -96,6 +101,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = OverRoughness;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

@@ -1,6 +1,7 @@
 #include "baker/quantities/common.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <type_traits>
@@ -138,6 +139,24 @@ std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double*
   return ab;
 }
 
+std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double* x,
+                                             IntegrationStats& stats) {
+  if (spec.model == "ggx") {
+    std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+    stats.errorEstimate = 0;
+    return ab;
+  }
+  FixedRuleModel m;
+  FixedRuleModelFor(spec.model.c_str(), &m);
+  double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
+  long long evals = 0;
+  std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, Clamp(x[0], 0.0, 1.0), alpha,
+                                                    SearchMicrofacetRuleOptions(m), &evals);
+  stats.evals += std::llround(static_cast<double>(evals) * SearchMicrofacetCharge(m));
+  stats.errorEstimate = kSearchRuleBound;
+  return ab;
+}
+
 std::string MicrofacetFixedRuleMethod(const TableSpec& spec) {
   if (spec.model == "ggx") return GgxFixedRuleMethod(spec);
   return "GGX visible-normal space (Heitz 2018) with the model's NDF and Smith term as smooth "
@@ -185,6 +204,18 @@ std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double
   return {e};
 }
 
+std::vector<double> FresnelAlbedoSearchRuleAt(const TableSpec& spec, const double* x,
+                                              IntegrationStats& stats) {
+  std::array<double, 3> p = FresnelAlbedoPoint(spec, x);
+  double alpha = std::max(AlphaFromPerceptual(Clamp(p[1], 0.0, 1.0)), MinAlpha);
+  long long evals = 0;
+  double e = FixedRuleGGXFresnelAlbedo(Clamp(p[0], 0.0, 1.0), alpha, p[2],
+                                       SearchFresnelRuleOptions(), &evals);
+  stats.evals += std::llround(static_cast<double>(evals) * kSearchFresnelCharge);
+  stats.errorEstimate = kSearchRuleBound;
+  return {e};
+}
+
 std::string FresnelAlbedoFixedRuleMethod(const TableSpec&) {
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
          "integrand's analytic scales and at the Fresnel layer (o.h ~ sqrt(eta^2 - 1)), exact "
@@ -205,6 +236,16 @@ std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
   return RhoChannels(spec, e);
 }
 
+std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
+                                        IntegrationStats& stats) {
+  long long evals = 0;
+  RhoParts e =
+      FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], kSearchDiffuseRuleOptions, &evals);
+  stats.evals += std::llround(static_cast<double>(evals) * kSearchDiffuseCharge);
+  stats.errorEstimate = kSearchRuleBound;
+  return RhoChannels(spec, e);
+}
+
 std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
   DiffuseRuleOptions opt;
   bool graded = DiffuseRuleGradesGrazing(ModelAt(spec.model, 0));
@@ -216,7 +257,7 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
 }
 
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
-                                     IntegrationStats& stats) {
+                                     IntegrationStats& stats, bool search) {
   const size_t dims = albedo.axes.size();
   double x[4] = {0, 0, 0, 0};
   double layer = 1, innerBound = 0;
@@ -230,15 +271,22 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   auto e = [&](double mu) {
     x[0] = mu;
     IntegrationStats st;
-    std::vector<double> v = EvaluateSpec(albedo, x, st);
-    stats.evals += st.evals;
-    innerBound = std::max(innerBound,
-                          fixed ? st.errorEstimate : 10 * std::max(st.errorEstimate, albedo.tol));
+    std::vector<double> v = search ? SearchReference(albedo, x, st) : EvaluateSpec(albedo, x, st);
+    // The search's form takes kSearchAverageNodes per panel: each inner evaluation is charged
+    // for the kCosineAverageNodes / kSearchAverageNodes the bake's rule takes in its place.
+    stats.evals += search ? std::llround(static_cast<double>(st.evals) * kCosineAverageNodes /
+                                         kSearchAverageNodes)
+                          : st.evals;
+    innerBound = std::max(innerBound, search  ? st.errorEstimate
+                                      : fixed ? st.errorEstimate
+                                              : 10 * std::max(st.errorEstimate, albedo.tol));
     return v;
   };
-  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer)
-                                                   : FixedCosineAverageAngle(e, kMinAngleLayer);
-  stats.errorEstimate = innerBound + kCosineAverageBound;
+  const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
+  std::vector<double> r = IsSpecular(albedo.model)
+                              ? FixedCosineAverageChannels(e, layer, nodes)
+                              : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
+  stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;
 }
 

@@ -68,6 +68,12 @@ bool MicrofacetFixedRuleApplies(const TableSpec& spec);
 std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double* x,
                                             IntegrationStats& stats);
 
+/// (A, B) at x by the search's verification-grade form of MicrofacetFixedRuleAt (QuantityInfo::
+/// searchRule: SearchMicrofacetRuleOptions, errorEstimate kSearchRuleBound, evals charged
+/// SearchMicrofacetCharge each); GGX (height-correlated) keeps its bake rule (errorEstimate 0).
+std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double* x,
+                                             IntegrationStats& stats);
+
 /// The method text of the spec's microfacet fixed rule.
 std::string MicrofacetFixedRuleMethod(const TableSpec& spec);
 
@@ -77,6 +83,11 @@ bool FresnelAlbedoFixedRuleApplies(const TableSpec& spec);
 /// E of the exact-Fresnel GGX fixed rule at x (axes as GgxFresnelAlbedoAt).
 std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double* x,
                                              IntegrationStats& stats);
+
+/// The search's verification-grade form of FresnelAlbedoFixedRuleAt (SearchFresnelRuleOptions,
+/// errorEstimate kSearchRuleBound, evals charged kSearchFresnelCharge each).
+std::vector<double> FresnelAlbedoSearchRuleAt(const TableSpec& spec, const double* x,
+                                              IntegrationStats& stats);
 
 /// The method text of the exact-Fresnel GGX fixed rule.
 std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec);
@@ -90,6 +101,11 @@ bool DiffuseFixedRuleApplies(const TableSpec& spec);
 std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
                                        IntegrationStats& stats);
 
+/// The search's verification-grade form of DiffuseFixedRuleAt (kSearchDiffuseRuleOptions,
+/// errorEstimate kSearchRuleBound, evals charged kSearchDiffuseCharge each).
+std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
+                                        IntegrationStats& stats);
+
 /// The method text of the diffuse fixed rule.
 std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 
@@ -99,8 +115,12 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 /// rule where it has one, adaptive quadrature to albedo.tol otherwise). Microfacet models: the
 /// mu rule with the layer alpha (and sqrt(|eta - 1|) with an eta axis); diffuse models: the angle
 /// rule. Sets stats.errorEstimate to the declared bound: the inner one plus kCosineAverageBound.
+/// With `search`: the search's form (QuantityInfo::searchRule), the same panels with
+/// kSearchAverageNodes per panel over E by SearchReference(albedo), each inner evaluation charged
+/// kCosineAverageNodes / kSearchAverageNodes times; errorEstimate is then the inner rule's distance
+/// bound from the bake's (the mu rule's weights sum to 1), evals as the inner rule charges them.
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
-                                     IntegrationStats& stats);
+                                     IntegrationStats& stats, bool search = false);
 
 /// The method text of AverageFixedRule over `albedo`.
 std::string AverageFixedRuleMethod(const TableSpec& albedo);

@@ -30,6 +30,12 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
+/// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt).
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
+  return DfgLayoutValues(spec, ab[0], ab[1]);
+}
+
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
@@ -76,6 +82,7 @@ const QuantityInfo& DfgQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = MicrofacetFixedRuleApplies;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = MicrofacetFixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

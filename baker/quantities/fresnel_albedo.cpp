@@ -80,6 +80,10 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return Stored(spec, x, FresnelAlbedoFixedRuleAt(spec, x, stats));
 }
 
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  return Stored(spec, x, FresnelAlbedoSearchRuleAt(spec, x, stats));
+}
+
 /// Roughness 0: a smooth dielectric interface, E = FrDielectric(mu, eta) (a residual of 0).
 bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
   if (!OnSmoothLimit(spec, x)) return false;
@@ -109,6 +113,7 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = FresnelAlbedoFixedRuleApplies;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = FresnelAlbedoFixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

@@ -53,6 +53,16 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return AverageFixedRule(AlbedoSpecFor(spec), rest, stats);
 }
 
+/// The lookup-error search's form: the same mu rule over fresnel-albedo's search rule.
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  double rest[2] = {Param(spec, "roughness", 0), Param(spec, "eta", 1.5)};
+  for (size_t i = 0; i < spec.axes.size(); ++i) {
+    if (spec.axes[i].name == "roughness") rest[0] = x[i];
+    if (spec.axes[i].name == "eta") rest[1] = x[i];
+  }
+  return AverageFixedRule(AlbedoSpecFor(spec), rest, stats, true);
+}
+
 std::string FixedRuleMethod(const TableSpec& spec) {
   return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
@@ -90,6 +100,7 @@ const QuantityInfo& FresnelAlbedoAvgQuantity() {
     q.catalogue = Catalogue;
     q.usesFixedRule = Always;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

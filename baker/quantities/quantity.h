@@ -104,6 +104,19 @@ struct QuantityInfo {
   // --- kiln bench --------------------------------------------------------------------------
   /// The Monte Carlo estimator the bench compares kiln with (bench/monte_carlo.h); null: none.
   const MonteCarloEstimator* monteCarlo = nullptr;
+
+  // --- Rule version and the lookup-error search's reference (issue #13) --------------------
+  /// The version of this kind's fixed rule, part of the spec hash of the tables it bakes
+  /// ("|fixed-rule:" + this): bump it when the rule changes its texels, and only this kind's
+  /// tables become stale. "2" for every kind that had the one shared tag "fixed-rule:2".
+  const char* fixedRuleVersion = "2";
+  /// A verification-grade form of fixedRule for the lookup-error search's points (null: the
+  /// search evaluates fixedRule itself). Called only when usesFixedRule. Sets
+  /// stats.errorEstimate to how far it may lie from fixedRule's value (0 where it is fixedRule),
+  /// which the search adds to the max it finds, and stats.evals to its integrand evaluations
+  /// charged at the bake rule's rate (kSearch*Charge: the search's budget buys the same points).
+  std::vector<double> (*searchRule)(const TableSpec& spec, const double* x,
+                                    IntegrationStats& stats) = nullptr;
 };
 
 /// The descriptor of `q`.

@@ -40,12 +40,14 @@ std::string TableSpec::Method() const {
   return UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
 }
 
-std::string TableSpec::Hash() const {
+std::string TableSpec::HashText() const {
+  const QuantityInfo& q = Describe(quantity);
   std::string text = std::string(kIntegratorVersion) + "|" + std::to_string(kFormatVersion) + "|" +
                      name + "|" + model + "|" + QuantityName(quantity) + "|" + G17(tol) + "|" +
                      ParamsText();
-  // The fixed rule's own version (its tuned node counts): its tables re-bake when it changes.
-  if (UsesFixedRule(*this)) text += "|fixed-rule:2";
+  // The kind's fixed-rule version (its tuned node counts, QuantityInfo::fixedRuleVersion): its
+  // tables, and only its, re-bake when it changes ("2" everywhere: the hashes of before).
+  if (UsesFixedRule(*this)) text += std::string("|fixed-rule:") + q.fixedRuleVersion;
   // Roughness 0 as the smooth limit (QuantityInfo::smoothLimit) changed the texels of the tables
   // it applies to, and only theirs: they re-bake, the rest of the catalogue keeps its hash.
   if (SmoothLimitApplies(*this)) text += "|smooth-limit:1";
@@ -53,6 +55,11 @@ std::string TableSpec::Hash() const {
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
             "," + warpName(a.warp);
+  return text;
+}
+
+std::string TableSpec::Hash() const {
+  const std::string text = HashText();
   uint64_t h = 1469598103934665603ull;  // FNV-1a 64
   for (unsigned char ch : text) {
     h ^= ch;
@@ -186,6 +193,17 @@ std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, Integra
   if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
   if (UsesFixedRule(spec)) return Describe(spec.quantity).fixedRule(spec, x, stats);
   return EvaluateSpec(spec, x, spec.tol, stats);
+}
+
+std::vector<double> SearchReference(const TableSpec& spec, const double* x,
+                                    IntegrationStats& stats) {
+  const QuantityInfo& q = Describe(spec.quantity);
+  std::vector<double> smooth;
+  if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
+  if (q.searchRule && UsesFixedRule(spec)) return q.searchRule(spec, x, stats);
+  std::vector<double> v = EvaluateSpec(spec, x, stats);
+  stats.errorEstimate = 0;
+  return v;
 }
 
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,

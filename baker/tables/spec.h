@@ -35,8 +35,12 @@ struct TableSpec {
   std::string ParamsText() const;
   /// The integration method, in words, for the kiln.method attribute.
   std::string Method() const;
-  /// Hex FNV-1a 64 of everything that determines the texels (and the integrator version).
+  /// Hex FNV-1a 64 of HashText().
   std::string Hash() const;
+  /// Everything that determines the texels, as text: the integrator version, format, name,
+  /// model, quantity, tolerance, params, the kind's fixed-rule version where its rule bakes the
+  /// table (QuantityInfo::fixedRuleVersion), the smooth-limit tag, channels and axes.
+  std::string HashText() const;
   /// The axes as the runtime sees them.
   std::vector<TableAxis> TableAxes() const;
   /// Number of texels.
@@ -100,6 +104,14 @@ constexpr double kFixedRuleBound = 6e-7;
 /// of a microfacet model, QuantityInfo::smoothLimit), else the fixed rule where UsesFixedRule,
 /// else adaptive quadrature to spec.tol. Throws std::invalid_argument for an unknown model.
 std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats);
+
+/// The reference of the lookup-error search (baker/bake/lookup_error.h) at x: the smooth limit
+/// where it applies, else the quantity's searchRule where UsesFixedRule and it has one (a
+/// verification-grade form of the fixed rule: stats.errorEstimate is its distance bound from the
+/// bake's rule, stats.evals charged at the bake rule's rate), else EvaluateSpec (errorEstimate
+/// then set to 0: the bake's own method).
+std::vector<double> SearchReference(const TableSpec& spec, const double* x,
+                                    IntegrationStats& stats);
 
 /// The same values by adaptive quadrature to `tol`, whatever the bake method (the independent
 /// references of the bake and lookup error checks); the smooth limit is exact at roughness 0.
