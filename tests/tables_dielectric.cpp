@@ -8,6 +8,8 @@
 
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
+#include "baker/models/fresnel.h"
+#include "cli_util.h"
 #include "scene_util.h"
 
 using namespace kiln;
@@ -57,4 +59,18 @@ TEST_CASE("the dielectric tables bake the same values with 1 and 2 threads", "[d
     REQUIRE(a.data.size() == b.data.size());
     CHECK(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(a.data[0])) == 0);
   }
+}
+
+TEST_CASE("kiln integrate albedo-r|albedo-t --model ggx-dielectric prints E_R, E_T",
+          "[dielectric]") {
+  auto t = RunKiln("integrate albedo-t --model ggx-dielectric --mu 0.5 --roughness 0 --eta 1.5");
+  REQUIRE(t.exitCode == 0);
+  CHECK(std::stod(t.out) == 1 - FrDielectric(0.5, 1.5));  // the smooth interface, exact
+  auto r = RunKiln("integrate albedo-r --model ggx-dielectric --mu 0.5 --roughness 0.5 --eta 0.7");
+  REQUIRE(r.exitCode == 0);
+  CHECK(std::stod(r.out) > FrDielectric(0.5, 0.7) - 0.5);  // a number, in (0, 1)
+  CHECK(std::stod(r.out) < 1);
+  auto bad = RunKiln("integrate albedo-r --model ggx --mu 0.5");
+  CHECK(bad.exitCode != 0);
+  CHECK(bad.err.find("ggx-dielectric") != std::string::npos);
 }
