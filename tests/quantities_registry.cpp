@@ -40,11 +40,15 @@ TEST_CASE("The names scenes, files and kiln integrate use are unchanged", "[quan
   CHECK(SceneTableKinds() ==
         std::vector<std::string>{"dfg", "albedo", "albedo-avg", "fresnel-albedo",
                                  "fresnel-albedo-avg", "fresnel-dielectric",
-                                 "fresnel-dielectric-avg", "fresnel-conductor"});
+                                 "fresnel-dielectric-avg", "fresnel-conductor", "albedo-r",
+                                 "albedo-t", "albedo-r-exit", "albedo-t-exit"});
   std::set<std::string> integrable;
   for (const QuantityInfo* q : AllQuantities())
     if (q->integrateName) integrable.insert(q->integrateName);
-  CHECK(integrable == std::set<std::string>{"albedo", "albedo-avg", "dfg", "fresnel-avg"});
+  CHECK(integrable == std::set<std::string>{"albedo", "albedo-avg", "albedo-r", "albedo-t", "dfg",
+                                            "fresnel-avg"});
+  CHECK(TableName(FindQuantity("albedo-r-exit")->id, "ggx-dielectric") ==
+        "ggx-dielectric-albedo-r-exit");
   CHECK(TableName(FindQuantity("dfg")->id, "ggx") == "ggx-dfg");
   CHECK(TableName(FindQuantity("fresnel-albedo")->id, "ggx") == "ggx-fresnel-albedo");
   CHECK(TableName(FindQuantity("fresnel-conductor")->id, "none") == "fresnel-conductor");

@@ -35,6 +35,9 @@ struct ModelInfo {
   bool hasRho2;           ///< has a term quadratic in rho (tables get a separate channel)
   IntegrationDomain domain;
   bool specular() const { return domain == IntegrationDomain::HalfVector; }
+  /// A BSDF (reflection and transmission, models/dielectric_bsdf.h): not in AllModels() or
+  /// AnyModel (whose models are BRDFs over the upper hemisphere), listed by AllBsdfModels().
+  bool bsdf = false;
 };
 
 /// Parameters as given on a command line; unset ones take the model's defaults.
@@ -54,6 +57,10 @@ using AnyModel =
 const std::vector<ModelInfo>& AllModels();
 /// The model with this id, or nullptr.
 const ModelInfo* FindModel(const std::string& id);
+/// Every BSDF model (ModelInfo::bsdf): the rough dielectric, ggx-dielectric.
+const std::vector<ModelInfo>& AllBsdfModels();
+/// The BSDF model with this id, or nullptr.
+const ModelInfo* FindBsdfModel(const std::string& id);
 /// Builds model `id`. Throws std::invalid_argument with one line naming the problem for an
 /// unknown id, a parameter the model does not take, or a value outside its range.
 AnyModel MakeModel(const std::string& id, const ModelParams& params);

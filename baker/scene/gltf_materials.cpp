@@ -55,7 +55,11 @@ class MaterialReader {
     scene_.notes.push_back({kind, topic, why, label_});
   }
   void Need(Quantity kind, std::map<std::string, ValueRange> ranges, const std::string& why) {
-    scene_.needs.push_back({kind, "ggx", std::move(ranges), label_ + ": " + why});
+    NeedModel(kind, "ggx", std::move(ranges), why);
+  }
+  void NeedModel(Quantity kind, const std::string& model, std::map<std::string, ValueRange> ranges,
+                 const std::string& why) {
+    scene_.needs.push_back({kind, model, std::move(ranges), label_ + ": " + why});
   }
   /// A factor in [lo, hi] multiplied by an optional texture: one value without a texture,
   /// [0, f] with one (the texture multiplies the factor), the whole axis when animated. `what`
@@ -213,6 +217,20 @@ void MaterialReader::Read() {
       if (transmits && vol) what += ", KHR_materials_volume";
       Need(Quantity::FresnelAlbedo, {{"roughness", rough}, {"eta", eta}},
            "dielectric layer (" + what + "), " + roughWhat);
+      if (transmits) {
+        // The rough glass interface (ggx-dielectric): the energy it reflects and transmits
+        // entering at eta = ior, and, with a volume (light leaves it through the back), the exit
+        // side at eta' = 1 / ior.
+        std::string why = "rough dielectric interface (" + what + "), " + roughWhat;
+        for (Quantity q : {Quantity::DielectricAlbedoR, Quantity::DielectricAlbedoT})
+          NeedModel(q, "ggx-dielectric", {{"roughness", rough}, {"eta", eta}}, why);
+        if (vol) {
+          ValueRange inv = eta.whole ? eta : ValueRange::Between(1 / eta.hi, 1 / eta.lo);
+          for (Quantity q : {Quantity::DielectricAlbedoRExit, Quantity::DielectricAlbedoTExit})
+            NeedModel(q, "ggx-dielectric", {{"roughness", rough}, {"eta", inv}},
+                      why + ", exit side eta = 1/ior " + inv.Text());
+        }
+      }
       if (transmits && vol)
         Note(Kind::NoTable, "KHR_materials_volume",
              "attenuation is Beer-Lambert (closed form); refraction uses the dielectric table");

@@ -183,9 +183,13 @@ Scene ReadKilnScene(const Json& doc, const std::string& path) {
     r.Fail("/kiln_scene",
            "version " + std::to_string(version->get<long long>()) + ", kiln reads version 1");
   for (auto it = doc.begin(); it != doc.end(); ++it)
-    if (it.key() != "kiln_scene" && it.key() != "materials" && it.key() != "description")
-      r.Fail(PointerChild("", it.key()),
-             "unknown key '" + it.key() + "' (keys: kiln_scene, materials, description)");
+    if (it.key() != "kiln_scene" && it.key() != "materials" && it.key() != "description") {
+      // The key as JSON writes it (control characters escaped): the message stays one line.
+      std::string key = Json(it.key()).dump(-1, ' ', true, Json::error_handler_t::replace);
+      key = key.substr(1, key.size() - 2);
+      r.Fail(PointerChild("", key),
+             "unknown key '" + key + "' (keys: kiln_scene, materials, description)");
+    }
   const Json* materials = JsonReader::Find(doc, "materials");
   if (!materials) r.Fail("/materials", "missing (an array of materials)");
   r.Array(*materials, "/materials");

@@ -19,6 +19,7 @@ std::string NameTag(const std::string& axis) {
 
 bool HasRoughness(const std::string& model) {
   const ModelInfo* m = FindModel(model);
+  if (!m) m = FindBsdfModel(model);
   if (!m) return false;
   for (const ParamInfo& p : m->params)
     if (p.name == "roughness") return true;
@@ -78,7 +79,7 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
 }  // namespace
 
 TableSpec WholeTableSpec(Quantity kind, const std::string& model, const PlanOptions& opt) {
-  if (!FindModel(model) && model != "none")
+  if (!FindModel(model) && !FindBsdfModel(model) && model != "none")
     throw std::invalid_argument("plan: unknown model '" + model + "'");
   CatalogueOptions copt;
   copt.size = opt.size;

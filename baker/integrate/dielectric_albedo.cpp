@@ -1,0 +1,356 @@
+// E_R and E_T of the GGX dielectric over the visible microfacet normals.
+//
+// Derivation. For a view o = (sin_o, 0, mu) above the interface, every microfacet normal m with
+// c = o.m > 0 either reflects o to i_r = 2 c m - o (weight F(c)) or refracts it to
+// i_t = -o / eta + (c / eta - cos_t) m, cos_t = sqrt(c^2 + eta^2 - 1) / eta (weight 1 - F(c); none
+// under total internal reflection, c < c_crit = sqrt(1 - eta^2) when eta < 1). With the Jacobians
+// of the two maps (Walter 2007 eq. 14 and 17) the integrals over i become, in both cases,
+//     E = integral D(m) c G2(o, i) w / mu dm,   w = F [mu_i > 0] or (1 - F) [mu_i < 0]
+// (a ray sent to the wrong side is lost: single scattering). Walk m by (v, phi): v = a^2 / (a^2 +
+// tan^2 theta_m) is GGX's complementary CDF of D cos, so D cos dm = dv dphi / (2 pi), and by the
+// mirror symmetry phi -> -phi
+//     E = (1 / pi) int_0^1 dv int_0^pi dphi (c / cos_m) / (mu + mu Lambda(o) + mu Lambda(i)) w,
+// the integrand bounded except for the 1 / cos_m of the GGX tail (v -> 0, handled by the smoothstep
+// below). Along an azimuth circle (theta_m fixed), c = mu cos_m + sin_o sin_m cos(phi) is monotone,
+// so every structure is a threshold c = c0, at cos(phi) = (c0 - mu cos_m) / (sin_o sin_m):
+//   c0 = 0                  visibility (the end of the range),
+//   c0 = mu / (2 cos_m)     the reflected ray's horizon,
+//   c0 = c_crit             total internal reflection (eta < 1: F has a square-root kink),
+//   c0 = (k^2 eta^2 - eta^2 + 1) / (2 k eta), k = mu / (eta cos_m)
+//                           the refracted ray's horizon (eta < 1 only: for eta > 1 it always goes
+//                           down; derived from mu_t = 0 and the decrease of c / eta - cos_t in c),
+//   c0 = eps, 4 eps         eps = sqrt(|eta^2 - 1|): the Fresnel layer near eta = 1 (F has branch
+//                           points at c = +-i eps), a smooth but steep structure.
+// Those are the inner panel boundaries; the outer ones (in theta_m) are where a threshold curve
+// meets phi = 0 or pi (cos(theta_m -+ theta_o) = c0: closed forms, and a scan with bisection for
+// the refracted horizon). Every panel maps t in [0, 1] through the smoothstep 3t^2 - 2t^3, which
+// turns the square-root and x^(3/2) behaviour at the thresholds (and the cos_m^-1 ~ v^(-1/2) of
+// the tail) into analytic functions of t: Gauss converges fast on each panel.
+// The adaptive rule bisects those panels (Gauss-Kronrod 15, to the tolerance); the fixed rule
+// takes the same panels with a fixed Gauss rule per panel, summed in one order (deterministic).
+#include "baker/integrate/dielectric_albedo.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/math/quadrature.h"
+#include "baker/models/fresnel.h"
+#include "baker/models/microfacet.h"
+#include "baker/models/roughness.h"
+
+namespace kiln {
+namespace {
+
+constexpr int kMaxBreaks = 64;
+
+/// The view and interface: what every evaluation needs.
+struct View {
+  double mu, st, thetaO, eta, eta2m1, cCrit, eps;
+  double gDen;  ///< mu + mu Lambda(o)
+  GGXDistribution dist;
+};
+
+View MakeView(double mu, double alpha, double eta) {
+  View v;
+  v.mu = Clamp(mu, 0.0, 1.0);
+  v.st = std::sqrt(std::max(0.0, (1 - v.mu) * (1 + v.mu)));
+  v.thetaO = std::acos(v.mu);
+  v.eta = eta;
+  v.eta2m1 = (eta - 1) * (eta + 1);
+  v.cCrit = eta < 1 ? std::sqrt(-v.eta2m1) : 0;
+  v.eps = std::sqrt(std::abs(v.eta2m1));
+  v.dist.alpha = std::max(alpha, MinAlpha);
+  v.gDen = v.mu + v.dist.MuLambda(v.mu);
+  return v;
+}
+
+/// mu of the refracted ray for c = o.m above the critical cosine, at microfacet cosine cosM.
+inline double MuRefracted(const View& v, double c, double cosM) {
+  double cosT = std::sqrt(std::max(0.0, c * c + v.eta2m1)) / v.eta;
+  return -v.mu / v.eta + (c / v.eta - cosT) * cosM;
+}
+
+/// The integrand {R, T} at microfacet polar angle h and azimuth cos(phi) = cp (without 1/pi).
+inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
+  Channels<2> out{0, 0};
+  double c = v.mu * h.cosTheta + v.st * h.sinTheta * cp;
+  if (!(c > 0) || !(h.cosTheta > 0)) return out;
+  double base = c / h.cosTheta;
+  double F = FrDielectric(std::min(c, 1.0), v.eta);
+  double muR = 2 * c * h.cosTheta - v.mu;
+  if (muR > 0 && F > 0) out[0] = base * F / (v.gDen + v.mu * (v.dist.MuLambda(muR) / muR));
+  if (F < 1) {
+    double muT = -MuRefracted(v, c, h.cosTheta);  // > 0: the ray goes down
+    if (muT > 0) out[1] = base * (1 - F) / (v.gDen + v.mu * (v.dist.MuLambda(muT) / muT));
+  }
+  return out;
+}
+
+/// Threshold cosines c0 of the inner structures at microfacet polar angle h (see file comment).
+int Thresholds(const View& v, PolarParam h, double* c0) {
+  int n = 0;
+  c0[n++] = v.mu / (2 * h.cosTheta);
+  if (v.eta != 1) {
+    c0[n++] = v.eps;
+    c0[n++] = 4 * v.eps;
+  }
+  // The reflected ray's masking layer, mu_i ~ min(mu, alpha): geometric thresholds in mu_i.
+  double scale = std::min(v.mu, v.dist.alpha);
+  for (double m = scale / 4; m > 0 && m < 0.25 && n < 20; m *= 4)
+    c0[n++] = (m + v.mu) / (2 * h.cosTheta);
+  if (v.eta < 1) {
+    c0[n++] = v.cCrit;
+    // mu_t = -m for m = 0 (the horizon) and the masking layer's geometric m below mu.
+    for (double m = 0; n < 30; m = m == 0 ? scale / 4 : 4 * m) {
+      double k = (v.mu / v.eta - m) / h.cosTheta;
+      if (!(k > 0)) break;
+      double c = (k * k * v.eta * v.eta - v.eta * v.eta + 1) / (2 * k * v.eta);
+      if (c >= k * v.eta && c > v.cCrit && c < 1) c0[n++] = c;
+      if (!(scale > 0) || m > 0.25) break;
+    }
+  }
+  return n;
+}
+
+/// Inner panel boundaries in phi over [0, phiMax] at polar angle h; returns their count (>= 2), or
+/// 0 when nothing is visible.
+int PhiBreaks(const View& v, PolarParam h, double* phis) {
+  double den = v.st * h.sinTheta;
+  auto cosPhiOf = [&](double c0) { return (c0 - v.mu * h.cosTheta) / den; };
+  double phiMax = Pi;
+  if (den > 0) {
+    double cEnd = cosPhiOf(0);
+    if (cEnd >= 1) return 0;
+    if (cEnd > -1) phiMax = std::acos(cEnd);
+  } else if (!(v.mu * h.cosTheta > 0)) {
+    return 0;
+  }
+  int n = 0;
+  phis[n++] = 0;
+  if (den > 0) {
+    double c0[32];
+    int nc = Thresholds(v, h, c0);
+    for (int i = 0; i < nc; ++i) {
+      double cp = cosPhiOf(c0[i]);
+      if (cp > -1 && cp < 1) {
+        double p = std::acos(cp);
+        if (p > 0 && p < phiMax) phis[n++] = p;
+      }
+    }
+  }
+  phis[n++] = phiMax;
+  SortSmall(phis, n);
+  return n;
+}
+
+/// Outer panel boundaries in theta_m over [0, pi/2].
+int ThetaBreaks(const View& v, double* thetas) {
+  int n = 0;
+  const double to = v.thetaO, end = Pi / 2;
+  auto add = [&](double t) {
+    if (t > 0 && t < end && n < kMaxBreaks - 2) thetas[n++] = t;
+  };
+  thetas[n++] = 0;
+  // Reflection horizon meets phi = pi and phi = 0; visibility meets phi = pi.
+  add(Pi / 4 - to / 2);
+  add(Pi / 4 + to / 2);
+  add(Pi / 2 - to);
+  // Constant thresholds meet phi = 0 (cos(theta - theta_o) = c0) and phi = pi.
+  double cs[4];
+  int nc = 0;
+  if (v.eta != 1) {
+    cs[nc++] = v.eps;
+    cs[nc++] = 4 * v.eps;
+  }
+  if (v.eta < 1) cs[nc++] = v.cCrit;
+  for (int i = 0; i < nc; ++i) {
+    if (!(cs[i] < 1)) continue;
+    double a = std::acos(cs[i]);
+    add(to + a);
+    add(to - a);
+    add(a - to);
+    // ... and cross the reflected horizon c0 = mu / (2 cos_m) inside the circle.
+    if (v.mu < 2 * cs[i]) add(std::acos(v.mu / (2 * cs[i])));
+  }
+  // The refracted horizon appears where it crosses c_crit: cos_m = mu / c_crit.
+  if (v.eta < 1 && v.mu < v.cCrit) add(std::acos(v.mu / v.cCrit));
+  // The refracted horizon meets phi = 0 or pi: sign changes of mu_t along theta_m, by a scan and
+  // bisection (a fixed number of steps: deterministic).
+  if (v.eta < 1) {
+    for (int side = 0; side < 2; ++side) {
+      auto muT = [&](double t, bool* ok) {
+        double c = std::cos(side == 0 ? t - to : t + to);
+        *ok = c > v.cCrit;
+        return MuRefracted(v, c, std::cos(t));
+      };
+      const int steps = 64;
+      double ta = 0;
+      bool okA;
+      double fa = muT(ta, &okA);
+      for (int s = 1; s <= steps; ++s) {
+        double tb = end * s / steps;
+        bool okB;
+        double fb = muT(tb, &okB);
+        // One end under total internal reflection: move it to the critical point (bisection).
+        double ua = ta, ub = tb, ga = fa, gb = fb;
+        if (okA != okB) {
+          double lo = ta, hi = tb;
+          for (int it = 0; it < 60; ++it) {
+            double mid = (lo + hi) / 2;
+            bool okM;
+            muT(mid, &okM);
+            (okM == okA ? lo : hi) = mid;
+          }
+          bool dummy;
+          if (okA) {
+            ub = lo;
+            gb = muT(ub, &dummy);
+          } else {
+            ua = hi;
+            ga = muT(ua, &dummy);
+          }
+        }
+        if ((okA || okB) && (ga > 0) != (gb > 0)) {
+          double lo = ua, hi = ub;
+          fa = ga;
+          for (int it = 0; it < 60; ++it) {
+            double mid = (lo + hi) / 2;
+            bool okM;
+            double fm = muT(mid, &okM);
+            ((fm > 0) == (fa > 0) ? lo : hi) = mid;
+          }
+          add((lo + hi) / 2);
+        }
+        ta = tb;
+        fa = fb;
+        okA = okB;
+      }
+    }
+  }
+  // Grazing views: the cuts sweep over theta_m ~ mu / 2 at the start and pi/2 - theta_m ~ mu / 2
+  // at the end (hemisphere.h): geometric panels there. Then the GGX tail, whose v ~ alpha^2 /
+  // tan^2 theta_m compresses theta_m ~ 1 into v ~ alpha^2: geometric panels in tan theta_m from
+  // alpha up, so that every panel spans a bounded ratio of v.
+  double thetaCut = v.mu / 2;
+  if (thetaCut > 0 && thetaCut < 0.125)
+    for (double t = 4 * thetaCut; t < 0.5; t *= 4) {
+      add(t);
+      add(end - t);
+    }
+  for (double tn = 2 * v.dist.alpha; tn < 64; tn *= 4) add(std::atan(tn));
+  thetas[n++] = end;
+  SortSmall(thetas, n);
+  return n;
+}
+
+/// The smoothstep map of panel [a, b] at t in [0, 1]: the point and its Jacobian.
+inline double Smooth(double a, double b, double t, double* jac) {
+  *jac = (b - a) * 6 * t * (1 - t);
+  return a + (b - a) * t * t * (3 - 2 * t);
+}
+
+/// Both rules: `inner(h, phis, n, weight)` integrates one azimuth circle over its panels,
+/// `outer(f, vs, n)` the circles over v.
+template <class Inner, class Outer>
+Channels<2> Integrate(const View& v, Inner&& inner, Outer&& outer) {
+  double thetas[kMaxBreaks];
+  int nt = ThetaBreaks(v, thetas);
+  double vs[kMaxBreaks];
+  for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : v.dist.VFromTheta(thetas[i]);
+  int panels = nt - 1;
+  // Outer variable x in [0, panels], panel i at [i, i + 1], v decreasing from vs[i] to vs[i+1].
+  auto circle = [&](double x) -> Channels<2> {
+    int i = std::min(static_cast<int>(x), panels - 1);
+    double t = x - i, jac;
+    double vv = Smooth(vs[i], vs[i + 1], t, &jac);
+    jac = -jac;
+    if (!(vv > 0) || !(jac > 0)) return Channels<2>{};
+    PolarParam h = v.dist.FromV(vv);
+    double phis[40];
+    int np = PhiBreaks(v, h, phis);
+    if (np < 2) return Channels<2>{};
+    return (jac / Pi) * inner(h, phis, np, jac);
+  };
+  return outer(circle, panels);
+}
+
+/// The bake's node counts.
+const DielectricRuleOptions kTuned = {24, 16};
+
+}  // namespace
+
+std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {
+  double F = FrDielectric(Clamp(mu, 0.0, 1.0), eta);
+  return {F, 1 - F};
+}
+
+std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
+                                       const IntegrationOptions& opt, IntegrationStats& stats) {
+  View v = MakeView(mu, alpha, eta);
+  double innerTol = opt.tol / 10;
+  int panelsSeen = 1;
+  auto inner = [&](PolarParam h, const double* phis, int np, double jac) {
+    auto f = [&](double x) -> Channels<2> {
+      int i = std::min(static_cast<int>(x), np - 2);
+      double t = x - i, dj;
+      double phi = Smooth(phis[i], phis[i + 1], t, &dj);
+      ++stats.evals;
+      return dj * Integrand(v, h, std::cos(phi));
+    };
+    double xs[40];
+    for (int i = 0; i < np; ++i) xs[i] = i;
+    // The outer rule weighs this by jac / pi: a circle of tiny weight needs less precision.
+    double tolHere = innerTol * Pi / (jac * panelsSeen);
+    return IntegrateAdaptive<2>(f, xs, np, tolHere, opt.maxPanels);
+  };
+  double err = 0;
+  auto outer = [&](auto& circle, int panels) {
+    panelsSeen = panels;
+    double xs[kMaxBreaks];
+    for (int i = 0; i <= panels; ++i) xs[i] = i;
+    return IntegrateAdaptive<2>(circle, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
+  };
+  Channels<2> r = Integrate(v, inner, outer);
+  stats.errorEstimate = err;
+  return r;
+}
+
+DielectricRuleOptions TunedDielectricRuleOptions() { return kTuned; }
+
+std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
+                                                const DielectricRuleOptions& opt,
+                                                long long* evals) {
+  View v = MakeView(mu, alpha, eta);
+  const GaussRule01& gi = CachedGaussLegendre01(opt.innerNodes);
+  const GaussRule01& go = CachedGaussLegendre01(opt.outerNodes);
+  long long count = 0;
+  auto inner = [&](PolarParam h, const double* phis, int np, double) {
+    Channels<2> sum{0, 0};
+    for (int p = 0; p + 1 < np; ++p) {
+      if (!(phis[p + 1] > phis[p])) continue;
+      for (size_t k = 0; k < gi.x.size(); ++k) {
+        double dj;
+        double phi = Smooth(phis[p], phis[p + 1], gi.x[k], &dj);
+        ++count;
+        sum += (gi.w[k] * dj) * Integrand(v, h, std::cos(phi));
+      }
+    }
+    return sum;
+  };
+  auto outer = [&](auto& circle, int panels) {
+    Channels<2> sum{0, 0};
+    for (int i = 0; i < panels; ++i)
+      for (size_t k = 0; k < go.x.size(); ++k) sum += go.w[k] * circle(i + go.x[k]);
+    return sum;
+  };
+  Channels<2> r = Integrate(v, inner, outer);
+  if (evals) *evals += count;
+  return r;
+}
+
+std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
+                                                long long* evals) {
+  return FixedRuleDielectricAlbedo(mu, alpha, eta, kTuned, evals);
+}
+
+}  // namespace kiln

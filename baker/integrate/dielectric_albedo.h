@@ -1,0 +1,46 @@
+// The energy a rough dielectric interface (models/dielectric_bsdf.h: GGX, height-correlated Smith,
+// exact Fresnel; Walter et al. 2007) reflects and transmits for a view above it:
+//     E_R(mu) = integral f_r(wo, wi) |cos_i| dwi   over the upper hemisphere,
+//     E_T(mu) = integral fhat_t(wo, wi) |cos_i| dwi over the lower one (importance form: without
+//               the 1/eta^2 radiance factor),
+// so that E_R + E_T <= 1, with equality for a smooth interface (E_R = F(mu), E_T = 1 - F(mu)).
+// Both are integrals over the visible microfacet normals (derivation in dielectric_albedo.cpp).
+// Two rules with the same panels: adaptive Gauss-Kronrod to a tolerance (the reference) and a
+// fixed Gauss rule (the bake), which the tests hold to the reference.
+#pragma once
+#include <array>
+
+#include "baker/integrate/hemisphere.h"
+
+namespace kiln {
+
+/// {E_R, E_T} of the GGX dielectric at view cosine mu in [0, 1], GGX alpha > 0 (at least
+/// MinAlpha), eta = inside / outside in (0, inf), by adaptive quadrature to opt.tol (absolute,
+/// per channel). stats.errorEstimate: the outer rule's estimate.
+std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
+                                       const IntegrationOptions& opt, IntegrationStats& stats);
+
+/// Node counts of the fixed rule: Gauss nodes per outer (theta_m) and inner (phi_m) panel.
+struct DielectricRuleOptions {
+  int outerNodes = 12;
+  int innerNodes = 12;
+};
+
+/// The bake's node counts (dielectric_albedo.cpp, kTuned).
+DielectricRuleOptions TunedDielectricRuleOptions();
+
+/// {E_R, E_T} as DielectricAlbedo, by the fixed rule: deterministic, the same arguments give the
+/// same bits. evals (optional) accumulates integrand evaluations.
+std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
+                                                const DielectricRuleOptions& opt,
+                                                long long* evals = nullptr);
+std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
+                                                long long* evals = nullptr);
+
+/// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
+constexpr double kDielectricRuleBound = 6e-7;
+
+/// The smooth interface (alpha = 0): {F(mu, eta), 1 - F(mu, eta)}.
+std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta);
+
+}  // namespace kiln

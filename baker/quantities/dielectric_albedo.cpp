@@ -1,0 +1,218 @@
+// albedo-r, albedo-t (and their -exit sides): the energy the rough dielectric ggx-dielectric
+// (models/dielectric_bsdf.h, Walter 2007) reflects, E_R(mu), and transmits, E_T(mu) (importance
+// form: without the 1/eta^2 radiance factor, so E_R + E_T <= 1), over (mu, roughness, eta), the
+// 3D tables Cycles bakes for its multiple-scattering glass. Entering: eta in [1, 3]; exit: the
+// reciprocal side, eta' = 1/eta in [1/3, 1] (the view inside the denser medium: total internal
+// reflection for mu < sqrt(1 - eta'^2)). One family, four kinds that differ in two flags (which
+// channel, which side), so they share this file: each has its own descriptor and name.
+#include "baker/integrate/dielectric_albedo.h"
+#include "baker/models/fresnel.h"
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+constexpr const char* kModel = "ggx-dielectric";
+
+/// What distinguishes the kinds of the family.
+struct Kind {
+  Quantity id;
+  bool transmit;  ///< E_T (else E_R)
+  bool exit;      ///< eta in [1/3, 1] (else [1, 3])
+};
+
+const Kind kKinds[] = {{Quantity::DielectricAlbedoR, false, false},
+                       {Quantity::DielectricAlbedoT, true, false},
+                       {Quantity::DielectricAlbedoRExit, false, true},
+                       {Quantity::DielectricAlbedoTExit, true, true}};
+
+const Kind& KindOf(Quantity q) {
+  for (const Kind& k : kKinds)
+    if (k.id == q) return k;
+  return kKinds[0];
+}
+
+/// Where the domain starts: eta >= kEtaMin entering, eta' <= 1 / kEtaMin exit. At eta -> 1 the
+/// Fresnel term at grazing is a layer G(mu / sqrt(eta^2 - 1)) that collapses (F(0, eta) = 1 for
+/// every eta > 1, F = 0 at eta = 1), which no tensor grid interpolates: with the domain from
+/// eta = 1 the bake's search found a lookup error of 1.5 at (mu, r, eta) -> (0, 0, 1) (bake of
+/// ggx-dielectric-albedo-r over [1, 3], `kiln inspect`). Transparent dielectrics against air
+/// start near 1.2 (ice 1.31, water 1.33); 1.1 leaves the layer 0.46 wide. The planner refuses
+/// an ior outside (sceneDomain).
+constexpr double kEtaMin = 1.1;
+
+/// The eta axis of a side: entering [1.1, 3] with nodes denser near its start (sqrt warp: the
+/// Fresnel layer of width sqrt(eta^2 - 1) at grazing), exit [1/3, 1/1.1] linear.
+AxisSpec EtaAxis(bool exit) {
+  return exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 24, Warp::Linear}
+              : AxisSpec{"eta", kEtaMin, 3, 24, Warp::Sqrt};
+}
+
+template <Quantity Q>
+TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
+  const Kind& k = KindOf(Q);
+  std::string meaning =
+      k.transmit ? "E_T(mu): energy transmitted by the rough dielectric, without the 1/eta^2 "
+                   "radiance factor (1 - F(mu) at roughness 0)"
+                 : "E_R(mu): energy reflected by the rough dielectric (F(mu) at roughness 0)";
+  meaning += k.exit ? ", eta = inside / outside < 1: the view leaves the denser medium"
+                    : ", eta = inside / outside >= 1: the view enters the denser medium";
+  return Shell(Q, std::string(kModel) + "-" + QuantityName(Q), kModel, {k.transmit ? "E_T" : "E_R"},
+               {meaning}, std::move(axes));
+}
+
+template <Quantity Q>
+std::vector<AxisSpec> DefaultAxes(const std::string&) {
+  return {{"mu", 0, 1, 48, Warp::Root4Layer},
+          {"roughness", 0, 1, 32, Warp::Sqrt},
+          EtaAxis(KindOf(Q).exit)};
+}
+
+template <Quantity Q>
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  return {MakeSpec<Q>(kModel, DefaultAxes<Q>(kModel))};
+}
+
+/// (mu, r, eta) of x; an axis the planner fixed is read from params.
+std::array<double, 3> PointOf(const TableSpec& spec, const double* x) {
+  const Kind& k = KindOf(spec.quantity);
+  return {CoordinateOf(spec, x, "mu", 1), CoordinateOf(spec, x, "roughness", 0.5),
+          CoordinateOf(spec, x, "eta", k.exit ? 1 / 1.5 : 1.5)};
+}
+
+void CheckModel(const TableSpec& spec) {
+  if (spec.model != kModel)
+    throw std::invalid_argument(std::string(QuantityName(spec.quantity)) + " is baked for " +
+                                kModel + " only, not '" + spec.model + "'");
+}
+
+bool UsesRule(const TableSpec& spec) { return spec.model == kModel; }
+
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  CheckModel(spec);
+  const auto [mu, r, eta] = PointOf(spec, x);
+  std::array<double, 2> e =
+      FixedRuleDielectricAlbedo(mu, std::max(AlphaFromPerceptual(r), MinAlpha), eta, &stats.evals);
+  stats.errorEstimate = kDielectricRuleBound;
+  return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
+}
+
+std::string FixedRuleMethod(const TableSpec&) {
+  DielectricRuleOptions o = TunedDielectricRuleOptions();
+  return "fixed Gauss rule over the visible microfacet normals (v, phi_m), " +
+         std::to_string(o.outerNodes) + " x " + std::to_string(o.innerNodes) +
+         " nodes per panel, panels at the horizons, the critical angle and the Fresnel and masking "
+         "layers, smoothstep-mapped (integrate/dielectric_albedo.cpp)";
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  CheckModel(spec);
+  const auto [mu, r, eta] = PointOf(spec, x);
+  IntegrationOptions opt;
+  opt.tol = tol;
+  opt.maxPanels = 2000;
+  std::array<double, 2> e =
+      DielectricAlbedo(mu, std::max(AlphaFromPerceptual(r), MinAlpha), eta, opt, stats);
+  return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
+}
+
+/// Roughness 0: the smooth interface, E_R = F(mu, eta), E_T = 1 - F(mu, eta).
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (spec.model != kModel) return false;
+  const auto [mu, r, eta] = PointOf(spec, x);
+  if (r != 0.0) return false;
+  out = {SmoothDielectricAlbedo(mu, eta)[KindOf(spec.quantity).transmit ? 1 : 0]};
+  return true;
+}
+
+std::string Method(const TableSpec& spec) {
+  return "adaptive Gauss-Kronrod over the visible microfacet normals (v, phi_m) to " +
+         Full17(spec.tol) + " abs";
+}
+
+/// kiln integrate albedo-r|albedo-t --model ggx-dielectric --mu M --roughness R --eta E: any eta
+/// (entering or exit), the adaptive reference.
+template <Quantity Q>
+std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
+  const std::string cmd = "integrate " + req.name;
+  if (req.model.empty()) throw std::invalid_argument(cmd + ": needs --model " + kModel);
+  if (req.model != kModel)
+    throw std::invalid_argument(cmd + ": offered for --model " + kModel + " only, not '" +
+                                req.model + "'");
+  if (p.rho || p.f0 || p.k || p.rs || p.nu || p.nv)
+    throw std::invalid_argument(cmd + ": " + kModel + " takes only --roughness and --eta");
+  const ModelInfo& m = AllBsdfModels()[0];
+  double r = p.roughness.value_or(m.params[0].def), eta = p.eta.value_or(m.params[1].def);
+  if (!(r >= 0 && r <= 1))
+    throw std::invalid_argument(cmd + ": --roughness = " + Full17(r) + " is outside [0, 1]");
+  if (!(eta >= m.params[1].lo && eta <= m.params[1].hi))
+    throw std::invalid_argument(cmd + ": --eta = " + Full17(eta) + " is outside [0.01, 100]");
+  const int c = KindOf(Q).transmit ? 1 : 0;
+  if (r == 0) return Full17(SmoothDielectricAlbedo(req.mu, eta)[c]);
+  IntegrationOptions opt = RequestOptions(req);
+  opt.maxPanels = 2000;
+  return Full17(DielectricAlbedo(req.mu, AlphaFromPerceptual(r), eta, opt, stats)[c]);
+}
+
+template <Quantity Q>
+QuantityInfo MakeInfo(const char* name, const char* description) {
+  QuantityInfo q;
+  q.id = Q;
+  q.name = name;
+  q.description = description;
+  q.makeSpec = MakeSpec<Q>;
+  q.defaultAxes = DefaultAxes<Q>;
+  q.catalogue = Catalogue<Q>;
+  q.usesFixedRule = UsesRule;
+  q.fixedRule = FixedRule;
+  q.fixedRuleMethod = FixedRuleMethod;
+  q.evaluate = Evaluate;
+  q.smoothLimit = SmoothLimit;
+  q.method = Method;
+  // Scenes: KHR_materials_transmission (entering, eta = ior) and KHR_materials_volume (the exit
+  // side too, eta = 1 / ior); the eta axis is the whole domain (refused outside, not extended).
+  q.sceneKind = true;
+  q.sceneModel = kModel;
+  q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
+  q.sceneDomain = KindOf(Q).exit ? "glass seen from inside: eta = 1/ior, ior in [1.1, 3]"
+                                 : "glass: eta = ior in [1.1, 3]";
+  q.readsParams = true;
+  if (!KindOf(Q).exit) {  // kiln integrate takes any eta: one command per channel
+    q.integrateName = name;
+    q.integrateHelp = KindOf(Q).transmit ? "albedo-t (ggx-dielectric: E_T, --eta)"
+                                         : "albedo-r (ggx-dielectric: E_R, --eta)";
+    q.integrateNeedsMu = true;
+    q.integrate = Integrate<Q>;
+  }
+  return q;
+}
+
+}  // namespace
+
+const QuantityInfo& DielectricAlbedoRQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoR>(
+      "albedo-r", "rough dielectric's reflected energy E_R: glass, multiple scattering");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoTQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoT>(
+      "albedo-t", "rough dielectric's transmitted energy E_T: glass, multiple scattering");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoRExitQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoRExit>(
+      "albedo-r-exit", "E_R seen from inside the denser medium (eta < 1): glass");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoTExitQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoTExit>(
+      "albedo-t-exit", "E_T seen from inside the denser medium (eta < 1): glass");
+  return info;
+}
+
+}  // namespace kiln
