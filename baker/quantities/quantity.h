@@ -52,6 +52,10 @@ struct QuantityInfo {
   std::vector<AxisSpec> (*defaultAxes)(const std::string& model) = nullptr;
   /// This kind's entries of the default catalogue, before CatalogueOptions::size is applied.
   std::vector<TableSpec> (*catalogue)(const CatalogueOptions& opt) = nullptr;
+  /// False: the kind's catalogue entries are baked only on request (`kiln bake --only NAME`, a
+  /// scene that needs them), not by a plain `kiln bake` nor kept in `luts/`: kinds whose bake
+  /// is still slow or whose declared lookup error is still above the catalogue's 1e-3.
+  bool inDefaultCatalogue = true;
 
   // --- One texel ---------------------------------------------------------------------------
   /// True when the bake takes `spec`'s texels with a fixed rule (null: never).

@@ -85,8 +85,9 @@ TableSpec WholeTableSpec(Quantity kind, const std::string& model, const PlanOpti
   copt.size = opt.size;
   const QuantityInfo& q = Describe(kind);
   TableSpec s = q.makeSpec(model, q.defaultAxes(model));
-  for (const TableSpec& c : DefaultCatalogue(copt))
-    if (c.name == s.name && c.quantity == kind) return c;
+  for (const std::vector<TableSpec>& list : {DefaultCatalogue(copt), OnRequestTables(copt)})
+    for (const TableSpec& c : list)
+      if (c.name == s.name && c.quantity == kind) return c;
   // A kind of a model the catalogue does not list: the kind's default axes.
   if (opt.size > 0)
     for (AxisSpec& a : s.axes)

@@ -86,17 +86,32 @@ AxisSpec DefaultRoughnessAxis(const std::string& model) {
 
 AxisSpec DefaultEtaAxis() { return {"eta", 1, 3, 24, Warp::Sqrt}; }
 
-std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt) {
+namespace {
+
+std::vector<TableSpec> CatalogueEntries(const CatalogueOptions& opt, bool onRequestToo) {
   std::vector<TableSpec> out;
   for (const QuantityInfo* q : AllQuantities())
-    if (q->catalogue)
+    if (q->catalogue && (q->inDefaultCatalogue || onRequestToo))
       for (TableSpec& s : q->catalogue(opt)) out.push_back(std::move(s));
   for (TableSpec& s : out) Resize(s, opt.size);
   return out;
 }
 
+}  // namespace
+
+std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt) {
+  return CatalogueEntries(opt, false);
+}
+
+std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt) {
+  std::vector<TableSpec> out;
+  for (TableSpec& s : CatalogueEntries(opt, true))
+    if (!Describe(s.quantity).inDefaultCatalogue) out.push_back(std::move(s));
+  return out;
+}
+
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt) {
-  for (TableSpec& s : DefaultCatalogue(opt))
+  for (TableSpec& s : CatalogueEntries(opt, true))
     if (s.name == name) return s;
   throw std::invalid_argument("unknown table '" + name + "' (see the README's catalogue)");
 }

@@ -17,7 +17,12 @@ struct CatalogueOptions {
 /// order; each quantity's descriptor lists its entries).
 std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt = {});
 
-/// The catalogue entry with this name; throws std::invalid_argument naming the unknown table.
+/// The tables kiln bakes only on request (`--only`, a scene): kinds with
+/// QuantityInfo::inDefaultCatalogue false, in registry order.
+std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt = {});
+
+/// The catalogue entry with this name, in the default catalogue or on request; throws
+/// std::invalid_argument naming the unknown table.
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt = {});
 
 /// The models the catalogue bakes its per-model tables for (quantity descriptors iterate them).
