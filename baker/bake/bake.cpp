@@ -123,6 +123,13 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
     const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
     tbb::task_arena arena(Threads(opt.threads));
     arena.execute([&] {
+      // A fit (ltc) fills the whole table at once, in its own fixed order
+      // (QuantityInfo::bakeTable).
+      if (auto bakeAll = Describe(spec.quantity).bakeTable) {
+        bakeAll(spec, Threads(opt.threads), t, evals, errors);
+        bar.done = n;
+        return;
+      }
       tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t i = r.begin(); i != r.end(); ++i) {

@@ -65,7 +65,7 @@ std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
   return s;
 }
 
-std::vector<double> CellErrorEstimates(const LutView& view) {
+std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel) {
   const int dims = view.dims;
   int n[3] = {view.size(0), view.size(1), view.size(2)};
   int nc[3];
@@ -87,7 +87,7 @@ std::vector<double> CellErrorEstimates(const LutView& view) {
           mid[d] = j;
           hi[d] = j + 1;
           double m = 0;
-          for (int c = 0; c < view.channels; ++c) {
+          for (int c = firstChannel; c < view.channels; ++c) {
             double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
                    f2 = view.at(hi[0], hi[1], hi[2], c);
             m = std::max(m, std::abs(f0 - 2 * f1 + f2));
@@ -128,7 +128,9 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   }
   const int D = static_cast<int>(active.size());
   const size_t allCells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
-  std::vector<double> est = CellErrorEstimates(view);
+  // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
+  const int first = Describe(spec.quantity).firstIntegralChannel;
+  std::vector<double> est = CellErrorEstimates(view, first);
   est.resize(allCells, 0.0);
 
   // The order in which cells are searched: corners, then edge and other cells alternately, each
@@ -177,11 +179,11 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
     view.sample(x, got.data(), opt.filter);
     Sample s;
-    for (size_t ch = 0; ch < exact.size(); ++ch)
+    for (size_t ch = static_cast<size_t>(first); ch < exact.size(); ++ch)
       s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
     if (opt.alsoCubic) {
       view.sample(x, got.data(), Filter::Cubic);
-      for (size_t ch = 0; ch < exact.size(); ++ch)
+      for (size_t ch = static_cast<size_t>(first); ch < exact.size(); ++ch)
         s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
     }
     s.inCorner = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;

@@ -118,6 +118,10 @@ void RegisterInspect(CLI::App& app) {
     if (t.lookupError.cubicMax >= 0)
       std::printf("lookup cubic    max %.3g rms %.3g (same points)\n", t.lookupError.cubicMax,
                   t.lookupError.cubicRms);
+    if (t.fitError.max >= 0)
+      std::printf("fit error       max %.3g rms %.3g; polygon max %.3g rms %.3g (%s)\n",
+                  t.fitError.max, t.fitError.rms, t.fitError.polygonMax, t.fitError.polygonRms,
+                  t.fitError.method.c_str());
     std::printf("spec hash       %s\n", t.specHash.c_str());
     size_t nc = t.channels.size();
     const std::vector<std::string> exrNames = ExrChannelsOf(args->file, t);

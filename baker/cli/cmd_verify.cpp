@@ -204,7 +204,15 @@ void RegisterVerify(CLI::App& app) {
       bool ok =
           !checked || (t.lookupError.max >= 0 &&
                        rep.max <= t.lookupError.max + refTol + t.bakeError + rep.referenceError);
+      // A fitted table (ltc) also re-measures its declared fit error (QuantityInfo::verifyTable).
+      std::string fitSummary, fitProblem;
+      if (auto check = Describe(spec.quantity).verifyTable)
+        fitProblem = check(t, args->threads, fitSummary);
+      if (!fitProblem.empty()) ok = false;
       if (bar) ClearBar();
+      if (log && !fitSummary.empty())
+        std::fprintf(log, "%-36s %s\n", t.name.c_str(), fitSummary.c_str());
+      if (!fitProblem.empty()) std::fprintf(stderr, "%s: %s\n", f.c_str(), fitProblem.c_str());
       if (log) {
         std::fprintf(log, "%-36s max %.3e  declared %.3e  %6.2f s  %s\n", t.name.c_str(), rep.max,
                      t.lookupError.max, seconds,

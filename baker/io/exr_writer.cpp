@@ -44,7 +44,10 @@ void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, 
   header.compression() = Imf::ZIP_COMPRESSION;
   setKilnAttributes(header, table);
   const Imf::PixelType fileType = asHalf ? Imf::HALF : Imf::FLOAT;
-  const std::vector<std::string> names = exrChannelNames(table.channels.size());
+  // R, G, B, A for up to 4 channels; more (an ltc table's 6) by their kiln.channels names, which
+  // the loader reads as well.
+  const std::vector<std::string> names =
+      table.channels.size() <= 4 ? exrChannelNames(table.channels.size()) : table.channels;
   for (const std::string& channel : names)
     header.channels().insert(channel, Imf::Channel(fileType));
 
@@ -105,6 +108,13 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
     setDouble(h, "kiln.lookup_error.cubic_rms", t.lookupError.cubicRms);
   }
   setString(h, "kiln.spec_hash", t.specHash);
+  if (t.fitError.max >= 0) {
+    setDouble(h, "kiln.fit_error.max", t.fitError.max);
+    setDouble(h, "kiln.fit_error.rms", t.fitError.rms);
+    setDouble(h, "kiln.fit_error.polygon_max", t.fitError.polygonMax);
+    setDouble(h, "kiln.fit_error.polygon_rms", t.fitError.polygonRms);
+    setString(h, "kiln.fit_error.method", t.fitError.method);
+  }
 }
 
 void writeTable(const std::string& path, const Table& table, bool half, int threads) {
@@ -118,10 +128,6 @@ void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
   std::string problem;
   if (!validateTable(table, problem))
     throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
-  if (table.channels.size() > 4)
-    throw std::runtime_error("kiln: cannot write '" + path +
-                             "': " + std::to_string(table.channels.size()) +
-                             " channels; an EXR table has at most 4 (R, G, B, A)");
   if (half) {
     for (float v : table.data) {
       if (std::fabs(v) > kHalfMax)

@@ -21,6 +21,7 @@ struct ModelInfo;
 struct ModelParams;
 struct IntegrationStats;
 struct MonteCarloEstimator;
+struct Table;
 
 /// Every table kind, in registry order (baker/quantities/list.inc).
 enum class Quantity {
@@ -121,6 +122,21 @@ struct QuantityInfo {
   /// charged at the bake rule's rate (kSearch*Charge: the search's budget buys the same points).
   std::vector<double> (*searchRule)(const TableSpec& spec, const double* x,
                                     IntegrationStats& stats) = nullptr;
+  // --- Fitted tables (ltc) -----------------------------------------------------------------
+  /// When set, the bake fills every texel at once (a fit that starts each texel from its
+  /// neighbour's solution) instead of EvaluateSpec per texel: writes table.data (and
+  /// table.fitError), each texel's integrand evaluations to evals and its declared error
+  /// (IntegrationStats::errorEstimate of its integral channels) to errors. The same bits for any
+  /// thread count.
+  void (*bakeTable)(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
+                    std::vector<double>& errors) = nullptr;
+  /// The channels before this one are not integrals (fitted coefficients): the bake-error and
+  /// lookup-error checks compare only the channels from here on (evaluate returns 0 for the
+  /// others).
+  int firstIntegralChannel = 0;
+  /// An extra check `kiln verify` runs on a table of this kind (null: none): "" when it passes,
+  /// else one line naming the problem; `summary` gets one line of what it measured.
+  std::string (*verifyTable)(const Table& table, int threads, std::string& summary) = nullptr;
 };
 
 /// The descriptor of `q`.

@@ -164,6 +164,11 @@ void readAttributes(const Imf::Header& h, Table& table) {
   table.lookupError.cubicMax = optionalDouble(h, "kiln.lookup_error.cubic_max", -1.0);
   table.lookupError.cubicRms = optionalDouble(h, "kiln.lookup_error.cubic_rms", -1.0);
   table.specHash = optionalString(h, "kiln.spec_hash");
+  table.fitError.max = optionalDouble(h, "kiln.fit_error.max", -1.0);
+  table.fitError.rms = optionalDouble(h, "kiln.fit_error.rms", -1.0);
+  table.fitError.polygonMax = optionalDouble(h, "kiln.fit_error.polygon_max", -1.0);
+  table.fitError.polygonRms = optionalDouble(h, "kiln.fit_error.polygon_rms", -1.0);
+  table.fitError.method = optionalString(h, "kiln.fit_error.method");
 }
 
 /// Checks the image's channels and returns the EXR channel name of each

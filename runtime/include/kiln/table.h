@@ -32,6 +32,16 @@ struct LookupError {
   double cubicRms = -1.0;  ///< rms with the cubic filter
 };
 
+/// The measured error of a fitted table (`kiln.fit_error.*`, LTC tables: kind `ltc`); -1 (and
+/// an empty text) when the table is not a fit. Written only when `max >= 0`.
+struct FitError {
+  double max = -1.0;  ///< max over texels of the fit's declared norm (LTC: L1 over the sphere)
+  double rms = -1.0;  ///< rms over texels of the same
+  double polygonMax = -1.0;  ///< max abs error of the polygon-light integral over the test polygons
+  double polygonRms = -1.0;  ///< rms of the same
+  std::string method;        ///< how both were measured, free text
+};
+
 /// A kiln table: metadata and texels. A plain value; validateTable says
 /// whether it is consistent.
 struct Table {
@@ -47,6 +57,7 @@ struct Table {
   double tolerance = 0.0;                    ///< kiln.tolerance
   double bakeError = -1.0;                   ///< kiln.bake_error
   LookupError lookupError;                   ///< kiln.lookup_error.*
+  FitError fitError;                         ///< kiln.fit_error.* (fitted tables only)
   std::string specHash;                      ///< kiln.spec_hash (hex)
   std::vector<float> data;                   ///< the texels, see LutView
 

@@ -1,0 +1,135 @@
+// Linearly transformed cosines (Heitz, Dupuy, Hill & Neubelt 2016, "Real-Time Polygonal-Light
+// Shading with Linearly Transformed Cosines"): the fit of an LTC to a BRDF lobe, its error, and
+// the direct integration of a lobe over a polygon the runtime's LTC integral is checked against.
+//
+// Conventions: view o = (sqrt(1 - mu^2), 0, mu), normal +z, F = 1. The lobe is f(o, l) mu_l
+// (cosine included) of a registry model at perceptual roughness r (alpha = r^2 for the microfacet
+// models). The LTC is D(l) = max(0, l'.z)/pi |det M^-1| / |M^-1 l|^3 with l' = M^-1 l / |M^-1 l|,
+// M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], Z the lobe's average direction (its
+// "dominant direction"), X = (Z.z, 0, -Z.x), Y = (0, 1, 0), as the paper's fitting code.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "baker/math/vec3.h"
+#include "baker/models/registry.h"
+
+namespace kiln {
+
+/// One lobe f(o, l) mu_l of a model at F = 1, with the proposal the fit's error integrals
+/// sample it by: microfacet lobes (MicrofacetBRDF) by their D cos(theta_m) normals reflected
+/// about o, any other model by the clamped cosine.
+class LtcLobe {
+ public:
+  /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
+  /// Throws std::invalid_argument for an unknown model.
+  LtcLobe(const std::string& model, double r, double mu);
+  /// f(o, l) mu_l at F = 1 (cosine included); 0 below the horizon.
+  double Eval(Vec3 wi) const;
+  /// The proposal's direction at (u1, u2) in [0, 1)^2 (may be below the horizon).
+  Vec3 Sample(double u1, double u2) const;
+  /// The proposal's density over solid angle at wi.
+  double Pdf(Vec3 wi) const;
+  Vec3 wo() const { return wo_; }
+  /// The microfacet alpha of a microfacet lobe, 1 for the others.
+  double Alpha() const { return kind_ ? alpha_ : 1; }
+
+ private:
+  AnyModel model_;
+  Vec3 wo_;
+  int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal
+  double alpha_ = 1;
+  double DCos(Vec3 wm) const;
+};
+
+/// The parameters of an LTC in its frame (ltc_fit.h header): M = [X Y Z] diag-ish(m11, m22, m13).
+struct LtcFrameParams {
+  double m11 = 1, m22 = 1, m13 = 0;
+  Vec3 z{0, 0, 1};  ///< the frame's Z (unit, in the xz plane)
+};
+
+/// An LTC as matrices (row-major 3x3).
+struct LtcMatrix {
+  double m[9], inv[9], detInv;
+  static LtcMatrix From(const LtcFrameParams& p);
+  /// The LTC of stored coefficients (a, b, c, d): M^-1 = [[a, 0, c], [0, 1, 0], [b, 0, d]].
+  static LtcMatrix FromInverse(const double minv[4]);
+  /// D(l), the LTC density over solid angle (normalised to 1 over the sphere).
+  double Eval(Vec3 l) const;
+  /// Direction of the LTC at (u1, u2): cosine-sampled, mapped by M, normalised.
+  Vec3 Sample(double u1, double u2) const;
+};
+
+/// What the fit of one texel gives.
+struct LtcTexel {
+  LtcFrameParams params;
+  double minv[4] = {1, 0, 0, 1};  ///< M^-1 / (M^-1)_11 as (a, b, c, d): [[a,0,c],[0,1,0],[b,0,d]]
+  double l3 = 0;                  ///< the minimised objective, integral |f mu_l / norm - D|^3
+  double l1 = 0;                  ///< the fit error: integral over the sphere |f mu_l / norm - D|
+};
+
+/// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
+/// the LTC, on a stratified n x n grid each: deterministic).
+struct LtcFitOptions {
+  int fitSamples = 16;      ///< n of the objective during Nelder-Mead
+  int errorSamples = 32;    ///< n of the declared L1 error (the paper's Nsample)
+  int maxIterations = 300;  ///< Nelder-Mead iterations
+  double tolerance = 1e-7;  ///< stop when the simplex's objective spread is below this (relative)
+};
+
+/// The lobe's norm integral f mu_l dl (F = 1) and average direction (unit) by the proposal's
+/// n x n stratified samples.
+void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir);
+
+/// Fits an LTC to `lobe` / norm minimising the L3 error over the sphere (the paper's norm),
+/// by Nelder-Mead (written for kiln) from `start` over (ln m11, ln m22, m13 / m11); with
+/// `isotropic` m22 = m11 and m13 = 0 (a view along the normal). The frame's Z is the lobe's
+/// average direction. Deterministic.
+LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
+                const LtcFitOptions& opt = {});
+
+/// integral over the sphere |lobe / norm - D_ltc|^p (p = 1 or 3) by MIS on an n x n grid.
+double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n);
+
+/// Nelder-Mead minimisation (Nelder & Mead 1965, standard coefficients 1, 2, 1/2, 1/2) of f
+/// over `dim` <= 3 parameters from x (in/out) with initial step `step`; stops after maxIter
+/// iterations or when the simplex's values agree to `tol` (relative). Returns min f.
+double NelderMead(const std::function<double(const double*)>& f, int dim, double* x, double step,
+                  int maxIter, double tol);
+
+/// One whole LTC table of `model` on the published grid: nodes i / (n - 1) of the roughness r
+/// and of s = sqrt(1 - mu) (theta_o clamped to 1.57 rad where s = 1, as the paper's code), r = 0
+/// fitted at alpha = alphaFloor (an LTC cannot be a mirror). Rows of fixed r are fitted in order
+/// of s from the node s = 0, each from the previous texel's solution; the s = 0 row from r = 1
+/// down, sequentially; the r columns in parallel on `threads` threads (oneTBB): the same bits for
+/// any count. Texel (ir, is) at index ir + n * is.
+std::vector<LtcTexel> FitLtcTable(const std::string& model, int n, double alphaFloor, int threads,
+                                  const LtcFitOptions& opt = {});
+
+/// The same on any grid: roughness values rs (any order) and view cosines mus, mus[0] the
+/// first row (isotropic when it is 1); texel (ir, im) at index ir + rs.size() * im. The first row
+/// is fitted from the last roughness to the first, sequentially; then each roughness column
+/// along mus from its first-row texel, the columns in parallel.
+std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<double>& rs,
+                                 const std::vector<double>& mus, double alphaFloor, int threads,
+                                 const LtcFitOptions& opt = {});
+
+/// The view cosine the fit uses for mu: theta_o at most 1.57 rad (the paper's code).
+double LtcFitMu(double mu);
+
+/// integral of f(o, l) mu_l (F = 1) over the spherical polygon with vertices p (directions from
+/// the shaded point, any length; convex as seen from it), clipped to the upper hemisphere, by
+/// adaptive subdivision of its planar triangles with a degree-5 rule, to absolute tolerance tol
+/// (refined to the lobe's width around the mirror direction). evals (optional) counts lobe
+/// evaluations.
+double IntegrateLobeOverPolygon(const LtcLobe& lobe, const Vec3* p, int count, double tol,
+                                long long* evals = nullptr);
+
+/// The fixed test polygons of the declared polygon error (docs/models.md "LTC"), in the view's
+/// frame: 0 a large quad covering the upper hemisphere (down to 1e-3 rad of the horizon),
+/// 1 a quad around the normal, 2 a quad towards the mirror direction of mu = 0.5, 3 a quad
+/// straddling the horizon behind the view, 4 a thin quad across the normal.
+std::vector<std::vector<Vec3>> LtcTestPolygons();
+
+}  // namespace kiln

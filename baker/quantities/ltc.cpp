@@ -1,0 +1,336 @@
+// ltc: linearly transformed cosine tables for polygonal area lights (Heitz, Dupuy, Hill &
+// Neubelt 2016): per (roughness, view) the fitted LTC's M^-1 as 4 coefficients, the lobe's norm
+// and its Schlick Fresnel term, in the published tables' layout (docs/models.md "LTC").
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+#include "baker/integrate/fixed_rule_microfacet.h"
+#include "baker/integrate/ltc_fit.h"
+#include "baker/quantities/common.h"
+#include "kiln/ltc.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+/// The published tables' size: 64 x 64.
+constexpr int kLtcSize = 64;
+/// The smallest alpha the fit takes (the published fitting code's MIN_ALPHA): an LTC cannot be a
+/// mirror, so the r = 0 column's coefficients are the fit at this alpha; its norm and Fresnel
+/// channels are the smooth limit.
+constexpr double kLtcAlphaFloor = 1e-5;
+/// The texels the declared polygon error is measured at: every this many nodes on each axis
+/// (and the last).
+constexpr int kPolygonStride = 7;
+/// The absolute tolerance of the direct integration over a test polygon.
+constexpr double kPolygonTol = 1e-5;
+/// kiln verify re-measures the fit error at every this many texels.
+constexpr size_t kVerifyStride = 11;
+
+/// (roughness, mu) at x: the published axes (roughness, sqrt_one_minus_mu = sqrt(1 - mu)) or
+/// kiln's (mu, roughness).
+void LtcPoint(const TableSpec& spec, const double* x, double* r, double* mu) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  *r = CoordinateOf(spec, x, "roughness", 0);
+  double s = CoordinateOf(spec, x, "sqrt_one_minus_mu", nan);
+  *mu = std::isnan(s) ? CoordinateOf(spec, x, "mu", 1) : 1 - s * s;
+  *mu = Clamp(*mu, 0.0, 1.0);
+}
+
+bool PublishedLayout(const TableSpec& spec) {
+  return spec.axes.size() == 2 && spec.axes[0].name == "roughness" &&
+         spec.axes[1].name == "sqrt_one_minus_mu";
+}
+
+TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
+  std::string name = std::string(QuantityName(Quantity::Ltc)) + "-" + model;
+  if (!(axes.size() == 2 && axes[0].name == "roughness" && axes[1].name == "sqrt_one_minus_mu"))
+    name += "-kiln";
+  return Shell(
+      Quantity::Ltc, name, model, {"minv_a", "minv_b", "minv_c", "minv_d", "norm", "fresnel"},
+      {"M^-1 [0][0] / M^-1 [1][1] (published ltc_1.x)", "M^-1 [2][0] / M^-1 [1][1] (ltc_1.y)",
+       "M^-1 [0][2] / M^-1 [1][1] (ltc_1.z)", "M^-1 [2][2] / M^-1 [1][1] (ltc_1.w)",
+       "norm: integral f mu_l dl at F = 1 (published ltc_2.x)",
+       "Fresnel: integral f (1 - o.h)^5 mu_l dl at F = 1 (ltc_2.y)"},
+      std::move(axes));
+}
+
+/// The published layout: 64 x 64, roughness (perceptual, alpha = r^2) across, sqrt(1 - mu)
+/// down, nodes i / 63 on both (a shader reads them at texel centres: uv * 63/64 + 0.5/64).
+std::vector<AxisSpec> DefaultAxes(const std::string&) {
+  return {{"roughness", 0, 1, kLtcSize, Warp::Linear},
+          {"sqrt_one_minus_mu", 0, 1, kLtcSize, Warp::Linear}};
+}
+
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  std::vector<TableSpec> out;
+  for (const char* m : {"ggx", "beckmann", "blinn-phong"})
+    out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
+bool HasRule(const TableSpec& spec) { return FixedRuleModelFor(spec.model.c_str(), nullptr); }
+
+std::vector<double> Channels(double a, double b) { return {0, 0, 0, 0, a + b, b}; }
+
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  double r, mu;
+  LtcPoint(spec, x, &r, &mu);
+  const double xm[2] = {mu, r};
+  std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, xm, stats);
+  return Channels(ab[0], ab[1]);
+}
+
+std::string FitText() {
+  return "LTC fit (Heitz et al. 2016): Nelder-Mead on the L3 norm over the sphere of normalised "
+         "lobe minus LTC, frame on the lobe's average direction, each texel from its neighbour's "
+         "solution; coefficients M^-1 / M^-1[1][1]; ";
+}
+
+std::string FixedRuleMethod(const TableSpec& spec) {
+  return FitText() + "norm and fresnel: " + MicrofacetFixedRuleMethod(spec);
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  double r, mu;
+  LtcPoint(spec, x, &r, &mu);
+  IntegrationOptions opt;
+  opt.tol = tol;
+  std::array<double, 2> ab = SplitSumDFG(ModelAt(spec.model, r), mu, opt, stats);
+  return Channels(ab[0], ab[1]);
+}
+
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (!OnSmoothLimit(spec, x)) return false;
+  double r, mu;
+  LtcPoint(spec, x, &r, &mu);
+  std::array<double, 2> ab = SmoothDfg(mu);
+  out = Channels(ab[0], ab[1]);
+  return true;
+}
+
+std::string Method(const TableSpec& spec) {
+  return FitText() + "norm and fresnel: " + AdaptiveMethod(true, false, spec.tol);
+}
+
+/// The grid of the spec: roughness nodes and view nodes in the fit's order (the view along the
+/// normal first), and where texel (ir, im) of the fit lies in the table.
+struct Grid {
+  std::vector<double> rs, mus;
+  std::vector<size_t> index;  ///< table texel of fit texel ir + rs.size() * im
+};
+
+Grid GridOf(const TableSpec& spec) {
+  Grid g;
+  const bool published = PublishedLayout(spec);
+  const int rAxis = published ? 0 : 1, vAxis = published ? 1 : 0;
+  const int nr = spec.axes[rAxis].size, nv = spec.axes[vAxis].size;
+  for (int i = 0; i < nr; ++i) {
+    double x[3] = {0, 0, 0};
+    NodeCoordinates(spec, size_t(published ? i : i * spec.axes[0].size), x);
+    double r, mu;
+    LtcPoint(spec, x, &r, &mu);
+    g.rs.push_back(r);
+  }
+  // Published: s = sqrt(1 - mu) ascending, so mu descending already; kiln: mu ascending, reversed.
+  std::vector<int> order(nv);
+  for (int k = 0; k < nv; ++k) order[k] = published ? k : nv - 1 - k;
+  for (int k = 0; k < nv; ++k) {
+    double x[3] = {0, 0, 0};
+    NodeCoordinates(spec, size_t(published ? order[k] * nr : order[k]), x);
+    double r, mu;
+    LtcPoint(spec, x, &r, &mu);
+    g.mus.push_back(mu);
+  }
+  g.index.resize(size_t(nr) * nv);
+  for (int im = 0; im < nv; ++im)
+    for (int ir = 0; ir < nr; ++ir)
+      g.index[ir + size_t(nr) * im] =
+          published ? size_t(ir) + size_t(nr) * order[im] : size_t(order[im]) + size_t(nv) * ir;
+  return g;
+}
+
+/// The lobe a texel's coefficients were fitted to (roughness at least sqrt(alpha floor), theta_o
+/// at most 1.57).
+LtcLobe FitLobe(const std::string& model, double r, double mu) {
+  return LtcLobe(model, std::max(r, std::sqrt(kLtcAlphaFloor)), LtcFitMu(mu));
+}
+
+/// The declared fit error of stored coefficients: L1 over the sphere of the normalised lobe
+/// minus the LTC, by the paper's MIS (errorSamples^2 of each).
+double StoredFitError(const std::string& model, double r, double mu, const float* c) {
+  LtcLobe lobe = FitLobe(model, r, mu);
+  double norm;
+  Vec3 dir;
+  LtcLobeMoments(lobe, 64, &norm, &dir);
+  const double minv[4] = {c[0], c[1], c[2], c[3]};
+  return LtcFitError(lobe, norm, LtcMatrix::FromInverse(minv), 1, LtcFitOptions{}.errorSamples);
+}
+
+std::string FitErrorMethod() {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "fit error: L1 over the sphere of f mu_l / norm - D_ltc at the stored (float) "
+                "coefficients, MIS of the lobe's and the LTC's %dx%d stratified samples, every "
+                "texel; polygon error: |norm E_ltc - integral_P f mu_l| over the %zu test "
+                "polygons of docs/models.md (LTC) at every %d-th node of each axis, direct "
+                "integration to %g",
+                LtcFitOptions{}.errorSamples, LtcFitOptions{}.errorSamples,
+                LtcTestPolygons().size(), kPolygonStride, kPolygonTol);
+  return buf;
+}
+
+void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
+               std::vector<double>& errors) {
+  const size_t n = spec.TexelCount();
+  const size_t nc = spec.channels.size();
+  if (spec.axes.size() != 2) throw std::invalid_argument("table '" + spec.name + "': needs 2 axes");
+  tbb::task_arena arena(threads);
+  // The norm and Fresnel channels: exact integrals, each texel alone.
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
+                      [&](const tbb::blocked_range<size_t>& rg) {
+                        for (size_t i = rg.begin(); i != rg.end(); ++i) {
+                          double x[3];
+                          NodeEvaluationPoint(spec, i, x);
+                          IntegrationStats st;
+                          std::vector<double> v = EvaluateSpec(spec, x, st);
+                          table.data[i * nc + 4] = static_cast<float>(v[4]);
+                          table.data[i * nc + 5] = static_cast<float>(v[5]);
+                          evals[i] = st.evals;
+                          errors[i] = st.errorEstimate;
+                        }
+                      });
+  });
+  // The fit, in its fixed order.
+  Grid g = GridOf(spec);
+  std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads);
+  const size_t nr = g.rs.size();
+  std::vector<double> l1(n, 0);
+  for (size_t k = 0; k < fit.size(); ++k) {
+    size_t i = g.index[k];
+    for (int c = 0; c < 4; ++c) table.data[i * nc + c] = static_cast<float>(fit[k].minv[c]);
+  }
+  // The declared fit error at the stored coefficients, and the polygon error on a subset.
+  std::vector<double> polygon(n, -1);
+  const std::vector<std::vector<Vec3>> polygons = LtcTestPolygons();
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, fit.size(), 1), [&](const tbb::blocked_range<size_t>& rg) {
+          for (size_t k = rg.begin(); k != rg.end(); ++k) {
+            size_t i = g.index[k], ir = k % nr, im = k / nr;
+            double r = g.rs[ir], mu = g.mus[im];
+            l1[i] = StoredFitError(spec.model, r, mu, &table.data[i * nc]);
+            bool sub = (ir % kPolygonStride == 0 || ir + 1 == nr) &&
+                       (im % kPolygonStride == 0 || im + 1 == g.mus.size());
+            if (!sub) continue;
+            LtcLobe lobe = FitLobe(spec.model, r, mu);
+            const float* c = &table.data[i * nc];
+            double minv[9];
+            ltcLocalInverse(LtcInverse{c[0], c[1], c[2], c[3]}, minv);
+            double worst = 0;
+            for (const std::vector<Vec3>& p : polygons) {
+              double pts[kLtcMaxVertices][3];
+              for (size_t v = 0; v < p.size(); ++v) {
+                pts[v][0] = p[v].x;
+                pts[v][1] = p[v].y;
+                pts[v][2] = p[v].z;
+              }
+              double e = c[4] * ltcPolygonIntegral(minv, pts, int(p.size()), true);
+              double ref =
+                  IntegrateLobeOverPolygon(lobe, p.data(), int(p.size()), kPolygonTol, &evals[i]);
+              worst = std::max(worst, std::fabs(e - ref));
+            }
+            polygon[i] = worst;
+          }
+        });
+  });
+  double max = 0, sum = 0, pmax = 0, psum = 0;
+  long long pn = 0;
+  for (size_t i = 0; i < n; ++i) {
+    max = std::max(max, l1[i]);
+    sum += l1[i] * l1[i];
+    if (polygon[i] >= 0) {
+      pmax = std::max(pmax, polygon[i]);
+      psum += polygon[i] * polygon[i];
+      ++pn;
+    }
+  }
+  table.fitError.max = max;
+  table.fitError.rms = std::sqrt(sum / double(n));
+  table.fitError.polygonMax = pmax;
+  table.fitError.polygonRms = pn ? std::sqrt(psum / double(pn)) : 0;
+  table.fitError.method = FitErrorMethod();
+}
+
+/// kiln verify: the fit error of the stored coefficients at every kVerifyStride-th texel, which
+/// must not exceed the declared max (the same measurement as the bake's: deterministic).
+std::string VerifyTable(const Table& table, int threads, std::string& summary) {
+  if (table.fitError.max < 0) return "declares no fit error (kiln.fit_error.max)";
+  TableSpec spec = SpecFromTable(table);
+  const size_t n = spec.TexelCount(), nc = spec.channels.size();
+  std::vector<double> l1(n, -1);
+  tbb::task_arena arena(threads > 0 ? threads : 1);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, n, kVerifyStride),
+                      [&](const tbb::blocked_range<size_t>& rg) {
+                        for (size_t i = rg.begin(); i != rg.end(); ++i) {
+                          if (i % kVerifyStride) continue;
+                          double x[3], r, mu;
+                          NodeCoordinates(spec, i, x);
+                          LtcPoint(spec, x, &r, &mu);
+                          l1[i] = StoredFitError(spec.model, r, mu, &table.data[i * nc]);
+                        }
+                      });
+  });
+  double worst = 0;
+  size_t count = 0;
+  for (double e : l1)
+    if (e >= 0) {
+      worst = std::max(worst, e);
+      ++count;
+    }
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "fit error (L1) max %.3e over %zu re-measured texels, declared %.3e", worst, count,
+                table.fitError.max);
+  summary = buf;
+  if (worst > table.fitError.max * (1 + 1e-9)) return summary + ": EXCEEDS the declared fit error";
+  return "";
+}
+
+}  // namespace
+
+const QuantityInfo& LtcQuantity() {
+  static const QuantityInfo info = [] {
+    QuantityInfo q;
+    q.id = Quantity::Ltc;
+    q.name = "ltc";
+    q.description = "linearly transformed cosines (M^-1, norm, Fresnel): polygonal area lights";
+    q.makeSpec = MakeSpec;
+    q.defaultAxes = DefaultAxes;
+    q.catalogue = Catalogue;
+    q.inDefaultCatalogue = false;  // seconds to minutes of fitting, lookup error above 1e-3 (README)
+    q.usesFixedRule = HasRule;
+    q.fixedRule = FixedRule;
+    q.fixedRuleMethod = FixedRuleMethod;
+    q.evaluate = Evaluate;
+    q.smoothLimit = SmoothLimit;
+    q.method = Method;
+    q.bakeTable = BakeTable;
+    q.firstIntegralChannel = 4;
+    q.verifyTable = VerifyTable;
+    return q;
+  }();
+  return info;
+}
+
+}  // namespace kiln
