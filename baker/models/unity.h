@@ -71,12 +71,17 @@ struct UnityBRDF1 {
     double lambdaV = nl * (nv * (1 - a) + a), lambdaL = nv * (nl * (1 - a) + a);
     return 0.5 / (lambdaV + lambdaL + 1e-5);
   }
-  RhoParts Parts(Vec3 wo, Vec3 wi) const {
-    double nv = CosTheta(wo), nl = CosTheta(wi);
-    if (nv <= 0 || nl <= 0) return {};
+  /// The formula without kiln's horizon convention: finite at mu = 0 (the epsilons), so the
+  /// integrators take its limit there.
+  double Value(Vec3 wo, Vec3 wi) const {
+    double nv = std::abs(CosTheta(wo)), nl = Clamp(CosTheta(wi), 0.0, 1.0);
     Vec3 h = UnitySafeHalf(wo, wi);
     double nh = Clamp(CosTheta(h), 0.0, 1.0), lh = Clamp(Dot(wi, h), 0.0, 1.0);
-    return {D(nh) * V(nl, nv) * fresnel(lh), 0};
+    return D(nh) * V(nl, nv) * fresnel(lh);
+  }
+  RhoParts Parts(Vec3 wo, Vec3 wi) const {
+    if (CosTheta(wo) <= 0 || CosTheta(wi) <= 0) return {};
+    return {Value(wo, wi), 0};
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 
@@ -88,7 +93,7 @@ struct UnityBRDF1 {
   double HalfWeight(const HalfSample& s) const {
     double q = Sampler().D(s.wm) * s.cosTheta_h;
     if (!(q > 0)) return 0;
-    return f(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
+    return Value(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
   }
   double MaskingScale() const { return a; }
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
@@ -108,13 +113,17 @@ struct UnityBRDF2 {
   double rs = 1;    ///< specColor
   Fresnel fresnel;
 
-  RhoParts Parts(Vec3 wo, Vec3 wi) const {
-    if (CosTheta(wo) <= 0 || CosTheta(wi) <= 0) return {};
+  /// The formula without kiln's horizon convention (it does not depend on n.v).
+  double Value(Vec3 wo, Vec3 wi) const {
     Vec3 h = UnitySafeHalf(wo, wi);
     double nh = Clamp(CosTheta(h), 0.0, 1.0), lh = Clamp(Dot(wi, h), 0.0, 1.0);
     double a2 = a * a, d = nh * nh * (a2 - 1) + 1.00001;
     double term = a2 / (std::max(0.1, lh * lh) * (a + 0.5) * (d * d) * 4);
-    return {rs * term / Pi * fresnel(lh), 0};
+    return rs * term / Pi * fresnel(lh);
+  }
+  RhoParts Parts(Vec3 wo, Vec3 wi) const {
+    if (CosTheta(wo) <= 0 || CosTheta(wi) <= 0) return {};
+    return {Value(wo, wi), 0};
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 
@@ -125,7 +134,7 @@ struct UnityBRDF2 {
   double HalfWeight(const HalfSample& s) const {
     double q = Sampler().D(s.wm) * s.cosTheta_h;
     if (!(q > 0)) return 0;
-    return f(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
+    return Value(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
   }
   double MaskingScale() const { return 0; }
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
