@@ -75,9 +75,11 @@ inline std::vector<Variant> EdgeVariants(const ModelInfo& m) {
     set(v.params);
     out.push_back(v);
   };
-  if (m.specular()) {
+  if (m.specular() && Takes(m, "f0")) {
     add("f0=0", [](ModelParams& p) { p.f0 = 0.0; });
     add("f0=1", [](ModelParams& p) { p.f0 = 1.0; });
+  }
+  if (m.specular() && Takes(m, "eta")) {
     for (double eta : {1.0, 1 + 1e-9, 0.5, 0.01, 100.0})
       add("eta=" + Num(eta), [eta](ModelParams& p) { p.eta = eta; });
     const double nk[][2] = {{1.5, 0}, {1.5, 1e-12}, {1, 1e-9}, {0.2, 100}, {100, 100}, {0.01, 100}};

@@ -13,6 +13,10 @@
 #include "baker/models/hammon.h"
 #include "baker/models/oren_nayar.h"
 #include "baker/models/specular.h"
+#include "baker/models/kajiya_kay.h"
+#include "baker/models/lafortune.h"
+#include "baker/models/unity.h"
+#include "baker/models/ward.h"
 
 namespace kiln {
 
@@ -51,7 +55,9 @@ using AnyModel =
                  ShirleyDiffuse, AshikhminShirleyDiffuse, TriAceLambert,
                  MicrofacetBRDF<GGXDistribution>, MicrofacetBRDF<BeckmannDistribution>,
                  MicrofacetBRDF<BlinnPhongDistribution>, NormalizedBlinnPhong,
-                 AshikhminShirleySpecular>;
+                 AshikhminShirleySpecular,
+                 // issue #16: Unity's BRDFs, Ward, Lafortune, Kajiya-Kay
+                 UnityBRDF1, UnityBRDF2, UnityBRDF3, WardBRDF, LafortuneBRDF, KajiyaKay>;
 
 /// Every model, in catalogue order.
 const std::vector<ModelInfo>& AllModels();
