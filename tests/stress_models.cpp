@@ -9,8 +9,9 @@
 //   Gotanda's (o.l - mu_o mu_l) / max(mu_l, mu_o) (the code clamps the max at 1e-12), Hammon's
 //   (0.5 + n.h)/n.h (n.h -> 0; clamped at 1e-12), Ashikhmin-Shirley's 1/((h.o) max(mu_l, mu_o)),
 //   and the height-correlated and V-cavity microfacet lobes' D G / (4 mu_o mu_l) ~ 1/mu at the
-//   mirror pair (a separable G = G1(o) G1(l) ~ mu_o mu_l / alpha^2 keeps them bounded). There only
-//   finiteness is required; continuity is checked with the other direction at mu >= 1e-3.
+//   mirror pair (a separable G = G1(o) G1(l) ~ mu_o mu_l / alpha^2 keeps them bounded), and the
+//   Neubelt visibility 1 / (4 (mu_l + mu_o - mu_l mu_o)) of charlie and ashikhmin-velvet. There
+//   only finiteness is required; continuity is checked with the other direction at mu >= 1e-3.
 // - Specular horizon convention. A specular lobe is zero unless mu_o, mu_l > 0 (docs/models.md 13):
 //   f(mu = 0) is exactly 0 while the one-sided limit is not. For those models the test checks
 //   f(0) == 0 and that the limit exists: f(1e-12) = f(1e-14) (for a lobe wider than the probe,
@@ -58,7 +59,9 @@ bool UnboundedInCorner(const ModelInfo& m) {
                                             "ggx",
                                             "ggx-vcavity",
                                             "beckmann",
-                                            "blinn-phong"};
+                                            "blinn-phong",
+                                            "charlie",
+                                            "ashikhmin-velvet"};
   return ids.count(m.id) > 0;
 }
 
@@ -129,6 +132,11 @@ TEST_CASE("BRDF values are continuous at mu = 0: the value at mu = 1e-12 is the 
             double d = std::max(Diff(a.lin, b.lin), Diff(a.quad, b.quad));
             bool corner = other < kCornerMu;
             if (corner && UnboundedInCorner(m)) continue;  // finite only (previous test)
+            // charlie-smith stays bounded in the corner (V is clamped to 1) but is not continuous
+            // there: it is 0 at mu_o = mu_l = 0 exactly (a defect of models/sheen.h: the limit
+            // is D(h)), and near l = -o on the horizon h = (o + l)/|o + l| turns by O(1) when
+            // mu moves by 1e-12, so D_Charlie does too. Finite only, like the unbounded ones.
+            if (corner && m.id == "charlie-smith") continue;
             double& w = corner ? worstCorner : worst;
             if (d > w) {
               w = d;
@@ -201,7 +209,7 @@ TEST_CASE(
 TEST_CASE("BRDF values are continuous in roughness at 0: roughness 1e-12 gives the value of 0",
           "[stress][models]") {
   for (const ModelInfo& m : AllModels()) {
-    if (!RoughnessParam(m)) continue;
+    if (!RoughnessParam(m) || RoughnessParam(m)->lo > 0) continue;  // Charlie: from 0.045
     double worst = 0;
     std::string where;
     for (const Variant& v : EdgeVariants(m)) {
@@ -308,7 +316,9 @@ TEST_CASE("A million random points per model: finite, non-negative (for every rh
       if (i % 16 == 0) {  // a new model every 16 points
         ModelParams p =
             variants[static_cast<size_t>(rng.Uniform() * variants.size()) % variants.size()].params;
-        if (rough) p.roughness = pick(0, rough->hi, {0.0, 1e-12, 1e-6, rough->hi});
+        if (rough)
+          p.roughness = pick(rough->lo, rough->hi,
+                             {rough->lo, rough->lo + 1e-12, rough->lo + 1e-6, rough->hi});
         if (p.eta && !p.k && rng.Uniform() < 0.5)
           p.eta = std::exp(std::log(0.01) + rng.Uniform() * std::log(1e4));
         if (p.k && rng.Uniform() < 0.5) p.k = 100 * rng.Uniform();

@@ -12,6 +12,7 @@
 #include "baker/models/gotanda.h"
 #include "baker/models/hammon.h"
 #include "baker/models/oren_nayar.h"
+#include "baker/models/sheen.h"
 #include "baker/models/specular.h"
 
 namespace kiln {
@@ -48,7 +49,7 @@ using AnyModel =
                  ShirleyDiffuse, AshikhminShirleyDiffuse, TriAceLambert,
                  MicrofacetBRDF<GGXDistribution>, MicrofacetBRDF<BeckmannDistribution>,
                  MicrofacetBRDF<BlinnPhongDistribution>, NormalizedBlinnPhong,
-                 AshikhminShirleySpecular>;
+                 AshikhminShirleySpecular, CharlieSheen, CharlieSmithSheen, AshikhminVelvet>;
 
 /// Every model, in catalogue order.
 const std::vector<ModelInfo>& AllModels();
