@@ -10,7 +10,7 @@ using kiln::test::RunKiln;
 TEST_CASE("kiln list prints every model id, one per line with its parameters", "[cli]") {
   auto r = RunKiln("list");
   REQUIRE(r.exitCode == 0);
-  CHECK(CountLines(r.out) == 22);
+  CHECK(CountLines(r.out) == 25);
   for (const char* id : {"lambert ", "ggx roughness=", "ggx-vcavity ", "oren-nayar-qualitative-ir ",
                          "ashikhmin-shirley roughness="})
     CHECK(("\n" + r.out).find(std::string("\n") + id) != std::string::npos);
