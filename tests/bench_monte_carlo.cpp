@@ -152,7 +152,7 @@ TEST_CASE("no diffuse sample lies on the horizon: estimates stay finite at grazi
     for (double r : {0.0, 0.5, 1.0}) {
       ModelParams p;
       for (const ParamInfo& q : info.params)
-        if (q.name == "roughness") p.roughness = r * q.hi;
+        if (q.name == "roughness") p.roughness = q.lo + r * (q.hi - q.lo);
       RhoParts e = EstimateDiffuseAlbedo(points, MakeModel(info.id, p), 0.0);
       INFO(info.id << " r " << r << ": " << e.lin << " " << e.quad);
       CHECK(std::isfinite(e.lin));

@@ -10,7 +10,7 @@ using kiln::test::RunKiln;
 TEST_CASE("kiln list prints every model id, one per line with its parameters", "[cli]") {
   auto r = RunKiln("list");
   REQUIRE(r.exitCode == 0);
-  CHECK(CountLines(r.out) == 31);  // 30 BRDFs and the BSDF ggx-dielectric
+  CHECK(CountLines(r.out) == 34);  // 33 BRDFs and the BSDF ggx-dielectric
   for (const char* id : {"lambert ", "ggx roughness=", "ggx-vcavity ", "oren-nayar-qualitative-ir ",
                          "ashikhmin-shirley roughness=", "ggx-dielectric roughness="})
     CHECK(("\n" + r.out).find(std::string("\n") + id) != std::string::npos);

@@ -48,7 +48,7 @@ inline bool Takes(const ModelInfo& m, const char* name) {
 inline std::vector<double> EdgeRoughness(const ModelInfo& m) {
   const ParamInfo* r = RoughnessParam(m);
   if (!r) return {};
-  return {0.0, 1e-12, 1e-6, 0.5, r->hi};
+  return {r->lo, r->lo + 1e-12, r->lo + 1e-6, 0.5, r->hi};  // lo: 0, or a sheen lobe's 0.045
 }
 
 /// A number as a label shows it (%.10g: 1 + 1e-9 stays distinct from 1).

@@ -12,6 +12,7 @@
 #include "baker/models/gotanda.h"
 #include "baker/models/hammon.h"
 #include "baker/models/oren_nayar.h"
+#include "baker/models/sheen.h"
 #include "baker/models/specular.h"
 #include "baker/models/kajiya_kay.h"
 #include "baker/models/lafortune.h"
@@ -57,7 +58,9 @@ using AnyModel =
                  MicrofacetBRDF<BlinnPhongDistribution>, NormalizedBlinnPhong,
                  AshikhminShirleySpecular,
                  // issue #16: Unity's BRDFs, Ward, Lafortune, Kajiya-Kay
-                 UnityBRDF1, UnityBRDF2, UnityBRDF3, WardBRDF, LafortuneBRDF, KajiyaKay>;
+                 UnityBRDF1, UnityBRDF2, UnityBRDF3, WardBRDF, LafortuneBRDF, KajiyaKay,
+                 // issue #15: sheen lobes
+                 CharlieSheen, CharlieSmithSheen, AshikhminVelvet>;
 
 /// Every model, in catalogue order.
 const std::vector<ModelInfo>& AllModels();

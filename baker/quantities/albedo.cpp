@@ -32,8 +32,9 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// A fixed rule for every microfacet model with one (visible-normal space) and for every diffuse
-/// model (light space).
+/// A fixed rule for every microfacet model with one (visible-normal space), for every diffuse
+/// model (light space). The sheen lobes have none
+/// yet: adaptive quadrature bakes them.
 bool AlbedoUsesFixedRule(const TableSpec& spec) {
   return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec);
 }
@@ -62,7 +63,7 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
-  return RhoChannels(spec, DirectionalAlbedo(ModelAt(spec.model, x[1]), x[0], opt, stats));
+  return RhoChannels(spec, DirectionalAlbedo(ModelInDomain(spec.model, x[1]), x[0], opt, stats));
 }
 
 /// Roughness 0 of a microfacet lobe: a mirror reflects all of it, E = F = 1 at every mu.

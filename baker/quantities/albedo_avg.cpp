@@ -44,7 +44,7 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
-  return RhoChannels(spec, AverageAlbedo(ModelAt(spec.model, x[0]), opt, stats));
+  return RhoChannels(spec, AverageAlbedo(ModelInDomain(spec.model, x[0]), opt, stats));
 }
 
 /// Over roughness alone (the catalogue's axes): a fixed rule for every model (AverageFixedRule).

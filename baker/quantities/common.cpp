@@ -80,6 +80,13 @@ AnyModel ModelAt(const std::string& model, double r) {
   return MakeModel(model, WithRoughness(model, r));
 }
 
+AnyModel ModelInDomain(const std::string& model, double r) {
+  if (!IsSheen(model)) return ModelAt(model, r);
+  ModelParams p;
+  p.roughness = r;
+  return MakeModel(model, p);
+}
+
 std::vector<double> RhoChannels(const TableSpec& spec, RhoParts e) {
   return spec.channels.size() == 2 ? std::vector<double>{e.lin, e.quad}
                                    : std::vector<double>{e.lin + e.quad};
@@ -223,10 +230,16 @@ std::string FresnelAlbedoFixedRuleMethod(const TableSpec&) {
          Short(kFixedRuleBound) + " abs";
 }
 
+bool IsSheen(const std::string& model) {
+  const ModelInfo* m = FindModel(model);
+  if (!m) return false;
+  return model == "charlie" || model == "charlie-smith" || model == "ashikhmin-velvet";
+}
+
 bool DiffuseFixedRuleApplies(const TableSpec& spec) {
   const ModelInfo* m = FindModel(spec.model);
-  return m && !m->specular() && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
-         spec.axes[1].name == "roughness";
+  return m && !m->specular() && !IsSheen(spec.model) && spec.axes.size() == 2 &&
+         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
 }
 
 std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
@@ -282,17 +295,19 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
                                               : 10 * std::max(st.errorEstimate, albedo.tol));
     return v;
   };
+  // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the Charlie lobe at grazing): the mu rule
+  // graded from its finest layer.
   const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
-  std::vector<double> r = IsSpecular(albedo.model)
-                              ? FixedCosineAverageChannels(e, layer, nodes)
-                              : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
+  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer, nodes)
+                          : IsSheen(albedo.model)  ? FixedCosineAverageChannels(e, 1e-4, nodes)
+                                                   : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;
 }
 
 std::string AverageFixedRuleMethod(const TableSpec& albedo) {
   return "2 int E mu dmu by a fixed Gauss-Legendre rule in " +
-         std::string(IsSpecular(albedo.model) ? "mu" : "asin(mu)") + " (" +
+         std::string(IsSpecular(albedo.model) || IsSheen(albedo.model) ? "mu" : "asin(mu)") + " (" +
          std::to_string(kCosineAverageNodes) +
          " nodes per panel, panels graded from the layer at mu = 0) of E by: " + albedo.Method();
 }

@@ -36,6 +36,10 @@ ModelParams WithRoughness(const std::string& model, double r);
 /// The model of `spec` at roughness r (WithRoughness).
 AnyModel ModelAt(const std::string& model, double r);
 
+/// The model of `spec` at roughness r; r outside a sheen model's domain throws (MakeModel's
+/// one-line error) instead of being clamped; other models as ModelAt.
+AnyModel ModelInDomain(const std::string& model, double r);
+
 /// RhoParts as the table's channels: (lin, quad) for a 2-channel table, lin + quad otherwise.
 std::vector<double> RhoChannels(const TableSpec& spec, RhoParts e);
 
@@ -108,6 +112,10 @@ std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
 
 /// The method text of the diffuse fixed rule.
 std::string DiffuseFixedRuleMethod(const TableSpec& spec);
+
+/// True when `model` is known and a sheen lobe (models/sheen.h: charlie, charlie-smith,
+/// ashikhmin-velvet): light-space integrals, no smooth limit.
+bool IsSheen(const std::string& model);
 
 /// E_avg = 2 int_0^1 E(mu) mu dmu (per channel) of the albedo table `albedo` (axis 0 is mu) at
 /// the coordinates `rest` of its other axes, by a fixed one-dimensional rule over mu

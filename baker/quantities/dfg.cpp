@@ -7,7 +7,15 @@ namespace kiln {
 namespace {
 using namespace quantity_detail;
 
+/// A sheen lobe has no Fresnel split (F = 1): its "cloth DFG" is one channel, the integral of
+/// D V mu_l over l, which is the same integral as its albedo E(mu) (Filament's DFV_Charlie, the
+/// third channel of its DFG LUT; docs/models.md "Sheen").
 TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
+  if (IsSheen(model))
+    return Shell(Quantity::Dfg, model + "-" + QuantityName(Quantity::Dfg), model, {"DFV"},
+                 {"cloth DFG: integral D V mu_l dl at F = 1 (Filament's DFG .b, DFV_Charlie), "
+                  "the same integral as E of the albedo table"},
+                 std::move(axes));
   return Shell(Quantity::Dfg, model + "-" + QuantityName(Quantity::Dfg), model, {"A", "B"},
                {"A = integral f/F (1 - (1 - o.h)^5) mu_l dl (scales F0)",
                 "B = integral f/F (1 - o.h)^5 mu_l dl (bias), albedo = F0 A + B"},
@@ -15,6 +23,7 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
 }
 
 std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  if (IsSheen(model)) return {DiffuseMuAxis(model), DefaultRoughnessAxis(model)};
   return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
 }
 
@@ -40,6 +49,8 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
+  if (IsSheen(spec.model))
+    return {DirectionalAlbedo(ModelInDomain(spec.model, x[1]), x[0], opt, stats).lin};
   auto ab = SplitSumDFG(ModelAt(spec.model, x[1]), x[0], opt, stats);
   return DfgLayoutValues(spec, ab[0], ab[1]);
 }
@@ -57,7 +68,9 @@ std::string Method(const TableSpec& spec) {
 }
 
 std::string SceneProblem(const ModelInfo& m) {
-  return m.specular() ? "" : std::string(QuantityName(Quantity::Dfg)) + " needs a microfacet model";
+  return m.specular() || IsSheen(m.id)
+             ? ""
+             : std::string(QuantityName(Quantity::Dfg)) + " needs a microfacet or sheen model";
 }
 
 std::string Integrate(const IntegrateRequest& req, const ModelParams& p, IntegrationStats& stats) {
@@ -65,6 +78,8 @@ std::string Integrate(const IntegrateRequest& req, const ModelParams& p, Integra
     std::array<double, 2> ab = SmoothDfg(req.mu);
     return Full17(ab[0]) + " " + Full17(ab[1]);
   }
+  if (IsSheen(req.model))
+    return Full17(DirectionalAlbedo(RequestModel(req, p), req.mu, RequestOptions(req), stats).lin);
   auto ab = SplitSumDFG(RequestModel(req, p), req.mu, RequestOptions(req), stats);
   return Full17(ab[0]) + " " + Full17(ab[1]);
 }
@@ -91,7 +106,7 @@ const QuantityInfo& DfgQuantity() {
     q.sceneAxes = {{"roughness", "roughness"}};
     q.sceneProblem = SceneProblem;
     q.integrateName = q.name;
-    q.integrateHelp = "dfg (A B)";
+    q.integrateHelp = "dfg (A B; a sheen model: its one channel DFV)";
     q.integrateNeedsMu = true;
     q.integrate = Integrate;
     q.monteCarlo = &kGgxDfgMonteCarlo;

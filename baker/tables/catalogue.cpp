@@ -45,6 +45,19 @@ const std::vector<std::string>& CatalogueDiffuseModels() {
   return models;
 }
 
+const std::vector<std::string>& CatalogueSheenModels() {
+  static const std::vector<std::string> models = {"charlie", "charlie-smith", "ashikhmin-velvet"};
+  return models;
+}
+
+namespace {
+bool IsCatalogueSheen(const std::string& model) {
+  for (const std::string& m : CatalogueSheenModels())
+    if (m == model) return true;
+  return false;
+}
+}  // namespace
+
 // Sizes and warps (README "The catalogue" gives the measured lookup errors; each quantity's
 // descriptor in baker/quantities/ states its own axes):
 // - mu: near grazing a microfacet albedo is a function of mu / alpha (a layer of width
@@ -64,6 +77,13 @@ const std::vector<std::string>& CatalogueDiffuseModels() {
 /// (measured: oren-nayar-qualitative 8.3e-3 with sqrt, 3.5e-4 with angle; the polynomial models
 /// err 2-10x more with angle than with sqrt).
 AxisSpec DiffuseMuAxis(const std::string& model) {
+  // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the lobe at grazing) and, inside it, the
+  // mu ln mu of the Neubelt pole (charlie, velvet) or the switch of charlie-smith's clamp at
+  // mu ~ 1e-8..1e-4: root4 (measured in a trial bake: charlie-albedo 3.5e-2 of lookup error with
+  // 128 sqrt nodes, 1.8e-2 with 128 root4, 1.3e-3 with 256 x 256).
+  // The Charlie pair's layer is steepest (E(0) = 8.9 at r = 0.045): 256 nodes (1.8e-2 with 128).
+  if (IsCatalogueSheen(model))
+    return {"mu", 0, 1, model == "ashikhmin-velvet" ? 128 : 256, Warp::Root4};
   if (model == "gotanda-ggx") return {"mu", 0, 1, 128, Warp::Angle};
   if (model == "oren-nayar-qualitative" || model == "oren-nayar-qualitative-ir" ||
       model == "fujii-normalized")
@@ -77,6 +97,12 @@ AxisSpec DefaultRoughnessAxis(const std::string& model) {
   // (spacing 2 / 127 there) left 2e-3 of lookup error, so it gets 256 (a linear axis errs more
   // near r = 0: 1e-2 in its first cell, measured).
   if (model == "blinn-phong") return {"roughness", 0, 1, 256, Warp::Sqrt};
+  // Sheen: the layer at mu = 0 narrows with r, so the roughness axis is dense at its start, which
+  // is the model's own (0.045 for the Charlie models: below it they are rejected).
+  if (IsCatalogueSheen(model))
+    for (const ParamInfo& p : m.params)
+      if (p.name == "roughness")
+        return {"roughness", p.lo, p.hi, model == "ashikhmin-velvet" ? 64 : 256, Warp::Sqrt};
   for (const ParamInfo& p : m.params)
     if (p.name == "roughness")
       return m.specular() ? AxisSpec{"roughness", 0, p.hi, 128, Warp::Sqrt}

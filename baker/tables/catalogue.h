@@ -28,6 +28,9 @@ TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt = 
 /// The models the catalogue bakes its per-model tables for (quantity descriptors iterate them).
 const std::vector<std::string>& CatalogueMicrofacetModels();
 const std::vector<std::string>& CatalogueDiffuseModels();
+/// The sheen models whose default axes are chosen here (their tables are not in the default
+/// catalogue yet: no validated fixed rule, docs/models.md "Sheen models").
+const std::vector<std::string>& CatalogueSheenModels();
 
 /// The catalogue's default axes (size and warp chosen per model; quantity descriptors choose
 /// the rest, baker/quantities/).
