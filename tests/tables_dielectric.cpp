@@ -43,7 +43,13 @@ TEST_CASE("an ior outside the dielectric tables' domain is refused", "[dielectri
   CHECK_THROWS_WITH(PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
       "KHR_materials_ior": {"ior": 1.05}}})")),
-                    Catch::Contains("outside albedo-r's domain"));
+                    Catch::Contains("eta 1.05 is outside") && Catch::Contains("domain"));
+  // ior 1.2: inside the glass tables' [1.1, 3] but below fresnel-albedo's 1.3, which the
+  // material's dielectric layer also asks for: refused, naming that table's domain.
+  CHECK_THROWS_WITH(PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
+      "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+      "KHR_materials_ior": {"ior": 1.2}}})")),
+                    Catch::Contains("outside fresnel-albedo's domain"));
 }
 
 TEST_CASE("the dielectric tables bake the same values with 1 and 2 threads", "[dielectric]") {

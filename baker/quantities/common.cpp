@@ -299,8 +299,9 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   // graded from its finest layer.
   const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
   std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer, nodes)
-                          : IsSheen(albedo.model)  ? FixedCosineAverageChannels(e, 1e-4, nodes)
-                                                   : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
+                          : IsSheen(albedo.model)
+                              ? FixedCosineAverageChannels(e, 1e-4, nodes)
+                              : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;
 }

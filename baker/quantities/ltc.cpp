@@ -318,7 +318,8 @@ const QuantityInfo& LtcQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.inDefaultCatalogue = false;  // seconds to minutes of fitting, lookup error above 1e-3 (README)
+    q.inDefaultCatalogue =
+        false;  // seconds to minutes of fitting, lookup error above 1e-3 (README)
     q.usesFixedRule = HasRule;
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
