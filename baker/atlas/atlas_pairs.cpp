@@ -54,6 +54,8 @@ const std::vector<AtlasPair>& AtlasPairs() {
       {"gotanda-fresnel", {"gotanda-fresnel"}, {"oren-nayar"}, "sigma (rad)", 0, kHalfPi, "same sigma; f0 = 0 (its default)"},
       {"gotanda-ggx", {"gotanda-ggx"}, {"oren-nayar"}, "sigma = alpha_GGX", 0, 1, "the fit's parameter is GGX's alpha (= r^2), compared with Oren-Nayar at sigma = alpha (kiln's choice); the fit's range [0, 1]; f0 = 0 (its default)"},
       {"lambert", {"lambert"}, {"oren-nayar"}, "sigma (rad)", 0, kHalfPi, "Lambert has no roughness"},
+      {"unity-brdf2", {"unity-brdf2", "rs=1"}, {"unity-brdf1", "f0=1"}, "perceptual roughness r", 0.1, 1, "Unity's low-end lobe against its high-end one at white specular (rs = f0 = 1): modified GGX with V F ~ 1/(4 LdotH^2 (a + 0.5)) vs GGX, approximate Smith-joint V, Schlick"},
+      {"unity-brdf3", {"unity-brdf3", "rs=1"}, {"unity-brdf1", "f0=1"}, "perceptual roughness r", 0.1, 1, "Unity's lowest-end lobe (normalised Phong in RDF form, unity_NHxRoughness) against BRDF1 at white specular (rs = f0 = 1)"},
       {"blinn-phong-2.04", {"blinn-phong-normalized", "", M::Same, R::BlinnPhong204}, {"blinn-phong-normalized"}, "roughness r (s = 2/r^4 - 2)", 0.1, 1, "(s + 2.04)/(8 pi) in place of the exact N(s); F = 1, R_s = 1"},
   };
   // clang-format on
