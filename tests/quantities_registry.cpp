@@ -97,3 +97,20 @@ TEST_CASE("The catalogue's specs are the committed tables' (hash, method, channe
     }
   }
 }
+
+TEST_CASE("A model without hemispherical tables (a fibre) is refused in one line by every kind",
+          "[quantities][cli]") {
+  // kajiya-kay's lobes are around the fibre's tangent: no albedo, dfg or average over the normal.
+  for (const char* kind : {"albedo --mu 0.5", "dfg --mu 0.5", "albedo-avg"}) {
+    INFO(kind);
+    auto r = test::RunKiln(std::string("integrate ") + kind + " --model kajiya-kay");
+    CHECK(r.exitCode != 0);
+    CHECK(r.out.empty());
+    CHECK(r.err.find("kajiya-kay") != std::string::npos);
+    CHECK(r.err.find("fibre") != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+  }
+  auto plan = test::RunKiln("bake --only kajiya-kay-albedo --out /tmp/kiln-no-fibre-table");
+  CHECK(plan.exitCode != 0);
+  CHECK(plan.err.find("kajiya-kay-albedo") != std::string::npos);
+}

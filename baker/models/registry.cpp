@@ -250,7 +250,10 @@ std::vector<ModelInfo> BuildModels() {
        false,
        true,
        false,
-       D::Light},
+       D::Light,
+       false,
+       "a fibre model: its lobes are around the fibre's tangent, not a surface normal "
+       "(docs/models.md section 20)"},
       // Sheen lobes (models/sheen.h): light-space integrals, no smooth limit; the Charlie
       // models start at r = kCharlieMinRoughness (singular corner below, docs/models.md).
       {"charlie",

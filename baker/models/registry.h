@@ -43,6 +43,9 @@ struct ModelInfo {
   /// A BSDF (reflection and transmission, models/dielectric_bsdf.h): not in AllModels() or
   /// AnyModel (whose models are BRDFs over the upper hemisphere), listed by AllBsdfModels().
   bool bsdf = false;
+  /// Non-null: why the model has no hemispherical tables nor `kiln integrate` integrals over the
+  /// normal's hemisphere (a fibre model, whose natural axes are angles to its tangent).
+  const char* noTables = nullptr;
 };
 
 /// Parameters as given on a command line; unset ones take the model's defaults.

@@ -37,6 +37,9 @@ std::string Short(double v) {
 TableSpec Shell(Quantity q, const std::string& name, const std::string& model,
                 std::vector<std::string> channels, std::vector<std::string> meanings,
                 std::vector<AxisSpec> axes) {
+  if (const ModelInfo* m = FindModel(model); m && m->noTables)
+    throw std::invalid_argument("model '" + model + "' has no " + QuantityName(q) +
+                                " table: " + m->noTables);
   TableSpec s;
   s.name = name;
   s.model = model;
@@ -362,6 +365,9 @@ std::array<double, 2> SmoothDfg(double mu) {
 AnyModel RequestModel(const IntegrateRequest& request, const ModelParams& params) {
   if (request.model.empty())
     throw std::invalid_argument("integrate " + request.name + ": needs --model");
+  if (const ModelInfo* m = FindModel(request.model); m && m->noTables)
+    throw std::invalid_argument("integrate " + request.name + ": model '" + request.model +
+                                "' has no hemispherical integral: " + m->noTables);
   return MakeModel(request.model, params);
 }
 
