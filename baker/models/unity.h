@@ -50,6 +50,15 @@ inline double UnityNHxRoughnessTexel(double x, double r) {
   return std::min(1.0, (n + 2) / (2 * Pi * Pi) * lobe / kUnityNHxRoughnessRange);
 }
 
+/// The half-vector weight f mu_l 4 (o.h) / (2 pi q) of a lobe sampled through GGX's polar CDF
+/// at `sampler` (q = D(wm) cos(theta_h)); `f()` is evaluated only where q > 0 (else 0).
+template <typename F>
+double WeightThroughGgx(const GGXDistribution& sampler, const HalfSample& s, F f) {
+  double q = sampler.D(s.wm) * s.cosTheta_h;
+  if (!(q > 0)) return 0;
+  return f() * s.mu_l * 4 * s.oh / (2 * Pi * q);
+}
+
 /// BRDF1_Unity_PBS's specular lobe (UNITY_BRDF_GGX branch), perceptual roughness r:
 ///   a = max(r^2, 0.002)
 ///   D = a^2 / (pi ((n.h^2 (a^2 - 1) + 1)^2 + 1e-7))            GGXTerm
@@ -91,9 +100,7 @@ struct UnityBRDF1 {
   PolarParam FromV(double v) const { return Sampler().FromV(v); }
   double VFromTheta(double theta) const { return Sampler().VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const {
-    double q = Sampler().D(s.wm) * s.cosTheta_h;
-    if (!(q > 0)) return 0;
-    return Value(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
+    return WeightThroughGgx(Sampler(), s, [&] { return Value(s.wo, s.wi); });
   }
   double MaskingScale() const { return a; }
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
@@ -132,9 +139,7 @@ struct UnityBRDF2 {
   PolarParam FromV(double v) const { return Sampler().FromV(v); }
   double VFromTheta(double theta) const { return Sampler().VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const {
-    double q = Sampler().D(s.wm) * s.cosTheta_h;
-    if (!(q > 0)) return 0;
-    return Value(s.wo, s.wi) * s.mu_l * 4 * s.oh / (2 * Pi * q);
+    return WeightThroughGgx(Sampler(), s, [&] { return Value(s.wo, s.wi); });
   }
   double MaskingScale() const { return 0; }
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
