@@ -9,6 +9,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -96,7 +97,37 @@ int Threads(int requested) {
 
 }  // namespace
 
-Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats) {
+namespace {
+
+/// The spec `spec` derives its texels from (QuantityInfo::derivedFrom), or false.
+bool DerivationSource(const TableSpec& spec, TableSpec& source) {
+  const QuantityInfo& q = Describe(spec.quantity);
+  return q.derivedFrom && q.derive && q.derivedFrom(spec, source);
+}
+
+}  // namespace
+
+NodeValueCache::NodeValueCache(const std::vector<TableSpec>& specs) {
+  for (const TableSpec& spec : specs) {
+    TableSpec source;
+    if (DerivationSource(spec, source)) kept_[source.Hash()];
+  }
+}
+
+NodeValues* NodeValueCache::KeepFor(const TableSpec& spec) {
+  auto it = kept_.find(spec.Hash());
+  return it == kept_.end() ? nullptr : &it->second;
+}
+
+const NodeValues* NodeValueCache::SourceFor(const TableSpec& spec) const {
+  TableSpec source;
+  if (!DerivationSource(spec, source)) return nullptr;
+  auto it = kept_.find(source.Hash());
+  return it == kept_.end() || it->second.values.empty() ? nullptr : &it->second;
+}
+
+Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
+                const NodeValues* from, NodeValues* keep) {
   if (spec.axes.empty() || spec.axes.size() > 3)
     throw std::invalid_argument("table '" + spec.name + "': needs 1 to 3 axes");
   for (const AxisSpec& a : spec.axes) {
@@ -116,6 +147,15 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   size_t n = spec.TexelCount(), nc = spec.channels.size();
   std::vector<long long> evals(n, 0);
   std::vector<double> errors(n, 0);
+  if (from && (from->values.size() != n * from->channels || from->errors.size() != n))
+    throw std::logic_error("table '" + spec.name + "': the node values of '" + from->name +
+                           "' do not match its nodes");
+  if (keep) {
+    keep->name = spec.name;
+    keep->specHash = t.specHash;
+    keep->channels = nc;
+    keep->values.assign(n * nc, 0.0);
+  }
   std::chrono::steady_clock::time_point t0, t1;
   {
     ProgressBar bar(spec.name, n, opt.progress);
@@ -127,6 +167,23 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
       // (QuantityInfo::bakeTable).
       if (auto bakeAll = Describe(spec.quantity).bakeTable) {
         bakeAll(spec, Threads(opt.threads), t, evals, errors);
+        if (keep) keep->values.clear();  // a fit keeps no node values to derive from
+        bar.done = n;
+        return;
+      }
+      // Derived texels (QuantityInfo::derive): no integration, the source's error estimates.
+      if (from) {
+        const auto derive = Describe(spec.quantity).derive;
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 256),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                            std::vector<double> v(nc);
+                            for (size_t i = r.begin(); i != r.end(); ++i) {
+                              derive(spec, &from->values[i * from->channels], v.data());
+                              for (size_t c = 0; c < nc; ++c)
+                                t.data[i * nc + c] = static_cast<float>(v[c]);
+                              errors[i] = from->errors[i];
+                            }
+                          });
         bar.done = n;
         return;
       }
@@ -139,6 +196,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
                             std::vector<double> v = EvaluateSpec(spec, x, st);
                             for (size_t c = 0; c < nc; ++c)
                               t.data[i * nc + c] = static_cast<float>(v[c]);
+                            if (keep) std::copy(v.begin(), v.end(), keep->values.begin() + i * nc);
                             evals[i] = st.evals;
                             errors[i] = st.errorEstimate;
                             if (++bar.done == pauseAfter)
@@ -153,6 +211,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   // Bake error, relative to max(1, |value|): ten times the integrator's own estimate (QUADPACK's
   // estimate of the nested rule can be low by a few times; tests/bake_tables.cpp checks the
   // bound by re-integrating texels), never below the tolerance, plus float32 rounding (2^-24).
+  if (keep) keep->errors = errors;
   double estimate = 0;
   for (size_t i = 0; i < n; ++i) estimate = std::max(estimate, errors[i]);
   // A fixed-rule table declares its rule's bound, which each texel reports as its estimate
@@ -167,6 +226,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats)
   if (stats) {
     stats->evals = 0;
     for (long long e : evals) stats->evals += e;
+    stats->derivedFrom = from ? from->name : "";
     stats->seconds = std::chrono::duration<double>(t1 - t0).count();
     stats->lookupSeconds = std::chrono::duration<double>(t2 - t1).count();
   }
@@ -271,7 +331,8 @@ std::map<EntryKey, ordered_json> ManifestEntries(const std::string& dir) {
 
 /// The text of DIR/manifest.json with the entries of `tables` added or replaced.
 std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
-                         const std::vector<long long>& evals, OutputFormat format, bool half) {
+                         const std::vector<long long>& evals, OutputFormat format, bool half,
+                         const std::string& texelsFrom) {
   std::map<EntryKey, ordered_json> entries = ManifestEntries(dir);
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
@@ -296,6 +357,7 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
     if (t.lookupError.cubicMax >= 0)
       e["lookup_error_cubic"] = {{"max", t.lookupError.cubicMax}, {"rms", t.lookupError.cubicRms}};
     e["integrand_evaluations"] = i < evals.size() ? evals[i] : 0;
+    if (!texelsFrom.empty()) e["texels_from"] = texelsFrom;  // derived: its evaluations are there
     e["bytes_float32"] = t.data.size() * 4;
     e["spec_hash"] = t.specHash;
     entries[KeyOf(e)] = e;
@@ -313,7 +375,8 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
 void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
 
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
-                      bool header, int threads, OutputFormat format) {
+                      bool header, int threads, OutputFormat format,
+                      const std::string& texelsFrom) {
   if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
   if (format == OutputFormat::Exr && FlipsY(table))
     throw std::runtime_error("kiln: cannot write '" + dir + "/" + table.name +
@@ -333,7 +396,7 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   FolderLock lock(dir);
   RemoveStaleTemporaries(dir);
   PendingFile manifest(dir + "/manifest.json");
-  manifest.WriteBytes(ManifestText(dir, {table}, {evals}, format, half));
+  manifest.WriteBytes(ManifestText(dir, {table}, {evals}, format, half, texelsFrom));
   std::vector<PendingFile*> files = {&exr};
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
@@ -383,6 +446,7 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
                         const BakeRunOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   BakeRunResult result;
+  NodeValueCache nodeValues(specs);
   for (const TableSpec& spec : specs) {
     if (!opt.force && IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError, opt.format)) {
       result.skipped.push_back(spec.name);
@@ -398,16 +462,20 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
       continue;
     }
     BakeStats stats;
-    Table table = BakeTable(spec, opt.bake, &stats);
+    Table table =
+        BakeTable(spec, opt.bake, &stats, nodeValues.SourceFor(spec), nodeValues.KeepFor(spec));
     // Table and manifest entry land together, table by table: a bake killed after table k
     // leaves a manifest that describes tables 1..k (and the older files) correctly.
-    CommitBakedTable(dir, table, stats.evals, opt.half, opt.header, opt.bake.threads, opt.format);
+    CommitBakedTable(dir, table, stats.evals, opt.half, opt.header, opt.bake.threads, opt.format,
+                     stats.derivedFrom);
     if (opt.log) {
       std::fprintf(opt.log, "baked   %-36s %8zu texels %8.2f s  bake error %.1e", spec.name.c_str(),
                    spec.TexelCount(), stats.seconds, table.bakeError);
       if (table.lookupError.max >= 0)
         std::fprintf(opt.log, "  lookup error %.1e (checked in %.2f s)", table.lookupError.max,
                      stats.lookupSeconds);
+      if (!stats.derivedFrom.empty())
+        std::fprintf(opt.log, "  texels from %s", stats.derivedFrom.c_str());
       std::fprintf(opt.log, "\n");
       std::fflush(opt.log);
     }

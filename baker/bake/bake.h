@@ -1,6 +1,7 @@
 // The bake: evaluate a table spec at every node with oneTBB, measure its errors, write it.
 #pragma once
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -18,13 +19,41 @@ struct BakeOptions {
 };
 
 struct BakeStats {
-  long long evals = 0;       ///< integrand evaluations of the texels
+  long long evals = 0;       ///< integrand evaluations of the texels (0 for derived texels)
+  std::string derivedFrom;   ///< the table whose node values gave the texels, or
   double seconds = 0;        ///< wall time of the texels only (no lookup check, no progress bar)
   double lookupSeconds = 0;  ///< wall time of the lookup-error check
 };
 
-/// Bakes `spec` into a table (metadata and texels). Bit-identical for any thread count.
-Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats = nullptr);
+/// The node values of one baked table in double (before the float32 store) with each node's
+/// error estimate: what a table derived from it needs (QuantityInfo::derivedFrom).
+struct NodeValues {
+  std::string name, specHash;
+  size_t channels = 0;
+  std::vector<double> values;  ///< texel after texel, `channels` values each
+  std::vector<double> errors;  ///< per texel
+};
+
+/// The node values a run of bakes keeps for the tables derived from them: built from the run's
+/// specs, it keeps exactly the tables some later spec derives from.
+class NodeValueCache {
+ public:
+  explicit NodeValueCache(const std::vector<TableSpec>& specs);
+  /// Where BakeTable should keep `spec`'s node values (null: no later spec needs them).
+  NodeValues* KeepFor(const TableSpec& spec);
+  /// The kept node values `spec` derives from (null: none kept, bake it by its own rule).
+  const NodeValues* SourceFor(const TableSpec& spec) const;
+
+ private:
+  std::map<std::string, NodeValues> kept_;  ///< by spec hash: the needed ones, filled or not
+};
+
+/// Bakes `spec` into a table (metadata and texels). Bit-identical for any thread count. With
+/// `from` (the node values of the table spec derives from, NodeValueCache::SourceFor) the texels
+/// come from them by QuantityInfo::derive, the same float32 texels as its own rule; with `keep`
+/// the double node values are kept there.
+Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats = nullptr,
+                const NodeValues* from = nullptr, NodeValues* keep = nullptr);
 
 /// Searches a table's lookup error (linear filter) against EvaluateSpec (lookup_error.h, at
 /// most `budget` reference evaluations, 0: the search's default) and fills table.lookupError
@@ -55,11 +84,14 @@ void CheckManifest(const std::string& dir);
 /// two bakes into one DIR leave the files and the entries of whichever committed last. Throws
 /// std::runtime_error (one line); DIR's files are then unchanged. The manifest entry of an EXR
 /// is as before #14; another format adds "format" (its --format name) and "pixel_type"
-/// ("float32", "float16" or "unorm16"), and png16 the per-channel "png16" scale and offset.
+/// ("float32", "float16" or "unorm16"), and png16 the per-channel "png16" scale and offset. A
+/// table whose texels were derived from another's (`texelsFrom`, BakeStats::derivedFrom) has
+/// "texels_from" (that table's name) after its "integrand_evaluations" (then 0).
 /// EXR rows cannot be flipped (kiln's loader reads row 0 as the first node): a table with
 /// flip_y (engine_layout.h) is refused in EXR.
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
-                      bool header, int threads = 1, OutputFormat format = OutputFormat::Exr);
+                      bool header, int threads = 1, OutputFormat format = OutputFormat::Exr,
+                      const std::string& texelsFrom = "");
 
 /// Whether DIR/<spec.name><extension of format> already is what a bake of `spec` would write, so
 /// that the bake can leave it alone: the file (read by LoadAnyTable, any format) stores the spec
@@ -88,11 +120,14 @@ struct BakeRunResult {
   double seconds = 0;                       ///< wall time of the whole run
 };
 
-/// Bakes each of `specs` into `dir` (which must exist; CheckManifest first) and commits it with
+/// Bakes each of `specs` into `dir` (which must exist; CheckManifest first), deriving a table's
+/// texels from a table baked before it in the same run where its kind says so (NodeValueCache:
+/// the same bytes as baking it alone), and commits it with
 /// its manifest entry (CommitBakedTable), table by table, except those IsUpToDate finds (unless
 /// opt.force): they are left untouched (same bytes, same mtime; with opt.header a missing
 /// DIR/<name>.h is written from the file). Logs, per table, either
-///   "baked   NAME  TEXELS texels  S s  bake error E  lookup error L" (S: the texels only) or
+///   "baked   NAME  TEXELS texels  S s  bake error E  lookup error L" (S: the texels only;
+///   "  texels from SOURCE" appended when they were derived, NodeValueCache) or
 ///   "skipped NAME  up to date".
 /// Throws what BakeTable and CommitBakedTable throw; the tables committed before stay.
 BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& dir,

@@ -35,15 +35,17 @@ std::vector<CatalogueBenchRow> RunCatalogueBench(const CatalogueBenchOptions& op
                  "seconds", "evals/texel", "declared", "sampled");
   std::vector<CatalogueBenchRow> rows;
   double totalSeconds = 0, worst = 0;
+  NodeValueCache nodeValues(specs);  // as the bake: a table derived from one baked before it
   for (const TableSpec& spec : specs) {
     BakeOptions bo;
     bo.threads = opt.threads;
     bo.measureLookupError = false;
     BakeStats st;
-    Table t = BakeTable(spec, bo, &st);
+    Table t = BakeTable(spec, bo, &st, nodeValues.SourceFor(spec), nodeValues.KeepFor(spec));
     CatalogueBenchRow r;
     r.table = spec.name;
-    r.method = UsesFixedRule(spec)                          ? "fixed rule"
+    r.method = !st.derivedFrom.empty()                      ? "derived"
+               : UsesFixedRule(spec)                        ? "fixed rule"
                : spec.Method().rfind("closed form", 0) == 0 ? "closed form"
                                                             : "adaptive";
     r.texels = static_cast<long long>(spec.TexelCount());

@@ -59,6 +59,20 @@ std::string FixedRuleMethod(const TableSpec& spec) {
                                        : MicrofacetFixedRuleMethod(spec);
 }
 
+/// A microfacet albedo at F = 1 is A + B of the model's dfg table at the same nodes: the bits
+/// FixedRule computes (it sums the same rule's A and B) and, at roughness 0, 1 - w^5 + w^5
+/// within an ulp of SmoothLimit's 1, the same float32 texel.
+bool DerivedFrom(const TableSpec& spec, TableSpec& source) {
+  if (!MicrofacetFixedRuleApplies(spec) || spec.channels.size() != 1 || !spec.params.empty())
+    return false;
+  const QuantityInfo& dfg = Describe(Quantity::Dfg);
+  source = dfg.makeSpec(spec.model, spec.axes);
+  source.tol = spec.tol;
+  return source.channels.size() == 2;
+}
+
+void Derive(const TableSpec&, const double* ab, double* out) { out[0] = ab[0] + ab[1]; }
+
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
@@ -100,6 +114,8 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.derivedFrom = DerivedFrom;
+    q.derive = Derive;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

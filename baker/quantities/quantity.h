@@ -122,6 +122,18 @@ struct QuantityInfo {
   /// charged at the bake rule's rate (kSearch*Charge: the search's budget buys the same points).
   std::vector<double> (*searchRule)(const TableSpec& spec, const double* x,
                                     IntegrationStats& stats) = nullptr;
+  // --- Tables derived from another table's nodes (issue #13) ------------------------------
+  /// A kind whose node values follow from another table's at the same nodes (a microfacet
+  /// albedo is A + B of its dfg table): fills `source` with that table's spec and returns true
+  /// (null or false: the kind computes its own). A bake that has just baked `source` in the same
+  /// run derives this table's texels from its node values (derive) instead of integrating again;
+  /// derive must give the float32 texels the kind's own rule gives at every node, so the file
+  /// does not depend on what else was baked (tests/bake_derived.cpp).
+  bool (*derivedFrom)(const TableSpec& spec, TableSpec& source) = nullptr;
+  /// This kind's channel values at one node (`out`, spec.channels.size() of them) from the
+  /// source table's (`source`, in double, before the float32 store).
+  void (*derive)(const TableSpec& spec, const double* source, double* out) = nullptr;
+
   // --- Fitted tables (ltc) -----------------------------------------------------------------
   /// When set, the bake fills every texel at once (a fit that starts each texel from its
   /// neighbour's solution) instead of EvaluateSpec per texel: writes table.data (and
