@@ -100,6 +100,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;
