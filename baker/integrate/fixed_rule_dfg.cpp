@@ -40,6 +40,26 @@
 //     graded towards t'max takes instead when it is the finer one; and, when the opposite
 //     azimuth's cut is close to the normal (mu_o << alpha), near t' = 0 at that cut's distance,
 //     which a panel over the first half, graded towards 0, takes.
+// Two variants share the panels and the kernel (kSeparable, kFresnel below):
+//  - Separable Smith (ggx-separable), G2 = G1(o) G1(l): g = G2 / G1(o) = G1(l) = 2 / (1 +
+//    sqrt(1 + alpha^2 tan^2 theta_l)) = 2 N1 / (N1 + Q) in the variables below (mu_l = N1 / M2,
+//    sin_l^2 = P / M2^2, Q = sqrt(N1^2 + alpha^2 P)), in [0, 1]. Scale 3 becomes: as mu_l -> 0,
+//    g ~ 2 mu_l (sqrt(mu_l^2 + alpha^2) - mu_l) / alpha^2 has no pole (there is no (1 +
+//    Lambda_o) to cancel against Lambda_l) but branch points at mu_l = +-i alpha: a layer at the
+//    cut of width ~ alpha in mu_l whatever mu_o, so s = alpha / 2 (the generic rule's, graded a
+//    little finer than the branch points' distance) replaces min(alpha, mu_o). It does not
+//    vanish at mu_o = 0 (the correlated g is 1 there): the same panel then grades towards the
+//    cut on the front side.
+//  - Exact dielectric Fresnel (ggx-fresnel-albedo): w = FrDielectric(o.h, eta) and no B channel.
+//    F is a function of c = o.h alone: with eta cos_t = sqrt(c^2 + eta^2 - 1), its only
+//    singularities are the branch points c = +-i sqrt(eta^2 - 1), at distance >= 0.83 from the
+//    visible range c in [0, 1] for eta >= 1.3 (kFresnelKernelEtaMin): F is smooth on every panel,
+//    and the panels of the DFG rule take it with somewhat more outer and bulk nodes
+//    (kFresnelBands). Per texel of the tables (integrand_evaluations over texels in
+//    luts/manifest.json): ggx-fresnel-albedo 500, ggx-separable 397, against 1,179 and 937 with
+//    fixed_rule_microfacet.cpp's rules (git show d25a442~1:luts/manifest.json), whose Fresnel
+//    layer panels remain what eta -> 1 needs).
+//    F <= 1 and g <= 1 keep the light-azimuth weights of below valid for both variants.
 // So an azimuth has at most three panels: [graded to 0] + plain + [graded to the cut]. Every
 // node evaluates the whole integrand, g included: one set of nodes for the bulk and the masking
 // deficit. A graded panel of length len at scale e takes gradedNodes (deficitNodes towards 0)
@@ -60,7 +80,11 @@
 // limits: an evaluation costs two square roots and one division. Inner counts are multiples of
 // 4 and all panels of a texel go through one kernel that evaluates 4 nodes at a time (AVX2 when
 // the CPU has it, else SSE2, else portable code), each lane summing its nodes in order, the
-// lanes then added as (0 + 2) + (1 + 3): the three kernels agree to the last bit.
+// lanes then added as (0 + 2) + (1 + 3): the three kernels agree to the last bit (the variants
+// too: tests/integrate_fixed_rule_kernels.cpp forces each path, FixedRuleOptions::simd). The
+// Fresnel variant evaluates F as (eta^2 - 1)^2 / 2 (B^2 + X^2 A^2) / (A^2 B^2), A = (c + eta
+// cos_t)^2, B = (eta^2 c + eta cos_t)^2, X = (eta^2 + 1) c^2 - 1 (FrDielectric's cancellation-free
+// r_perp, r_parl over one division): one more square root and division per node.
 #include "baker/integrate/fixed_rule_dfg.h"
 
 #include <algorithm>

@@ -8,6 +8,8 @@
 // G2 = 1 / (1 + Lambda(o) + Lambda(l)), F = 1, w = 1 - o.h,
 //     A = integral f (1 - w^5) mu_l dl,   B = integral f w^5 mu_l dl,
 // so that the albedo with Schlick F0 (F90 = 1) is F0 A + B, and A + B is the F = 1 albedo.
+// The same rule and kernel also take ggx-separable (G2 = G1(o) G1(l)) and GGX's albedo with
+// exact dielectric Fresnel for eta >= 1.3 (declarations at the end of this file).
 #pragma once
 #include <array>
 
