@@ -234,3 +234,41 @@ TEST_CASE(
     CHECK(std::abs(kernel - generic) <= 2 * kTarget);
   }
 }
+
+TEST_CASE(
+    "Off the grids: the kernel variants at random (mu, alpha[, eta]) points, a third of them in "
+    "the grazing layer, stay within 1e-7 (long: run by hand)",
+    "[integrate][fixed-rule-kernels][long]") {
+  unsigned long long state = 2024;
+  auto uniform = [&] {  // 53-bit LCG draw in [0, 1)
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return double(state >> 11) * 0x1p-53;
+  };
+  auto draw = [&](double& mu, double& r) {
+    r = uniform();
+    mu = uniform();
+    if (uniform() < 1.0 / 3) mu = std::min(1.0, r * r * std::pow(10.0, 2 * uniform() - 1.5));
+  };
+  double worstSeparable = 0, worstFresnel = 0;
+  for (int i = 0; i < 400; ++i) {
+    double mu, r;
+    draw(mu, r);
+    IntegrationOptions io;
+    io.tol = 1e-10;
+    IntegrationStats st;
+    std::array<double, 2> ref = SplitSumDFG(ModelAtR("ggx-separable", r), mu, io, st);
+    std::array<double, 2> got = FixedRuleGGXSeparableDFG(mu, AlphaOf(r));
+    worstSeparable =
+        std::max({worstSeparable, std::abs(got[0] - ref[0]), std::abs(got[1] - ref[1])});
+    const double eta = 1.3 + 1.7 * uniform();
+    AnyModel m = ModelAtR("ggx", r);
+    SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
+    const double e = DirectionalAlbedo(m, mu, io, st).lin;
+    worstFresnel =
+        std::max(worstFresnel, std::abs(FixedRuleGGXFresnelKernel(mu, AlphaOf(r), eta) - e));
+  }
+  std::printf("kernel rules, 400 random points: separable worst %.3g, exact Fresnel worst %.3g\n",
+              worstSeparable, worstFresnel);
+  CHECK(worstSeparable <= kTarget);
+  CHECK(worstFresnel <= kTarget);
+}

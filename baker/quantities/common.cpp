@@ -140,7 +140,11 @@ std::string GgxFixedRuleMethod(const TableSpec&) {
 }
 
 const char* MicrofacetFixedRuleVersion(const TableSpec& spec) {
-  return spec.model == "ggx-separable" ? "3" : "2";
+  // 3: ggx-separable by the GGX kernel; beckmann, beckmann-separable, blinn-phong at fewer nodes.
+  return spec.model == "ggx-separable" || spec.model == "beckmann" ||
+                 spec.model == "beckmann-separable" || spec.model == "blinn-phong"
+             ? "3"
+             : "2";
 }
 
 bool MicrofacetFixedRuleApplies(const TableSpec& spec) {
