@@ -69,7 +69,8 @@ std::array<double, 2> GgxSeparableFixedRuleAt(const double* x, IntegrationStats&
 
 /// The fixed-rule version of a microfacet spec of the dfg, albedo and albedo-avg kinds
 /// (QuantityInfo::fixedRuleVersionOf): "3" for ggx-separable (the GGX kernel's separable
-/// variant), "2" for every other model.
+/// variant) and beckmann, beckmann-separable, blinn-phong (fewer nodes), "2" for every other
+/// model.
 const char* MicrofacetFixedRuleVersion(const TableSpec& spec);
 
 /// True when a microfacet fixed rule applies: axes (mu, roughness) and a model with one (ggx: the
