@@ -40,6 +40,26 @@
 //     graded towards t'max takes instead when it is the finer one; and, when the opposite
 //     azimuth's cut is close to the normal (mu_o << alpha), near t' = 0 at that cut's distance,
 //     which a panel over the first half, graded towards 0, takes.
+// Two variants share the panels and the kernel (kSeparable, kFresnel below):
+//  - Separable Smith (ggx-separable), G2 = G1(o) G1(l): g = G2 / G1(o) = G1(l) = 2 / (1 +
+//    sqrt(1 + alpha^2 tan^2 theta_l)) = 2 N1 / (N1 + Q) in the variables below (mu_l = N1 / M2,
+//    sin_l^2 = P / M2^2, Q = sqrt(N1^2 + alpha^2 P)), in [0, 1]. Scale 3 becomes: as mu_l -> 0,
+//    g ~ 2 mu_l (sqrt(mu_l^2 + alpha^2) - mu_l) / alpha^2 has no pole (there is no (1 +
+//    Lambda_o) to cancel against Lambda_l) but branch points at mu_l = +-i alpha: a layer at the
+//    cut of width ~ alpha in mu_l whatever mu_o, so s = alpha / 2 (the generic rule's, graded a
+//    little finer than the branch points' distance) replaces min(alpha, mu_o). It does not
+//    vanish at mu_o = 0 (the correlated g is 1 there): the same panel then grades towards the
+//    cut on the front side.
+//  - Exact dielectric Fresnel (ggx-fresnel-albedo): w = FrDielectric(o.h, eta) and no B channel.
+//    F is a function of c = o.h alone: with eta cos_t = sqrt(c^2 + eta^2 - 1), its only
+//    singularities are the branch points c = +-i sqrt(eta^2 - 1), at distance >= 0.83 from the
+//    visible range c in [0, 1] for eta >= 1.3 (kFresnelKernelEtaMin): F is smooth on every panel,
+//    and the panels of the DFG rule take it with somewhat more outer and bulk nodes
+//    (kFresnelBands). Per texel of the tables (integrand_evaluations over texels in
+//    luts/manifest.json): ggx-fresnel-albedo 500, ggx-separable 397, against 1,179 and 937 with
+//    fixed_rule_microfacet.cpp's rules (git show d25a442~1:luts/manifest.json), whose Fresnel
+//    layer panels remain what eta -> 1 needs).
+//    F <= 1 and g <= 1 keep the light-azimuth weights of below valid for both variants.
 // So an azimuth has at most three panels: [graded to 0] + plain + [graded to the cut]. Every
 // node evaluates the whole integrand, g included: one set of nodes for the bulk and the masking
 // deficit. A graded panel of length len at scale e takes gradedNodes (deficitNodes towards 0)
@@ -60,7 +80,11 @@
 // limits: an evaluation costs two square roots and one division. Inner counts are multiples of
 // 4 and all panels of a texel go through one kernel that evaluates 4 nodes at a time (AVX2 when
 // the CPU has it, else SSE2, else portable code), each lane summing its nodes in order, the
-// lanes then added as (0 + 2) + (1 + 3): the three kernels agree to the last bit.
+// lanes then added as (0 + 2) + (1 + 3): the three kernels agree to the last bit (the variants
+// too: tests/integrate_fixed_rule_kernels.cpp forces each path, FixedRuleOptions::simd). The
+// Fresnel variant evaluates F as (eta^2 - 1)^2 / 2 (B^2 + X^2 A^2) / (A^2 B^2), A = (c + eta
+// cos_t)^2, B = (eta^2 c + eta cos_t)^2, X = (eta^2 + 1) c^2 - 1 (FrDielectric's cancellation-free
+// r_perp, r_parl over one division): one more square root and division per node.
 #include "baker/integrate/fixed_rule_dfg.h"
 
 #include <algorithm>
@@ -236,7 +260,12 @@ inline double MuLambda(double mu, double a) {
 /// Constants of the inner integrand (file comment, with S = 2t folded in).
 struct Integrand {
   double a2x, a2, mu, ozs, g1, muA2;
+  double e2m1, eta2, eta2p1, fScale;  ///< Fresnel: eta^2 - 1, eta^2, eta^2 + 1, (eta^2 - 1)^2 / 2
 };
+
+/// The integrands of the kernel: (A + B, B) with height-correlated Smith, the same with separable
+/// Smith, and the exact-Fresnel albedo (height-correlated).
+enum Mode { kCorrelated = 0, kSeparable = 1, kFresnel = 2 };
 
 /// A panel of the inner rule: nodes t = t0 + h x_i, weights wh w_i (wh includes the azimuth's).
 struct Panel {
@@ -275,6 +304,10 @@ inline Quad Max(const Quad& a, const Quad& b) {  // as maxpd
   return {{a.v[0] > b.v[0] ? a.v[0] : b.v[0], a.v[1] > b.v[1] ? a.v[1] : b.v[1],
            a.v[2] > b.v[2] ? a.v[2] : b.v[2], a.v[3] > b.v[3] ? a.v[3] : b.v[3]}};
 }
+inline Quad Min(const Quad& a, const Quad& b) {  // as minpd
+  return {{a.v[0] < b.v[0] ? a.v[0] : b.v[0], a.v[1] < b.v[1] ? a.v[1] : b.v[1],
+           a.v[2] < b.v[2] ? a.v[2] : b.v[2], a.v[3] < b.v[3] ? a.v[3] : b.v[3]}};
+}
 inline double Reduce(const Quad& a) { return (a.v[0] + a.v[2]) + (a.v[1] + a.v[3]); }
 
 #ifdef KILN_FIXED_RULE_X86
@@ -290,6 +323,7 @@ inline Pair Splat(double x, Pair) { return {_mm_set1_pd(x), _mm_set1_pd(x)}; }
 inline Pair Load(const double* p, Pair) { return {_mm_loadu_pd(p), _mm_loadu_pd(p + 2)}; }
 inline Pair Sqrt(Pair a) { return {_mm_sqrt_pd(a.lo), _mm_sqrt_pd(a.hi)}; }
 inline Pair Max(Pair a, Pair b) { return {_mm_max_pd(a.lo, b.lo), _mm_max_pd(a.hi, b.hi)}; }
+inline Pair Min(Pair a, Pair b) { return {_mm_min_pd(a.lo, b.lo), _mm_min_pd(a.hi, b.hi)}; }
 inline double Reduce(Pair a) { return (a.lo[0] + a.hi[0]) + (a.lo[1] + a.hi[1]); }
 #pragma GCC push_options
 #pragma GCC target("avx2")
@@ -297,6 +331,7 @@ inline __m256d Splat(double x, __m256d) { return _mm256_set1_pd(x); }
 inline __m256d Load(const double* p, __m256d) { return _mm256_loadu_pd(p); }
 inline __m256d Sqrt(__m256d a) { return _mm256_sqrt_pd(a); }
 inline __m256d Max(__m256d a, __m256d b) { return _mm256_max_pd(a, b); }
+inline __m256d Min(__m256d a, __m256d b) { return _mm256_min_pd(a, b); }
 inline double Reduce(__m256d a) { return (a[0] + a[2]) + (a[1] + a[3]); }
 #pragma GCC pop_options
 #endif
@@ -304,14 +339,17 @@ inline double Reduce(__m256d a) { return (a[0] + a[2]) + (a[1] + a[3]); }
 // V is a 256-bit vector only inside the AVX2 kernel, where Kernel is always inlined.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
-/// Sums the (A + B, B) integrand times weight over all panels of all azimuths, 4 nodes at a time.
-template <class V>
+/// Sums the integrand of `M` times weight over all panels of all azimuths, 4 nodes at a time:
+/// (A + B, B) for kCorrelated and kSeparable, (E, 0) for kFresnel.
+template <class V, int M>
 __attribute__((always_inline)) inline void Kernel(const Integrand& k, const Azimuth* az, int nAz,
                                                   const Panel* panels, double& sumV, double& sumB) {
   const V z{};
   const V one = Splat(1.0, z), zero = Splat(0.0, z), tiny = Splat(1e-300, z);
   const V a2x = Splat(k.a2x, z), a2 = Splat(k.a2, z), mu = Splat(k.mu, z), ozs = Splat(k.ozs, z);
-  const V g1 = Splat(k.g1, z), muA2 = Splat(k.muA2, z);
+  const V g1 = Splat(k.g1, z), muA2 = Splat(k.muA2, z), two = Splat(2.0, z);
+  const V e2m1 = Splat(k.e2m1, z), eta2 = Splat(k.eta2, z), eta2p1 = Splat(k.eta2p1, z);
+  const V fScale = Splat(k.fScale, z);
   V sv = zero, sb = zero;
   for (int j = 0; j < nAz; ++j) {
     const V kMl = Splat(az[j].kMl, z), kOh = Splat(az[j].kOh, z), kOn = Splat(az[j].kOn, z);
@@ -325,14 +363,33 @@ __attribute__((always_inline)) inline void Kernel(const Integrand& k, const Azim
         const V N1 = Max(zero, kMl * t * C + mu * (C2 - aS2));  // mu_l M2
         const V P = (M2 - N1) * (M2 + N1);
         const V Q = Sqrt(N1 * N1 + a2 * P);
-        const V Ng = g1 * N1 * (Q + N1);
-        const V Dg = Ng + (muA2 * P + tiny);  // tiny: g = 0 / tiny at the cut when mu = 0
+        V Ng, Dg;  // g = Ng / Dg
+        if constexpr (M == kSeparable) {
+          Ng = two * N1;  // G1(l) = 2 N1 / (N1 + Q)
+          Dg = (N1 + Q) + tiny;
+        } else {
+          Ng = g1 * N1 * (Q + N1);
+          Dg = Ng + (muA2 * P + tiny);  // tiny: g = 0 / tiny at the cut when mu = 0
+        }
         const V sM = Sqrt(M2), qD = q * q * q * Dg, r = one / (sM * qD);
-        const V w = one - (kOh * t + mu * C) * qD * r;  // 1 - o.h
+        const V oh = (kOh * t + mu * C) * qD * r;  // o.h
         const V val = (t * (kOn * t + ozs * C)) * (Ng * wt) * sM * r;
-        const V w2 = w * w;
-        sv = sv + val;
-        sb = sb + val * (w2 * w2 * w);
+        if constexpr (M == kFresnel) {
+          // FrDielectric(o.h, eta) with eta cos_t = sqrt(c^2 + eta^2 - 1) (no total internal
+          // reflection for eta > 1), r_perp = -(eta^2 - 1) / A, r_parl = (eta^2 - 1) X / B,
+          // A = (c + eta cos_t)^2, B = (eta^2 c + eta cos_t)^2, X = (eta^2 + 1) c^2 - 1.
+          const V c2 = oh * oh, etaCt = Sqrt(c2 + e2m1);
+          const V sa = oh + etaCt, sb2 = eta2 * oh + etaCt;
+          const V A = sa * sa, B = sb2 * sb2, X = eta2p1 * c2 - one;
+          const V A2 = A * A, B2 = B * B;
+          const V F = Min(one, fScale * (B2 + X * X * A2) / (A2 * B2));
+          sv = sv + val * F;
+        } else {
+          const V w = one - oh;  // 1 - o.h
+          const V w2 = w * w;
+          sv = sv + val;
+          sb = sb + val * (w2 * w2 * w);
+        }
       }
     }
   }
@@ -342,24 +399,40 @@ __attribute__((always_inline)) inline void Kernel(const Integrand& k, const Azim
 #pragma GCC diagnostic pop
 
 #ifdef KILN_FIXED_RULE_X86
+template <int M>
 __attribute__((target("avx2"))) void KernelAVX2(const Integrand& k, const Azimuth* az, int nAz,
                                                 const Panel* panels, double& sumV, double& sumB) {
-  Kernel<__m256d>(k, az, nAz, panels, sumV, sumB);
+  Kernel<__m256d, M>(k, az, nAz, panels, sumV, sumB);
 }
 #endif
 
-/// The widest kernel the CPU runs (all give the same bits).
-void Sum(const Integrand& k, const Azimuth* az, int nAz, const Panel* panels, double& sumV,
-         double& sumB) {
+/// The kernel of `M` on the SIMD path `path` (Widest: the widest the CPU runs; all give the same
+/// bits; a path the CPU or the build lacks falls back to the widest).
+template <int M>
+void SumOf(SimdPath path, const Integrand& k, const Azimuth* az, int nAz, const Panel* panels,
+           double& sumV, double& sumB) {
+  if (!SimdPathAvailable(path)) path = SimdPath::Widest;
 #ifdef KILN_FIXED_RULE_X86
   static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (avx2)
-    KernelAVX2(k, az, nAz, panels, sumV, sumB);
+  if (path == SimdPath::AVX2 || (path == SimdPath::Widest && avx2))
+    KernelAVX2<M>(k, az, nAz, panels, sumV, sumB);
+  else if (path == SimdPath::Portable)
+    Kernel<Quad, M>(k, az, nAz, panels, sumV, sumB);
   else
-    Kernel<Pair>(k, az, nAz, panels, sumV, sumB);
+    Kernel<Pair, M>(k, az, nAz, panels, sumV, sumB);
 #else
-  Kernel<Quad>(k, az, nAz, panels, sumV, sumB);
+  Kernel<Quad, M>(k, az, nAz, panels, sumV, sumB);
 #endif
+}
+
+void Sum(int mode, SimdPath path, const Integrand& k, const Azimuth* az, int nAz,
+         const Panel* panels, double& sumV, double& sumB) {
+  if (mode == kSeparable)
+    SumOf<kSeparable>(path, k, az, nAz, panels, sumV, sumB);
+  else if (mode == kFresnel)
+    SumOf<kFresnel>(path, k, az, nAz, panels, sumV, sumB);
+  else
+    SumOf<kCorrelated>(path, k, az, nAz, panels, sumV, sumB);
 }
 
 /// The bake's node counts by band of alpha (alpha below; outer, bulk, graded, per e-fold,
@@ -381,13 +454,34 @@ constexpr TunedBand kTunedBands[] = {{0.004, 11, 7, 4, 1.3, 4},
                                      {0.06, 10, 7, 5, 1.4, 4},
                                      {0.16, 12, 8, 5, 1.2, 4},
                                      {INFINITY, 12, 9, 4, 1.4, 4}};
+/// ggx-separable's (separable Smith, the masking scale alpha / 2) and the exact-Fresnel albedo's
+/// (eta >= kFresnelKernelEtaMin), tuned the same way against adaptive quadrature at 1e-10 on the
+/// grids of tests/integrate_fixed_rule_kernels.cpp (worst 4e-8 separable, 7e-8 Fresnel there).
+constexpr TunedBand kSeparableBands[] = {{0.004, 12, 8, 5, 1.6, 5},
+                                         {0.02, 12, 8, 5, 1.6, 5},
+                                         {0.06, 12, 8, 5, 1.6, 5},
+                                         {0.16, 12, 8, 5, 1.6, 5},
+                                         {INFINITY, 14, 7, 5, 1.4, 5}};
+constexpr TunedBand kFresnelBands[] = {{0.004, 14, 8, 5, 1.6, 4},
+                                       {0.02, 12, 8, 5, 1.6, 5},
+                                       {0.06, 16, 8, 5, 1.6, 5},
+                                       {0.16, 16, 8, 5, 1.6, 5},
+                                       {INFINITY, 14, 9, 5, 1.6, 5}};
+/// The lookup-error search's form of kFresnelBands, one set for every band: measured against it on
+/// a 49 x 41 (mu, r) grid (mu = 0, 1e-9, 1; r = 0, 1) x 10 eta in [1.3, 3]: worst 1.3e-6
+/// (kSearchRuleBound 2e-6), 0.50 of its evaluations.
+constexpr TunedBand kSearchFresnelBands[] = {{INFINITY, 9, 5, 4, 1.2, 4}};
 
 }  // namespace
 
-FixedRuleOptions TunedFixedRuleOptions(double alpha) {
+namespace {
+
+/// The options of the band of `bands` that holds alpha.
+template <size_t N>
+FixedRuleOptions BandOptions(const TunedBand (&bands)[N], double alpha) {
   const double a = std::max(alpha, MinAlpha);
-  const TunedBand* b = kTunedBands;
-  while (b + 1 < std::end(kTunedBands) && !(a < b->alphaBelow)) ++b;  // NaN: the last band
+  const TunedBand* b = bands;
+  while (b + 1 < std::end(bands) && !(a < b->alphaBelow)) ++b;  // NaN: the last band
   FixedRuleOptions o;
   o.outerNodes = b->outer;
   o.bulkNodes = b->bulk;
@@ -397,12 +491,32 @@ FixedRuleOptions TunedFixedRuleOptions(double alpha) {
   return o;
 }
 
+}  // namespace
+
+FixedRuleOptions TunedFixedRuleOptions(double alpha) { return BandOptions(kTunedBands, alpha); }
+
+FixedRuleOptions TunedSeparableRuleOptions(double alpha) {
+  return BandOptions(kSeparableBands, alpha);
+}
+
+FixedRuleOptions TunedFresnelKernelOptions(double alpha) {
+  return BandOptions(kFresnelBands, alpha);
+}
+
+FixedRuleOptions SearchFresnelKernelOptions(double alpha) {
+  return BandOptions(kSearchFresnelBands, alpha);
+}
+
 std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, long long* evals) {
   return FixedRuleGGXDFG(mu, alpha, TunedFixedRuleOptions(alpha), evals);
 }
 
-std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOptions& opt,
-                                      long long* evals) {
+namespace {
+
+/// The rule for the kernel's integrand `mode` (eta: the Fresnel index of kFresnel): the panels
+/// of the file comment, then one kernel call. Returns (A, B) (kFresnel: (E, 0)).
+std::array<double, 2> Rule(int mode, double mu, double alpha, double eta,
+                           const FixedRuleOptions& opt, long long* evals) {
   mu = std::min(1.0, std::max(0.0, mu));
   const double a = std::max(alpha, MinAlpha), a2 = a * a;
   const double st = std::sqrt(std::max(0.0, 1 - mu * mu));
@@ -410,7 +524,9 @@ std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOp
   const double ozs = mu / L, oxs = a * st / L;  // stretched view o'
   const double pref = 16 / (kPi * (1 + ozs));   // 4 / (pi (1 + o'_z)) times the kernel's 1/4
   const double muLo = MuLambda(mu, a);
-  const double sMask = mu > 0 ? mu * a / (mu + 2 * muLo) : 0;  // pole of g at mu_l = -sMask
+  // Scale 3 (file comment): the pole of g at mu_l = -sMask (height-correlated), or G1(l)'s branch
+  // points at mu_l = +-i alpha (separable), graded for at alpha / 2.
+  const double sMask = mode == kSeparable ? a / 2 : mu > 0 ? mu * a / (mu + 2 * muLo) : 0;
   const double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
   const int outerLevel = std::min(
       kOuterLevels - 1, static_cast<int>(std::ceil(std::asinh(kPi / (2 * sigma)) / kOuterStep)));
@@ -433,6 +549,10 @@ std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOp
   k.ozs = ozs;
   k.g1 = 2 * (mu + muLo);
   k.muA2 = mu * a2;
+  k.e2m1 = mode == kFresnel ? (eta - 1) * (eta + 1) : 0;
+  k.eta2 = eta * eta;
+  k.eta2p1 = k.eta2 + 1;
+  k.fScale = k.e2m1 * k.e2m1 / 2;
   const double invMu = mu > 0 ? 1 / mu : 0;
 
   // Per outer node, both sides (0: cos p > 0, 1: cos p < 0): t at the cut, dt/dt' there, the
@@ -510,9 +630,45 @@ std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOp
     }
   }
   double sumV, sumB;
-  Sum(k, az, nAz, panels, sumV, sumB);
+  Sum(mode, opt.simd, k, az, nAz, panels, sumV, sumB);
   if (evals) *evals += count;
+  if (mode == kFresnel) return {pref * sumV, 0};
   return {pref * (sumV - sumB), pref * sumB};
+}
+
+}  // namespace
+
+std::array<double, 2> FixedRuleGGXDFG(double mu, double alpha, const FixedRuleOptions& opt,
+                                      long long* evals) {
+  return Rule(kCorrelated, mu, alpha, 0, opt, evals);
+}
+
+std::array<double, 2> FixedRuleGGXSeparableDFG(double mu, double alpha, const FixedRuleOptions& opt,
+                                               long long* evals) {
+  return Rule(kSeparable, mu, alpha, 0, opt, evals);
+}
+
+std::array<double, 2> FixedRuleGGXSeparableDFG(double mu, double alpha, long long* evals) {
+  return Rule(kSeparable, mu, alpha, 0, TunedSeparableRuleOptions(alpha), evals);
+}
+
+double FixedRuleGGXFresnelKernel(double mu, double alpha, double eta, const FixedRuleOptions& opt,
+                                 long long* evals) {
+  if (!(eta > 1)) return 0;  // F = 0 at eta = 1; eta < 1 is not this rule's
+  return Rule(kFresnel, mu, alpha, eta, opt, evals)[0];
+}
+
+double FixedRuleGGXFresnelKernel(double mu, double alpha, double eta, long long* evals) {
+  return FixedRuleGGXFresnelKernel(mu, alpha, eta, TunedFresnelKernelOptions(alpha), evals);
+}
+
+bool SimdPathAvailable(SimdPath path) {
+#ifdef KILN_FIXED_RULE_X86
+  if (path == SimdPath::AVX2) return __builtin_cpu_supports("avx2");
+  return true;
+#else
+  return path == SimdPath::Widest || path == SimdPath::Portable;
+#endif
 }
 
 }  // namespace kiln

@@ -114,6 +114,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.derivedFrom = DerivedFrom;
     q.derive = Derive;
     q.evaluate = Evaluate;

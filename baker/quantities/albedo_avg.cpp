@@ -103,6 +103,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

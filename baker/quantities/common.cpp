@@ -126,10 +126,25 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats) {
   return ab;
 }
 
+std::array<double, 2> GgxSeparableFixedRuleAt(const double* x, IntegrationStats& stats) {
+  double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
+  std::array<double, 2> ab = FixedRuleGGXSeparableDFG(Clamp(x[0], 0.0, 1.0), alpha, &stats.evals);
+  stats.errorEstimate = kFixedRuleBound;
+  return ab;
+}
+
 std::string GgxFixedRuleMethod(const TableSpec&) {
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
          "integrand's analytic scales, exact horizon cut; declared error " +
          Short(kFixedRuleBound) + " abs";
+}
+
+const char* MicrofacetFixedRuleVersion(const TableSpec& spec) {
+  // 3: ggx-separable by the GGX kernel; beckmann, beckmann-separable, blinn-phong at fewer nodes.
+  return spec.model == "ggx-separable" || spec.model == "beckmann" ||
+                 spec.model == "beckmann-separable" || spec.model == "blinn-phong"
+             ? "3"
+             : "2";
 }
 
 bool MicrofacetFixedRuleApplies(const TableSpec& spec) {
@@ -140,6 +155,7 @@ bool MicrofacetFixedRuleApplies(const TableSpec& spec) {
 std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double* x,
                                             IntegrationStats& stats) {
   if (spec.model == "ggx") return GgxFixedRuleAt(x, stats);
+  if (spec.model == "ggx-separable") return GgxSeparableFixedRuleAt(x, stats);
   FixedRuleModel m;
   FixedRuleModelFor(spec.model.c_str(), &m);
   // alpha as MakeModel derives it from the roughness clamped to the model's range [0, 1].
@@ -151,8 +167,9 @@ std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double*
 
 std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double* x,
                                              IntegrationStats& stats) {
-  if (spec.model == "ggx") {
-    std::array<double, 2> ab = GgxFixedRuleAt(x, stats);
+  if (spec.model == "ggx" || spec.model == "ggx-separable") {  // the kernel: the bake's rule
+    std::array<double, 2> ab =
+        spec.model == "ggx" ? GgxFixedRuleAt(x, stats) : GgxSeparableFixedRuleAt(x, stats);
     stats.errorEstimate = 0;
     return ab;
   }
@@ -169,6 +186,11 @@ std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double
 
 std::string MicrofacetFixedRuleMethod(const TableSpec& spec) {
   if (spec.model == "ggx") return GgxFixedRuleMethod(spec);
+  if (spec.model == "ggx-separable")
+    return "visible-normal space (Heitz 2018), separable Smith as G1(l): fixed Gauss-Legendre "
+           "rule, panels placed at the integrand's analytic scales, exact horizon cut; declared "
+           "error " +
+           Short(kFixedRuleBound) + " abs";
   return "GGX visible-normal space (Heitz 2018) with the model's NDF and Smith term as smooth "
          "weights: fixed Gauss-Legendre rule, panels placed at the integrand's analytic scales, "
          "exact horizon cut; declared error " +
@@ -209,7 +231,11 @@ std::vector<double> FresnelAlbedoFixedRuleAt(const TableSpec& spec, const double
                                              IntegrationStats& stats) {
   std::array<double, 3> p = FresnelAlbedoPoint(spec, x);
   double alpha = std::max(AlphaFromPerceptual(Clamp(p[1], 0.0, 1.0)), MinAlpha);
-  double e = FixedRuleGGXFresnelAlbedo(Clamp(p[0], 0.0, 1.0), alpha, p[2], &stats.evals);
+  // The GGX kernel where F is smooth in o.h (eta >= 1.3: the table's domain), else the generic
+  // rule with the Fresnel layer's panels (kiln integrate and tests reach eta near 1).
+  double e = p[2] >= kFresnelKernelEtaMin
+                 ? FixedRuleGGXFresnelKernel(Clamp(p[0], 0.0, 1.0), alpha, p[2], &stats.evals)
+                 : FixedRuleGGXFresnelAlbedo(Clamp(p[0], 0.0, 1.0), alpha, p[2], &stats.evals);
   stats.errorEstimate = kFixedRuleBound;
   return {e};
 }
@@ -219,14 +245,27 @@ std::vector<double> FresnelAlbedoSearchRuleAt(const TableSpec& spec, const doubl
   std::array<double, 3> p = FresnelAlbedoPoint(spec, x);
   double alpha = std::max(AlphaFromPerceptual(Clamp(p[1], 0.0, 1.0)), MinAlpha);
   long long evals = 0;
-  double e = FixedRuleGGXFresnelAlbedo(Clamp(p[0], 0.0, 1.0), alpha, p[2],
-                                       SearchFresnelRuleOptions(), &evals);
-  stats.evals += std::llround(static_cast<double>(evals) * kSearchFresnelCharge);
+  const double mu = Clamp(p[0], 0.0, 1.0);
+  const bool kernel = p[2] >= kFresnelKernelEtaMin;
+  double e =
+      kernel ? FixedRuleGGXFresnelKernel(mu, alpha, p[2], SearchFresnelKernelOptions(alpha), &evals)
+             : FixedRuleGGXFresnelAlbedo(mu, alpha, p[2], SearchFresnelRuleOptions(), &evals);
+  stats.evals += std::llround(static_cast<double>(evals) *
+                              (kernel ? kSearchFresnelKernelCharge : kSearchFresnelCharge));
   stats.errorEstimate = kSearchRuleBound;
   return {e};
 }
 
-std::string FresnelAlbedoFixedRuleMethod(const TableSpec&) {
+std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec) {
+  // The kernel's rule where every eta of the spec is at least kFresnelKernelEtaMin.
+  double etaLo = Param(spec, "eta", 1.5);
+  for (const AxisSpec& a : spec.axes)
+    if (a.name == "eta") etaLo = std::min(a.lo, a.hi);
+  if (etaLo >= kFresnelKernelEtaMin)
+    return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
+           "integrand's analytic scales, exact horizon cut, exact Fresnel as a weight in o.h "
+           "(GGX kernel, eta >= 1.3); declared error " +
+           Short(kFixedRuleBound) + " abs";
   return "visible-normal space (Heitz 2018): fixed Gauss-Legendre rule, panels placed at the "
          "integrand's analytic scales and at the Fresnel layer (o.h ~ sqrt(eta^2 - 1)), exact "
          "horizon cut; declared error " +

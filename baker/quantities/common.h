@@ -63,6 +63,16 @@ std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats);
 /// The method text of the GGX fixed rule.
 std::string GgxFixedRuleMethod(const TableSpec& spec);
 
+/// (A, B) of ggx-separable at x = (mu, roughness) by the GGX kernel's separable variant
+/// (FixedRuleGGXSeparableDFG); errorEstimate kFixedRuleBound.
+std::array<double, 2> GgxSeparableFixedRuleAt(const double* x, IntegrationStats& stats);
+
+/// The fixed-rule version of a microfacet spec of the dfg, albedo and albedo-avg kinds
+/// (QuantityInfo::fixedRuleVersionOf): "3" for ggx-separable (the GGX kernel's separable
+/// variant) and beckmann, beckmann-separable, blinn-phong (fewer nodes), "2" for every other
+/// model.
+const char* MicrofacetFixedRuleVersion(const TableSpec& spec);
+
 /// True when a microfacet fixed rule applies: axes (mu, roughness) and a model with one (ggx: the
 /// GGX rule, fixed_rule_dfg.h; ggx-separable, beckmann, beckmann-separable, blinn-phong:
 /// fixed_rule_microfacet.h).

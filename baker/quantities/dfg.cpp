@@ -99,6 +99,7 @@ const QuantityInfo& DfgQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = MicrofacetFixedRuleMethod;
+    q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

@@ -115,6 +115,7 @@ const QuantityInfo& FresnelAlbedoQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FresnelAlbedoFixedRuleMethod;
+    q.fixedRuleVersion = "3";  // the GGX kernel from eta = 1.3
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

@@ -102,6 +102,7 @@ const QuantityInfo& FresnelAlbedoAvgQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.fixedRuleVersion = "3";  // the GGX kernel from eta = 1.3
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

@@ -149,6 +149,10 @@ struct QuantityInfo {
   /// An extra check `kiln verify` runs on a table of this kind (null: none): "" when it passes,
   /// else one line naming the problem; `summary` gets one line of what it measured.
   std::string (*verifyTable)(const Table& table, int threads, std::string& summary) = nullptr;
+  /// The fixed-rule version of one spec of this kind, when its rule changes for some models only
+  /// (null: fixedRuleVersion for every spec): those models' tables re-bake, the others keep their
+  /// hashes.
+  const char* (*fixedRuleVersionOf)(const TableSpec& spec) = nullptr;
 };
 
 /// The descriptor of `q`.

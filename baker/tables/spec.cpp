@@ -47,7 +47,9 @@ std::string TableSpec::HashText() const {
                      ParamsText();
   // The kind's fixed-rule version (its tuned node counts, QuantityInfo::fixedRuleVersion): its
   // tables, and only its, re-bake when it changes ("2" everywhere: the hashes of before).
-  if (UsesFixedRule(*this)) text += std::string("|fixed-rule:") + q.fixedRuleVersion;
+  if (UsesFixedRule(*this))
+    text += std::string("|fixed-rule:") +
+            (q.fixedRuleVersionOf ? q.fixedRuleVersionOf(*this) : q.fixedRuleVersion);
   // Roughness 0 as the smooth limit (QuantityInfo::smoothLimit) changed the texels of the tables
   // it applies to, and only theirs: they re-bake, the rest of the catalogue keeps its hash.
   if (SmoothLimitApplies(*this)) text += "|smooth-limit:1";
