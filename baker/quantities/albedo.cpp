@@ -2,6 +2,7 @@
 // E_rho, E_rho2 for a model with a rho^2 term (E = rho E_rho + rho^2 E_rho2).
 #include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
+#include "baker/quantities/unity_tables.h"
 
 namespace kiln {
 namespace {
@@ -96,6 +97,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
+    q.onRequest = OnRequestAlbedoTables;
     q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
