@@ -10,6 +10,7 @@
 
 namespace kiln {
 struct CatalogueOptions;
+struct IntegrationStats;
 
 /// The models whose albedo tables are baked on request.
 const std::vector<std::string>& OnRequestAlbedoModels();
@@ -19,5 +20,17 @@ std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions& opt);
 
 /// The albedo-avg kind's on-request entries: `M-albedo-avg`, 64 roughness nodes.
 std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions& opt);
+
+/// True when the mirror-lobe rule (integrate/fixed_rule_lobe.h) bakes `spec`: model lafortune,
+/// axes (mu, roughness).
+bool MirrorLobeRuleApplies(const TableSpec& spec);
+
+/// E at x = (mu, roughness) by the mirror-lobe rule (n = LafortuneBRDF::ExponentFromPerceptual;
+/// at r = 1, n = 0, the limit n -> 0+, docs/models.md); sets stats.errorEstimate to its bound.
+std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
+                                     IntegrationStats& stats);
+
+/// The method text of the mirror-lobe rule.
+std::string MirrorLobeRuleMethod(const TableSpec& spec);
 
 }  // namespace kiln
