@@ -56,6 +56,14 @@ void RegisterSample(CLI::App& app) {
           throw std::invalid_argument("sample: " + t.axes[d].name + " " + Short(args->x[d]) +
                                       " is outside the domain of '" + args->file + "': " + domain);
     }
+    // unity-nhxroughness on its lobe-exponent axes is looked up at (x, r) = ((R.L)^4, perceptual
+    // roughness), each in [0, 1]: refuse, do not clamp.
+    if (storedForm(t) == StoredForm::UnityLobe)
+      for (std::size_t d = 0; d < 2; ++d)
+        if (args->x[d] < 0 || args->x[d] > 1)
+          throw std::invalid_argument("sample: " + std::string(d ? "r " : "x ") +
+                                      Short(args->x[d]) + " is outside the domain of '" +
+                                      args->file + "': x = (R.L)^4 in [0, 1], r in [0, 1]");
     std::vector<double> out(t.channels.size());
     sampleQuantity(t, args->x.data(), out.data(), args->cubic ? Filter::Cubic : Filter::Linear);
     std::string line;

@@ -74,6 +74,8 @@ constexpr double kOuterBase = 0.3;
 constexpr double kTailPanel = 0.25;
 /// A structure is graded for when its scale is below this fraction of the graded panel.
 constexpr double kGradeBelow = 0.25;
+/// unity-brdf1: Unity_SafeNormalize clamps |l + o|^2 = 4 (o.h)^2 at 0.001, below this o.h.
+constexpr double kUnitySafeOh = 0.015811388300841896;
 /// Bound of r g over GGX's (r <= 4/e, g <= sqrt(pi)): scales the weights that pick light azimuths.
 constexpr double kWeightBound = 3;
 
@@ -99,14 +101,42 @@ inline double MuLambdaBeckmann(double mu, double sin, double a) {
 struct Context {
   FixedRuleModel model;
   double mu, st, a, oxs, ozs;
-  double gNum;     ///< mu + mu Lambda_ggx(o)
-  double gDenO;    ///< mu + mu Lambda(o) (the model's)
-  double blinnK;   ///< 1 / alpha^2 - 1 (Blinn-Phong)
-  double tCap;     ///< t beyond which r < 1e-16 (1: none)
-  double eta = 0;  ///< > 0: the albedo with FrDielectric(o.h, eta)
+  double gNum;        ///< mu + mu Lambda_ggx(o)
+  double gDenO;       ///< mu + mu Lambda(o) (the model's)
+  double blinnK;      ///< 1 / alpha^2 - 1 (Blinn-Phong)
+  double tCap;        ///< t beyond which r < 1e-16 (1: none)
+  double eta = 0;     ///< > 0: the albedo with FrDielectric(o.h, eta)
+  double unityA = 0;  ///< UnityBRDF1: Unity's a = max(r^2, 0.002) (a is alpha_q)
   double sumV = 0, sumB = 0;
   long long count = 0;
 };
+
+/// unity-brdf1 at an inner node (see Add): r = D_unity / D_ggx(alpha_q) and
+/// g = G2_unity / G1_ggx(o; alpha_q) with G2_unity = 4 mu_o mu_l V_unity, so
+///     r = a^2 aq^2 q^4 / ((C^2 a^2 + aq^2 S^2)^2 + 1e-7 M2^2)   (cos^2 theta_h = C^2 / M2),
+///     g = 2 mu_l (mu_o + mu_o Lambda_ggx(o)) / (2 mu_l mu_o (1 - a) + a (mu_l + mu_o) + 1e-5),
+/// both bounded and smooth; where |l + o|^2 = 4 (o.h)^2 < 0.001, Unity_SafeNormalize scales
+/// n.h by 2 (o.h) / sqrt(0.001) (D then uses that n.h; l.h only enters F, here 1).
+void AddUnity(Context& k, double t, double C, double S, double q, double M2, double muL,
+              double weight, double c) {
+  const double a = k.unityA, aq = k.a, mu = k.mu;
+  const double oh = (k.st * aq * S * c + mu * C) / std::sqrt(M2);
+  double r;
+  if (4 * oh * oh < 0.001) {
+    // D at the scaled n.h: cos^2 theta_h' = (4 oh^2 / 0.001) C^2 / M2.
+    const double cos2 = 4 * oh * oh / 0.001 * C * C / M2, d = cos2 * (a * a - 1) + 1;
+    const double dggx = M2 * M2 / (kPi * aq * aq * q * q * q * q);
+    r = a * a / (kPi * (d * d + 1e-7)) / dggx;
+  } else {
+    const double x = C * C * a * a + aq * aq * S * S;
+    r = a * a * aq * aq * q * q * q * q / (x * x + 1e-7 * M2 * M2);
+  }
+  const double g = 2 * muL * k.gNum / (2 * muL * mu * (1 - a) + a * (muL + mu) + 1e-5);
+  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * r * g;
+  const double w = 1 - oh, w2 = w * w;
+  k.sumV += val;
+  k.sumB += val * (w2 * w2 * w);
+}
 
 /// Adds weight times the integrand at inner node t of the azimuth with cos p = c.
 inline void Add(Context& k, double c, double t, double weight) {
@@ -127,6 +157,10 @@ inline void Add(Context& k, double c, double t, double weight) {
       r = qm * qm;
     else
       r = C2 > 0 ? qm * qm * std::exp(-k.blinnK * std::log1p(aS * aS / C2)) : 0;
+  }
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF1) {
+    AddUnity(k, t, C, S, q, M2, muL, weight, c);
+    return;
   }
   if (r == 0) return;
   const double muLambdaL =
@@ -169,7 +203,10 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
   const double pref = 16 / (kPi * (1 + k.ozs));
   // Masking pole of g at mu_l = -sMask: ~ min(alpha, mu) height-correlated, ~ alpha separable.
   const double muLo = k.gDenO - mu;
-  const double sMask = k.model.separable ? a / 2 : (mu > 0 ? mu * a / (mu + 2 * muLo) : 0);
+  double sMask = k.model.separable ? a / 2 : (mu > 0 ? mu * a / (mu + 2 * muLo) : 0);
+  // unity-brdf1: V's pole in mu_l at -(a mu + 1e-5) / (2 mu (1 - a) + a).
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF1)
+    sMask = (k.unityA * mu + 1e-5) / (2 * mu * (1 - k.unityA) + k.unityA);
   double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
   double eps = 0;
   if (k.eta > 0) {
@@ -240,6 +277,62 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
         const double eF = (mu + eps) / (2 * a * st * cx);
         if (eF < t1 / 8) eStart = std::min(eStart, eF);
       }
+      // unity-brdf1: Unity_SafeNormalize's kink where o.h = sqrt(0.001) / 2 (o.h runs
+      // monotonically from mu at t = 0 to the cut): a panel boundary there, each side graded
+      // towards its own structure.
+      if (k.model.ndf == FixedRuleNdf::UnityBRDF1 && mu < 2 * kUnitySafeOh) {
+        auto ohAt = [&](double t) {
+          const double C = 1 - t * t, aS = a * 2 * t;
+          return (st * aS * c + mu * C) / std::sqrt(aS * aS + C * C);
+        };
+        const double f0 = ohAt(0) - kUnitySafeOh, f1 = ohAt(t1) - kUnitySafeOh;
+        if ((f0 < 0) != (f1 < 0) && f0 != 0 && f1 != 0) {
+          double lo = 0, hi = t1;
+          for (int i = 0; i < 60; ++i) {
+            const double m = (lo + hi) / 2;
+            ((ohAt(m) - kUnitySafeOh < 0) == (f0 < 0) ? lo : hi) = m;
+          }
+          const double tk = (lo + hi) / 2;
+          const int n = opt.bulkNodes + opt.gradedNodes;
+          // Inside (o.h < sqrt(0.001) / 2) D reads n.h scaled by o.h / (sqrt(0.001) / 2): its
+          // peak sits on the kink and falls off within w = max(a^2, sqrt(1e-7)) in n.h^2, a
+          // layer of width w h0 / (2 |d(o.h)/dt|) in t on the inside of tk.
+          const double dt = 1e-7 * t1, slope = std::abs(ohAt(tk + dt) - ohAt(tk - dt)) / (2 * dt);
+          const double ua = k.unityA * k.unityA;
+          const double eK = std::max(
+              std::max(ua, 3.1622776601683794e-4) * kUnitySafeOh / (2 * std::max(slope, 1e-300)),
+              1e-12);
+          const bool insideLow = f0 < 0;  // [0, tk] is inside
+          // [0, tk]
+          if (insideLow) {
+            const double half = tk / 2;
+            if (eStart < half / 8)
+              GradedPanel(k, c, pw, 0, 1, half, eStart, opt.deficitNodes, opt.nodesPerEFold);
+            else
+              PlainPanel(k, c, pw, 0, half, n);
+            GradedPanel(k, c, pw, tk, -1, tk - half, eK, opt.gradedNodes, opt.nodesPerEFold);
+          } else if (eStart < tk / 8) {
+            GradedPanel(k, c, pw, 0, 1, tk, eStart, opt.deficitNodes, opt.nodesPerEFold);
+          } else {
+            PlainPanel(k, c, pw, 0, tk, n);
+          }
+          // [tk, t1]
+          const double rest = t1 - tk;
+          if (!insideLow) {
+            const double half = rest / 2;
+            GradedPanel(k, c, pw, tk, 1, half, eK, opt.gradedNodes, opt.nodesPerEFold);
+            if (eEnd < kGradeBelow * half)
+              GradedPanel(k, c, pw, t1, -1, rest - half, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+            else
+              PlainPanel(k, c, pw, tk + half, rest - half, n);
+          } else if (eEnd < kGradeBelow * rest) {
+            GradedPanel(k, c, pw, t1, -1, rest, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+          } else {
+            PlainPanel(k, c, pw, tk, rest, n);
+          }
+          continue;
+        }
+      }
       double split = 0;
       if (eStart < INFINITY) {
         split = t1 / 2;
@@ -265,6 +358,10 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   k.model = model;
   k.mu = std::min(1.0, std::max(0.0, mu));
   k.a = std::max(alpha, MinAlpha);
+  if (model.ndf == FixedRuleNdf::UnityBRDF1) {
+    k.unityA = std::max(alpha, 0.002);
+    k.a = std::max(k.unityA, 0.01778279410038923);  // alpha_q: UnityBRDF1::Sampler
+  }
   k.st = std::sqrt(std::max(0.0, 1 - k.mu * k.mu));
   const double L = std::sqrt(k.a * k.a * k.st * k.st + k.mu * k.mu);
   k.ozs = k.mu / L;
@@ -314,6 +411,7 @@ const Tuned kTuned[] = {
     {FixedRuleNdf::Beckmann, true, {24, 14, 7, 3, 9, 8}},
     {FixedRuleNdf::BlinnPhong, false, {22, 14, 8, 3, 10, 8}},
     {FixedRuleNdf::GGX, false, {24, 12, 6, 2, 8, 8}},
+    {FixedRuleNdf::UnityBRDF1, false, {32, 16, 8, 2, 8, 8}},
 };
 const MicrofacetRuleOptions kTunedFresnel = {24, 16, 8, 2, 8, 8};
 // The search's verification-grade counts: fewer outer nodes (16) and, for the Beckmann Lambda's
@@ -337,7 +435,8 @@ bool FixedRuleModelFor(const char* model, FixedRuleModel* out) {
                  {"ggx-separable", {FixedRuleNdf::GGX, true}},
                  {"beckmann", {FixedRuleNdf::Beckmann, false}},
                  {"beckmann-separable", {FixedRuleNdf::Beckmann, true}},
-                 {"blinn-phong", {FixedRuleNdf::BlinnPhong, false}}};
+                 {"blinn-phong", {FixedRuleNdf::BlinnPhong, false}},
+                 {"unity-brdf1", {FixedRuleNdf::UnityBRDF1, false}}};
   for (const auto& e : kModels)
     if (std::strcmp(e.name, model) == 0) {
       if (out) *out = e.m;

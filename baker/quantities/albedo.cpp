@@ -2,6 +2,7 @@
 // E_rho, E_rho2 for a model with a rho^2 term (E = rho E_rho + rho^2 E_rho2).
 #include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
+#include "baker/quantities/unity_tables.h"
 
 namespace kiln {
 namespace {
@@ -36,12 +37,14 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
 /// model (light space). The sheen lobes have none
 /// yet: adaptive quadrature bakes them.
 bool AlbedoUsesFixedRule(const TableSpec& spec) {
-  return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec);
+  return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec) ||
+         MirrorLobeRuleApplies(spec);
 }
 
 /// Microfacet at F = 1: A + B of the microfacet fixed rule is the albedo. Diffuse: the diffuse
 /// fixed rule.
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
@@ -49,12 +52,18 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
 
 /// The lookup-error search's form of FixedRule (DiffuseSearchRuleAt, MicrofacetSearchRuleAt).
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (MirrorLobeRuleApplies(spec)) {
+    std::vector<double> v = MirrorLobeRuleAt(spec, x, stats);
+    stats.errorEstimate = 0;  // the bake's own rule
+    return v;
+  }
   if (DiffuseFixedRuleApplies(spec)) return DiffuseSearchRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
+  if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleMethod(spec);
   return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
                                        : MicrofacetFixedRuleMethod(spec);
 }
@@ -110,6 +119,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
+    q.onRequest = OnRequestAlbedoTables;
     q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;

@@ -1,6 +1,7 @@
 // albedo-avg: the average albedo E_avg = 2 int E(mu) mu dmu of any model, over roughness;
 // E_avg_rho, E_avg_rho2 for a model with a rho^2 term.
 #include "baker/quantities/common.h"
+#include "baker/quantities/unity_tables.h"
 
 namespace kiln {
 namespace {
@@ -99,6 +100,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
+    q.onRequest = OnRequestAlbedoAvgTables;
     q.usesFixedRule = OverRoughness;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;

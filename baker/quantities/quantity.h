@@ -57,6 +57,10 @@ struct QuantityInfo {
   /// scene that needs them), not by a plain `kiln bake` nor kept in `luts/`: kinds whose bake
   /// is still slow or whose declared lookup error is still above the catalogue's 1e-3.
   bool inDefaultCatalogue = true;
+  /// Entries of this kind baked only on request even though the kind is in the default
+  /// catalogue (null: none): e.g. the albedo tables of the Unity models (issue #16), whose
+  /// `kiln bake --only NAME` works while a plain `kiln bake` leaves them out.
+  std::vector<TableSpec> (*onRequest)(const CatalogueOptions& opt) = nullptr;
 
   // --- One texel ---------------------------------------------------------------------------
   /// True when the bake takes `spec`'s texels with a fixed rule (null: never).

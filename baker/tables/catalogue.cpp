@@ -119,6 +119,10 @@ std::vector<TableSpec> CatalogueEntries(const CatalogueOptions& opt, bool onRequ
   for (const QuantityInfo* q : AllQuantities())
     if (q->catalogue && (q->inDefaultCatalogue || onRequestToo))
       for (TableSpec& s : q->catalogue(opt)) out.push_back(std::move(s));
+  if (onRequestToo)
+    for (const QuantityInfo* q : AllQuantities())
+      if (q->onRequest)
+        for (TableSpec& s : q->onRequest(opt)) out.push_back(std::move(s));
   for (TableSpec& s : out) Resize(s, opt.size);
   return out;
 }
@@ -133,6 +137,12 @@ std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt) {
   std::vector<TableSpec> out;
   for (TableSpec& s : CatalogueEntries(opt, true))
     if (!Describe(s.quantity).inDefaultCatalogue) out.push_back(std::move(s));
+  for (const QuantityInfo* q : AllQuantities())
+    if (q->onRequest)
+      for (TableSpec& s : q->onRequest(opt)) {
+        Resize(s, opt.size);
+        out.push_back(std::move(s));
+      }
   return out;
 }
 

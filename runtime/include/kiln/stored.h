@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,35 @@ enum class StoredForm {
   /// dielectric Fresnel E minus fresnelAlbedoClosedForm(mu, roughness, eta), the closed form
   /// that carries the Fresnel layer at grazing; the quantity is the sample plus that form.
   FresnelAlbedoResidual,
+  /// kiln.quantity "unity-nhxroughness" with axes (s, n) (issue #16): Unity's unity_NHxRoughness
+  /// texel T(x, r) = min(1, P) looked up at the physical point (x, r), x = (R.L)^4 in [0, 1],
+  /// r perceptual roughness in [0, 1], on the lobe-exponent coordinates
+  ///     n = unitySpecPower(r) / 4 (the Phong exponent),  s = ln(n / 4) + ln(-ln x),
+  /// where the lobe x^(n/4) = exp(-e^s) is one curve for every roughness; the channel is
+  /// P = (n + 2) / (2 pi^2) x^(n/4) / 16, the texel before Unity's clamp at 1 (P is linear in n
+  /// at fixed s), and the quantity is min(1, P) (unityNHxRoughnessCoordinates).
+  UnityLobe,
 };
+
+/// Unity's PerceptualRoughnessToSpecPower at perceptual roughness r: m = r^2,
+/// max(2 / max(1e-4, m^2) - 2, 1e-4), the Blinn-Phong exponent (at most 19998, at r <= 0.1).
+inline double unitySpecPower(double r) {
+  const double m = r * r;
+  return std::max(2.0 / std::max(1e-4, m * m) - 2.0, 1e-4);
+}
+
+/// The lookup coordinates (s, n) of a unity-nhxroughness table in the UnityLobe form at
+/// x = (R.L)^4 and perceptual roughness r (both clamped to [0, 1]; NaN reads 0):
+/// n = unitySpecPower(r) / 4 and s = ln(n / 4) + ln(-ln x), s = -infinity at x = 1 and
+/// +infinity at x = 0 (the lookup clamps them to the s axis's ends, whose values are within
+/// the table's declared bound of the limits P = (n + 2) / (32 pi^2) and 0).
+inline void unityNHxRoughnessCoordinates(double x, double r, double& s, double& n) {
+  const double xc = x > 0.0 ? std::min(x, 1.0) : 0.0;
+  const double rc = r > 0.0 ? std::min(r, 1.0) : 0.0;
+  n = unitySpecPower(rc) / 4.0;
+  const double u = xc > 0.0 ? -std::log(xc) : std::numeric_limits<double>::infinity();
+  s = u > 0.0 ? std::log(n / 4.0) + std::log(u) : -std::numeric_limits<double>::infinity();
+}
 
 /// The exact dielectric Fresnel reflectance (unpolarized) at cos(theta_i) = mu in [0, 1] (clamped)
 /// and relative index eta >= 1, in the cancellation-free form: with e = eta^2 - 1 and
@@ -122,6 +151,7 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
     return StoredForm::ConductorResidual;
   if (quantity == "fresnel-albedo" && channel0 == "E_residual")
     return StoredForm::FresnelAlbedoResidual;
+  if (quantity == "unity-nhxroughness" && axis0 == "s") return StoredForm::UnityLobe;
   return StoredForm::Plain;
 }
 
@@ -135,7 +165,8 @@ inline StoredForm storedForm(const Table& table) {
 }
 
 /// The table coordinates (axis order) of the physical point p. For a brdf table p is
-/// (mu_l, mu_o, phi), phi the azimuth difference in radians; otherwise the axes' own parameters.
+/// (mu_l, mu_o, phi), phi the azimuth difference in radians; for UnityLobe (x, r)
+/// (unityNHxRoughnessCoordinates); otherwise the axes' own parameters.
 /// `dims` values are read and written.
 inline void storedCoordinates(StoredForm form, const double* p, double* x, int dims) {
   for (int d = 0; d < dims; ++d) x[d] = p[d];
@@ -145,6 +176,8 @@ inline void storedCoordinates(StoredForm form, const double* p, double* x, int d
     x[0] = hi;
     x[1] = hi > 0.0 ? lo / hi : 0.0;
   }
+  if (form == StoredForm::UnityLobe && dims == 2)
+    unityNHxRoughnessCoordinates(p[0], p[1], x[0], x[1]);
 }
 
 /// Turns the `channels` values sampled at table coordinates x (storedCoordinates of p) into the
@@ -201,6 +234,11 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
       if (ta.name == "eta") eta = v;
     }
     out[0] += fresnelAlbedoClosedForm(mu, r, eta);
+    return;
+  }
+  if (form == StoredForm::UnityLobe) {
+    // Unity's clamp of the texel at 1 (min is 1-Lipschitz: the table's bound holds for it).
+    out[0] = std::min(1.0, out[0]);
     return;
   }
   if (dims >= 1) {

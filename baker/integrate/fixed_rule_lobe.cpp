@@ -1,0 +1,101 @@
+// The albedo of a cosine lobe about the mirror direction as one integral over the lobe's angle.
+//
+// Derivation. Put l in polar coordinates about the mirror direction m = (-o_x, -o_y, mu):
+// v = m.l, phi the azimuth about m. With s = sqrt(1 - mu^2), mu_l = mu v + s sqrt(1 - v^2) cos phi
+// and, for a lobe that depends on v alone,
+//     E = (n + 2) / (2 pi) int_0^1 v^n Phi(v) dv,  Phi(v) = int_0^2pi max(0, a + b cos phi) dphi,
+// a = mu v >= 0, b = s sqrt(1 - v^2). Phi = 2 pi a where a >= b (v >= s: the whole circle is
+// above the horizon) and 2 (a acos(-a / b) + sqrt(b^2 - a^2)) below. So
+//     E = mu (1 - s^(n+2)) + (n + 2) / (2 pi) int_0^s v^n Phi(v) dv.
+// On [0, s] put v = s sin(psi): b^2 - a^2 = s^2 cos^2(psi), acos(-a / b) = pi - atan2(cos psi,
+// mu sin psi), and the integrand (s sin psi)^n 2 s (mu sin psi (pi - atan2(cos psi, mu sin psi))
+// + cos psi) s cos psi is analytic in psi on [0, pi/2] but for psi^n at 0 (n not an integer)
+// and the lobe's peak at psi = pi/2, of width 1 / sqrt(n + 1). Quadrature: for large n
+// (12 widths < pi/4) only the last 12 widths, 4 Gauss panels of 12 nodes; otherwise [0, pi/4]
+// by one panel graded towards 0 (psi = L expm1(h u) / expm1(h), h = log(1 + L / 1e-10), in which
+// psi^n is smooth for every n > 0) and [pi/4, pi/2] by 4 Gauss panels of 12 nodes. The last
+// panel of either is graded towards pi/2 at scale mu: atan2(cos psi, mu sin psi) turns from
+// pi/2 to 0 within cos psi ~ mu there (the azimuths that reach below the horizon).
+#include "baker/integrate/fixed_rule_lobe.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/math/quadrature.h"
+
+namespace kiln {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Lobe {
+  double mu, s, n;
+  long long count = 0;
+  /// The integrand at psi (without the (n + 2) / (2 pi)).
+  double At(double psi) {
+    ++count;
+    const double sp = std::sin(psi), cp = std::cos(psi), v = s * sp;
+    if (!(v > 0)) return 0;
+    const double phi = 2 * s * (mu * sp * (kPi - std::atan2(cp, mu * sp)) + cp);
+    return std::exp(n * std::log(v)) * phi * s * cp;
+  }
+};
+
+double Plain(Lobe& k, double a, double b, int nodes) {
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  double sum = 0;
+  for (size_t i = 0; i < g.x.size(); ++i) sum += g.w[i] * k.At(a + (b - a) * g.x[i]);
+  return sum * (b - a);
+}
+
+/// [0, L] graded towards 0 at scale e.
+double GradedToZero(Lobe& k, double L, double e, int nodes) {
+  const double h = std::log1p(L / e), em = std::expm1(h);
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  double sum = 0;
+  for (size_t i = 0; i < g.x.size(); ++i) {
+    const double psi = L * std::expm1(h * g.x[i]) / em;
+    sum += g.w[i] * k.At(psi) * L * h * std::exp(h * g.x[i]) / em;
+  }
+  return sum;
+}
+
+/// [end - L, end] graded towards end at scale e (or plain when e is not below L / 4).
+double GradedToEnd(Lobe& k, double end, double L, double e, int nodes) {
+  if (!(e > 0 && e < L / 4)) return Plain(k, end - L, end, nodes);
+  const double h = std::log1p(L / e), em = std::expm1(h);
+  const GaussRule01& g = CachedGaussLegendre01(nodes + static_cast<int>(std::ceil(2 * h)));
+  double sum = 0;
+  for (size_t i = 0; i < g.x.size(); ++i) {
+    const double x = L * std::expm1(h * g.x[i]) / em;
+    sum += g.w[i] * k.At(end - x) * L * h * std::exp(h * g.x[i]) / em;
+  }
+  return sum;
+}
+
+}  // namespace
+
+double FixedRuleMirrorLobeAlbedo(double mu, double n, long long* evals) {
+  Lobe k;
+  k.mu = std::min(1.0, std::max(0.0, mu));
+  k.s = std::sqrt((1 - k.mu) * (1 + k.mu));
+  k.n = std::max(n, 0.0);
+  const double closed = k.mu * (1 - std::exp((k.n + 2) * std::log(std::max(k.s, 1e-300))));
+  double integral = 0;
+  if (k.s > 0) {
+    const double w = 1 / std::sqrt(k.n + 1), half = kPi / 2;
+    if (12 * w < kPi / 4) {
+      const double lo = half - 12 * w;
+      for (int p = 0; p < 4; ++p) integral += Plain(k, lo + 3 * w * p, lo + 3 * w * (p + 1), 12);
+    } else {
+      integral += GradedToZero(k, kPi / 4, 1e-10, 48);
+      for (int p = 0; p < 3; ++p)
+        integral += Plain(k, kPi / 4 + kPi / 16 * p, kPi / 4 + kPi / 16 * (p + 1), 12);
+      integral += GradedToEnd(k, half, kPi / 16, k.mu, 12);
+    }
+  }
+  if (evals) *evals += k.count;
+  return closed + (k.n + 2) / (2 * kPi) * integral;
+}
+
+}  // namespace kiln

@@ -1,0 +1,68 @@
+// On-request albedo tables of the Unity / Ward / Lafortune models (unity_tables.h).
+#include "baker/quantities/unity_tables.h"
+
+#include <algorithm>
+
+#include "baker/integrate/fixed_rule_lobe.h"
+#include "baker/integrate/quantities.h"
+#include "baker/models/lafortune.h"
+#include "baker/quantities/quantity.h"
+#include "baker/tables/catalogue.h"
+
+namespace kiln {
+
+const std::vector<std::string>& OnRequestAlbedoModels() {
+  static const std::vector<std::string> models = {"unity-brdf1", "lafortune"};
+  return models;
+}
+
+namespace {
+
+/// unity-brdf1's roughness axis: from r = sqrt(0.002), below which Unity's a = max(r^2, 0.002)
+/// is constant (the same model: a lookup there clamps to this edge, exactly), over 256 sqrt
+/// nodes: E climbs from 0.40 to 0.91 (E_avg) between r = 0.1 and 0.16 where GGXTerm's 1e-7
+/// stops capping D (a^4 = 1e-7 at r = 0.133). Measured with 128 sqrt nodes from r = 0: 3.0e-3
+/// of declared lookup error (the kink at r = sqrt(0.002)); 64 nodes for E_avg: 5.9e-3.
+AxisSpec RoughnessAxis(const std::string& model, int size) {
+  if (model == "unity-brdf1") return {"roughness", 0.044721359549995794, 1, size, Warp::Sqrt};
+  // lafortune: alpha = max(r^2, 0.01), constant below r = 0.1 (the same clamp-exact start).
+  if (model == "lafortune") return {"roughness", 0.1, 1, size, Warp::Sqrt};
+  return {"roughness", 0, 1, size, Warp::Sqrt};
+}
+
+}  // namespace
+
+std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions&) {
+  const QuantityInfo& q = Describe(Quantity::Albedo);
+  std::vector<TableSpec> out;
+  for (const std::string& m : OnRequestAlbedoModels())
+    out.push_back(q.makeSpec(m, {{"mu", 0, 1, 128, Warp::Root4Layer}, RoughnessAxis(m, 256)}));
+  return out;
+}
+
+std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions&) {
+  const QuantityInfo& q = Describe(Quantity::AlbedoAvg);
+  std::vector<TableSpec> out;
+  for (const std::string& m : OnRequestAlbedoModels()) {
+    out.push_back(q.makeSpec(m, {RoughnessAxis(m, 256)}));
+  }
+  return out;
+}
+
+bool MirrorLobeRuleApplies(const TableSpec& spec) {
+  return spec.model == "lafortune" && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
+         spec.axes[1].name == "roughness";
+}
+
+std::vector<double> MirrorLobeRuleAt(const TableSpec&, const double* x, IntegrationStats& stats) {
+  const double r = std::min(1.0, std::max(0.0, x[1]));
+  stats.errorEstimate = kMirrorLobeRuleBound;
+  return {FixedRuleMirrorLobeAlbedo(x[0], LafortuneBRDF::ExponentFromPerceptual(r), &stats.evals)};
+}
+
+std::string MirrorLobeRuleMethod(const TableSpec&) {
+  return "fixed rule: one integral over the lobe angle about the mirror direction, the azimuth "
+         "in closed form (integrate/fixed_rule_lobe.cpp), declared to 6e-7";
+}
+
+}  // namespace kiln
