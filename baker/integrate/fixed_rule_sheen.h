@@ -35,4 +35,12 @@ double FixedRuleSheenAlbedo(const AnyModel& model, double mu_o, const SheenRuleO
 /// quadrature at 1e-10 and prints the measured worst).
 constexpr double kSheenRuleBound = 5e-7;
 
+/// The lookup-error search's node counts (a verification-grade reference, issue #13): 10 x 6 per
+/// panel (t x s), the same panels; within 6.5e-7 of the bake's rule over the three models' table
+/// domains at 1/1.6 of its evaluations (tests/lookup_search_reference.cpp).
+constexpr SheenRuleOptions kSearchSheenRuleOptions = {10, 6, 4, 4, 3};
+
+/// The bake rule's evaluations per search-rule evaluation (12 x 8 against 10 x 6 per panel).
+constexpr double kSearchSheenCharge = 1.6;
+
 }  // namespace kiln

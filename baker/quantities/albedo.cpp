@@ -29,19 +29,21 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   for (const std::string& m : CatalogueMicrofacetModels())
     out.push_back(MakeSpec(m, DefaultAxes(m)));
   for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }
 
 /// A fixed rule for every microfacet model with one (visible-normal space), for every diffuse
-/// model (light space). The sheen lobes have none
-/// yet: adaptive quadrature bakes them.
+/// model (light space) and the sheen lobes (light space, integrate/fixed_rule_sheen.h).
 bool AlbedoUsesFixedRule(const TableSpec& spec) {
-  return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec);
+  return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec) ||
+         SheenFixedRuleApplies(spec);
 }
 
 /// Microfacet at F = 1: A + B of the microfacet fixed rule is the albedo. Diffuse: the diffuse
 /// fixed rule.
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (SheenFixedRuleApplies(spec)) return SheenFixedRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
@@ -49,12 +51,14 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
 
 /// The lookup-error search's form of FixedRule (DiffuseSearchRuleAt, MicrofacetSearchRuleAt).
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (SheenFixedRuleApplies(spec)) return SheenSearchRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseSearchRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
+  if (SheenFixedRuleApplies(spec)) return SheenFixedRuleMethod(spec);
   return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
                                        : MicrofacetFixedRuleMethod(spec);
 }

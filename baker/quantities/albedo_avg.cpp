@@ -28,6 +28,7 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
     out.push_back(MakeSpec(m, {rAvg}));
   }
   for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }
 
