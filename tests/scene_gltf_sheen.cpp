@@ -1,5 +1,5 @@
-// KHR_materials_sheen: the charlie-smith albedo table (the spec's albedo scaling, and the image-
-// based light's Charlie LUT: the same integral as its dfg) over the materials' sheenRoughness
+// KHR_materials_sheen: the charlie-smith albedo table (the spec's albedo scaling; the same
+// integral as its dfg) over the materials' sheenRoughness
 // range, narrowed like the other roughness axes; a sheen roughness below the tables' domain
 // (0.045) is clamped there with a note.
 #include <catch2/catch.hpp>

@@ -260,9 +260,9 @@ void MaterialReader::Read() {
       Note(Kind::NoEffect, "KHR_materials_sheen", "sheenColorFactor 0: no sheen");
     else {
       // KHR_materials_sheen's lobe is charlie-smith (the glTF sample viewer's V_Sheen). The
-      // spec's albedo scaling dims the layers below by 1 - max(sheenColor) E(mu) with E the
-      // lobe's directional albedo: charlie-smith-albedo, which is also the image-based
-      // light's Charlie LUT (the same integral as charlie-smith-dfg, docs/models.md "Sheen").
+      // spec's albedo scaling dims the layers below by 1 - max(sheenColor) E(mu), E the lobe's
+      // directional albedo: charlie-smith-albedo (the same integral as charlie-smith-dfg, the
+      // split-sum term for image-based light; docs/models.md "Sheen tables").
       // The tables start at sheenRoughness 0.045 (Filament's clamp, models/sheen.h): a smaller
       // value is clamped there, with a note.
       std::string what;
@@ -274,7 +274,7 @@ void MaterialReader::Read() {
         sr = ValueRange::Between(kSheenTableMinRoughness, std::max(sr.hi, kSheenTableMinRoughness));
       }
       NeedModel(Quantity::Albedo, "charlie-smith", {{"roughness", sr}},
-                "sheen albedo scaling and IBL (charlie-smith E), " + what);
+                "sheen albedo scaling (charlie-smith E; its dfg is the same integral), " + what);
     }
   }
   if (const Json* ir = Ext("KHR_materials_iridescence")) {
