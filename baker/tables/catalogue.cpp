@@ -86,7 +86,7 @@ AxisSpec DiffuseMuAxis(const std::string& model) {
   // 48 (7.7e-4 with 48 x 48). charlie-smith starts at mu = 1e-4, Filament's MIN_N_DOT_V: below
   // it the fitted Lambda's clamp V <= 1 makes E jump (1.63 at mu = 1e-8, 0.82 at 1e-6, 0.59 at
   // 1e-4 for r = 0.386: `kiln integrate albedo --model charlie-smith --mu M --roughness 0.386`),
-  // a layer of the fit no renderer looks up; lookups below 1e-4 are rejected.
+  // a layer of the fit no renderer looks up; a lookup below reads the edge.
   if (IsCatalogueSheen(model)) {
     if (model == "ashikhmin-velvet") return {"mu", 0, 1, 48, Warp::Root4};
     return {"mu", model == "charlie-smith" ? kCharlieSmithMinMu : 0, 1, 192, Warp::Root4};
