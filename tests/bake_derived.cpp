@@ -30,9 +30,11 @@ bool SameTexels(const Table& a, const Table& b) {
 
 }  // namespace
 
-TEST_CASE("A microfacet albedo derived from its dfg's node values has the texels of its own rule",
+TEST_CASE("A microfacet or sheen albedo derived from its dfg's node values has its own rule's texels",
           "[bake][derived]") {
-  for (const std::string& model : CatalogueMicrofacetModels()) {
+  std::vector<std::string> models = CatalogueMicrofacetModels();
+  for (const std::string& m : CatalogueSheenModels()) models.push_back(m);  // a copy of DFV
+  for (const std::string& model : models) {
     INFO(model);
     const TableSpec dfg = Small(Quantity::Dfg, model), albedo = Small(Quantity::Albedo, model);
     NodeValueCache cache({dfg, albedo});

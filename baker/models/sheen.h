@@ -22,6 +22,16 @@ namespace kiln {
 /// smaller values (MakeModel, the tables' roughness axis).
 constexpr double kCharlieMinRoughness = 0.045;
 
+/// The smallest roughness of every sheen table (the velvet's too, although the model takes 0):
+/// below r ~ 0.03 the adaptive reference misses the velvet's spike of width alpha = r^2 at the
+/// horizon (integrate/fixed_rule_sheen.cpp), and Filament clamps its cloth roughness to 0.045.
+constexpr double kSheenTableMinRoughness = kCharlieMinRoughness;
+
+/// The smallest view cosine of the charlie-smith tables: Filament's MIN_N_DOT_V. Below it the
+/// fitted Lambda (finite but ~1e8 at mu = 0) and the clamp V <= 1 make E(mu) jump within
+/// mu ~ 1e-8..1e-5 (docs/models.md "Sheen"), a layer of the fit no renderer looks up.
+constexpr double kCharlieSmithMinMu = 1e-4;
+
 /// Neubelt & Pettineo 2013 visibility V = 1 / (4 (mu_l + mu_o - mu_l mu_o)), as Filament's
 /// V_Neubelt (no clamp). mu_o, mu_l in [0, 1], not both 0.
 inline double NeubeltVisibility(double mu_o, double mu_l) {

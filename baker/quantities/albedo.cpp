@@ -33,18 +33,27 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables, too slow for the
+/// default catalogue's budget today (README "Sheen tables"), and the Unity / Lafortune ones
+/// (unity_tables.h).
+std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
+  std::vector<TableSpec> out = OnRequestAlbedoTables(opt);
+  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
 /// A fixed rule for every microfacet model with one (visible-normal space), for every diffuse
-/// model (light space). The sheen lobes have none
-/// yet: adaptive quadrature bakes them.
+/// model (light space) and the sheen lobes (light space, integrate/fixed_rule_sheen.h).
 bool AlbedoUsesFixedRule(const TableSpec& spec) {
   return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec) ||
-         MirrorLobeRuleApplies(spec);
+         MirrorLobeRuleApplies(spec) || SheenFixedRuleApplies(spec);
 }
 
 /// Microfacet at F = 1: A + B of the microfacet fixed rule is the albedo. Diffuse: the diffuse
 /// fixed rule.
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleAt(spec, x, stats);
+  if (SheenFixedRuleApplies(spec)) return SheenFixedRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
@@ -57,6 +66,7 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
     stats.errorEstimate = 0;  // the bake's own rule
     return v;
   }
+  if (SheenFixedRuleApplies(spec)) return SheenSearchRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseSearchRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
   return {ab[0] + ab[1]};
@@ -64,23 +74,29 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 
 std::string FixedRuleMethod(const TableSpec& spec) {
   if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleMethod(spec);
+  if (SheenFixedRuleApplies(spec)) return SheenFixedRuleMethod(spec);
   return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
                                        : MicrofacetFixedRuleMethod(spec);
 }
 
 /// A microfacet albedo at F = 1 is A + B of the model's dfg table at the same nodes: the bits
 /// FixedRule computes (it sums the same rule's A and B) and, at roughness 0, 1 - w^5 + w^5
-/// within an ulp of SmoothLimit's 1, the same float32 texel.
+/// within an ulp of SmoothLimit's 1, the same float32 texel. A sheen lobe's dfg is its albedo
+/// (one channel, the same SheenFixedRuleAt): the texels are copied.
 bool DerivedFrom(const TableSpec& spec, TableSpec& source) {
-  if (!MicrofacetFixedRuleApplies(spec) || spec.channels.size() != 1 || !spec.params.empty())
+  const bool sheen = SheenFixedRuleApplies(spec);
+  if (!(sheen || MicrofacetFixedRuleApplies(spec)) || spec.channels.size() != 1 ||
+      !spec.params.empty())
     return false;
   const QuantityInfo& dfg = Describe(Quantity::Dfg);
   source = dfg.makeSpec(spec.model, spec.axes);
   source.tol = spec.tol;
-  return source.channels.size() == 2;
+  return source.channels.size() == (sheen ? 1u : 2u);
 }
 
-void Derive(const TableSpec&, const double* ab, double* out) { out[0] = ab[0] + ab[1]; }
+void Derive(const TableSpec& spec, const double* source, double* out) {
+  out[0] = IsSheen(spec.model) ? source[0] : source[0] + source[1];
+}
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
@@ -119,7 +135,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.onRequest = OnRequestAlbedoTables;
+    q.onRequest = OnRequest;
     q.usesFixedRule = AlbedoUsesFixedRule;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;

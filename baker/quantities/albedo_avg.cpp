@@ -32,6 +32,15 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables, too slow for the
+/// default catalogue's budget today (README "Sheen tables"), and the Unity / Lafortune ones
+/// (unity_tables.h).
+std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
+  std::vector<TableSpec> out = OnRequestAlbedoAvgTables(opt);
+  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
 /// The albedo table whose E(mu) the average integrates: the albedo kind's spec of the same
 /// model, its default axes, the same tolerance.
 TableSpec AlbedoSpecFor(const TableSpec& spec) {
@@ -100,7 +109,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.onRequest = OnRequestAlbedoAvgTables;
+    q.onRequest = OnRequest;
     q.usesFixedRule = OverRoughness;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;

@@ -1,5 +1,7 @@
 #include "baker/quantities/common.h"
 
+#include "baker/integrate/fixed_rule_sheen.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -309,6 +311,38 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
          " nodes per panel), panels split at theta_o, phi = pi/2 and towards the normal" +
          (graded ? ", graded towards theta_o and phi = pi at the grazing scale" : "") +
          "; declared error " + Short(kDiffuseRuleBound) + " abs";
+}
+
+bool SheenFixedRuleApplies(const TableSpec& spec) {
+  return IsSheen(spec.model) && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
+         spec.axes[1].name == "roughness";
+}
+
+std::vector<double> SheenFixedRuleAt(const TableSpec& spec, const double* x,
+                                     IntegrationStats& stats) {
+  double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0], {}, &stats.evals);
+  stats.errorEstimate = kSheenRuleBound;
+  return {e};
+}
+
+std::vector<double> SheenSearchRuleAt(const TableSpec& spec, const double* x,
+                                      IntegrationStats& stats) {
+  long long evals = 0;
+  double e =
+      FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0], kSearchSheenRuleOptions, &evals);
+  stats.evals += std::llround(static_cast<double>(evals) * kSearchSheenCharge);
+  stats.errorEstimate = kSearchRuleBound;
+  return {e};
+}
+
+std::string SheenFixedRuleMethod(const TableSpec&) {
+  SheenRuleOptions opt;
+  return "light space: fixed tensor Gauss-Legendre rule over ln(mu_l + c) x ln(pi - phi + c), "
+         "c = max(mu_o, 1e-7) (" +
+         std::to_string(opt.tNodes) + " x " + std::to_string(opt.sNodes) +
+         " nodes per panel), panels graded towards the mirror direction and split at the model's "
+         "kinks; declared error " +
+         Short(kSheenRuleBound) + " abs";
 }
 
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,

@@ -127,6 +127,24 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 /// ashikhmin-velvet): light-space integrals, no smooth limit.
 bool IsSheen(const std::string& model);
 
+/// True when the sheen fixed rule (integrate/fixed_rule_sheen.h) applies: a sheen model (IsSheen),
+/// axes (mu, roughness).
+bool SheenFixedRuleApplies(const TableSpec& spec);
+
+/// E(mu) of the sheen fixed rule at x = (mu, roughness) (cosine included, F = 1; also the cloth
+/// DFG); sets stats.errorEstimate to kSheenRuleBound. A roughness outside the model's domain
+/// throws (ModelInDomain).
+std::vector<double> SheenFixedRuleAt(const TableSpec& spec, const double* x,
+                                     IntegrationStats& stats);
+
+/// The search's form of SheenFixedRuleAt (kSearchSheenRuleOptions, errorEstimate
+/// kSearchRuleBound, evals charged kSearchSheenCharge each).
+std::vector<double> SheenSearchRuleAt(const TableSpec& spec, const double* x,
+                                      IntegrationStats& stats);
+
+/// The method text of the sheen fixed rule.
+std::string SheenFixedRuleMethod(const TableSpec& spec);
+
 /// E_avg = 2 int_0^1 E(mu) mu dmu (per channel) of the albedo table `albedo` (axis 0 is mu) at
 /// the coordinates `rest` of its other axes, by a fixed one-dimensional rule over mu
 /// (integrate/fixed_rule_average.h) of E as the albedo table bakes it (EvaluateSpec: its fixed

@@ -34,15 +34,35 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables, too slow for the
+/// default catalogue's budget today (README "Sheen tables").
+std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
+}
+
+/// The microfacet fixed rules, and the sheen rule for a sheen lobe's one channel: the same
+/// function as its albedo's (SheenFixedRuleAt), so the two tables hold the same bits.
+bool DfgUsesFixedRule(const TableSpec& spec) {
+  return MicrofacetFixedRuleApplies(spec) || SheenFixedRuleApplies(spec);
+}
+
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (SheenFixedRuleApplies(spec)) return SheenFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
   return DfgLayoutValues(spec, ab[0], ab[1]);
 }
 
 /// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt).
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (SheenFixedRuleApplies(spec)) return SheenSearchRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
   return DfgLayoutValues(spec, ab[0], ab[1]);
+}
+
+std::string DfgFixedRuleMethod(const TableSpec& spec) {
+  return SheenFixedRuleApplies(spec) ? SheenFixedRuleMethod(spec) : MicrofacetFixedRuleMethod(spec);
 }
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
@@ -95,10 +115,11 @@ const QuantityInfo& DfgQuantity() {
     q.makeSpec = MakeSpec;
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
-    q.usesFixedRule = MicrofacetFixedRuleApplies;
+    q.onRequest = OnRequest;
+    q.usesFixedRule = DfgUsesFixedRule;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
-    q.fixedRuleMethod = MicrofacetFixedRuleMethod;
+    q.fixedRuleMethod = DfgFixedRuleMethod;
     q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;

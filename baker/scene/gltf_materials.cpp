@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "baker/models/sheen.h"
+
 namespace kiln {
 namespace {
 
@@ -256,10 +258,24 @@ void MaterialReader::Read() {
     }
     if (!on)
       Note(Kind::NoEffect, "KHR_materials_sheen", "sheenColorFactor 0: no sheen");
-    else
-      Note(Kind::NotYet, "KHR_materials_sheen",
-           "Charlie sheen (Estevez-Kulla 2017) needs E(mu, sheenRoughness) for albedo scaling; "
-           "kiln has no Charlie model yet");
+    else {
+      // KHR_materials_sheen's lobe is charlie-smith (the glTF sample viewer's V_Sheen). The
+      // spec's albedo scaling dims the layers below by 1 - max(sheenColor) E(mu), E the lobe's
+      // directional albedo: charlie-smith-albedo (the same integral as charlie-smith-dfg, the
+      // split-sum term for image-based light; docs/models.md "Sheen tables").
+      // The tables start at sheenRoughness 0.045 (Filament's clamp, models/sheen.h): a smaller
+      // value is clamped there, with a note.
+      std::string what;
+      ValueRange sr = Factor(*sh, at, "sheenRoughnessFactor", 0, "sheenRoughnessTexture", what);
+      if (!sr.whole && sr.lo < kSheenTableMinRoughness) {
+        Note(Kind::NoEffect, "KHR_materials_sheen",
+             "sheenRoughness below 0.045 is clamped to 0.045 (the charlie-smith tables start "
+             "there, as Filament's sheen roughness)");
+        sr = ValueRange::Between(kSheenTableMinRoughness, std::max(sr.hi, kSheenTableMinRoughness));
+      }
+      NeedModel(Quantity::Albedo, "charlie-smith", {{"roughness", sr}},
+                "sheen albedo scaling (charlie-smith E; its dfg is the same integral), " + what);
+    }
   }
   if (const Json* ir = Ext("KHR_materials_iridescence")) {
     std::string what;

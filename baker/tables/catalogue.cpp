@@ -1,8 +1,10 @@
 #include "baker/tables/catalogue.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "baker/models/registry.h"
+#include "baker/models/sheen.h"
 
 namespace kiln {
 namespace {
@@ -78,12 +80,17 @@ bool IsCatalogueSheen(const std::string& model) {
 /// err 2-10x more with angle than with sqrt).
 AxisSpec DiffuseMuAxis(const std::string& model) {
   // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the lobe at grazing) and, inside it, the
-  // mu ln mu of the Neubelt pole (charlie, velvet) or the switch of charlie-smith's clamp at
-  // mu ~ 1e-8..1e-4: root4 (measured in a trial bake: charlie-albedo 3.5e-2 of lookup error with
-  // 128 sqrt nodes, 1.8e-2 with 128 root4, 1.3e-3 with 256 x 256).
-  // The Charlie pair's layer is steepest (E(0) = 8.9 at r = 0.045): 256 nodes (1.8e-2 with 128).
-  if (IsCatalogueSheen(model))
-    return {"mu", 0, 1, model == "ashikhmin-velvet" ? 128 : 256, Warp::Root4};
+  // mu ln mu of the Neubelt pole (charlie, velvet): root4. The Charlie pair's layer is steepest
+  // (E(0) = 8.9 at r = 0.045): 192 nodes keep the lookup error below 1e-3 (measured in trial
+  // bakes with 128 log-warped roughness nodes: 1.7e-3 with 128, 9.9e-4 with 192); the velvet
+  // 48 (7.7e-4 with 48 x 48). charlie-smith starts at mu = 1e-4, Filament's MIN_N_DOT_V: below
+  // it the fitted Lambda's clamp V <= 1 makes E jump (1.63 at mu = 1e-8, 0.82 at 1e-6, 0.59 at
+  // 1e-4 for r = 0.386: `kiln integrate albedo --model charlie-smith --mu M --roughness 0.386`),
+  // a layer of the fit no renderer looks up; a lookup below reads the edge.
+  if (IsCatalogueSheen(model)) {
+    if (model == "ashikhmin-velvet") return {"mu", 0, 1, 48, Warp::Root4};
+    return {"mu", model == "charlie-smith" ? kCharlieSmithMinMu : 0, 1, 192, Warp::Root4};
+  }
   if (model == "gotanda-ggx") return {"mu", 0, 1, 128, Warp::Angle};
   if (model == "oren-nayar-qualitative" || model == "oren-nayar-qualitative-ir" ||
       model == "fujii-normalized")
@@ -97,12 +104,14 @@ AxisSpec DefaultRoughnessAxis(const std::string& model) {
   // (spacing 2 / 127 there) left 2e-3 of lookup error, so it gets 256 (a linear axis errs more
   // near r = 0: 1e-2 in its first cell, measured).
   if (model == "blinn-phong") return {"roughness", 0, 1, 256, Warp::Sqrt};
-  // Sheen: the layer at mu = 0 narrows with r, so the roughness axis is dense at its start, which
-  // is the model's own (0.045 for the Charlie models: below it they are rejected).
-  if (IsCatalogueSheen(model))
-    for (const ParamInfo& p : m.params)
-      if (p.name == "roughness")
-        return {"roughness", p.lo, p.hi, model == "ashikhmin-velvet" ? 64 : 256, Warp::Sqrt};
+  // Sheen: the Charlie models' E(0) ~ 0.4 / r, relative error h^2 / (4 r^2) under linear
+  // interpolation: a log axis (constant h / r), 128 nodes (2.6e-3 of lookup error with 64). The
+  // velvet is smooth in r: 48 linear nodes. Both from kSheenTableMinRoughness (models/sheen.h).
+  if (IsCatalogueSheen(model)) {
+    if (model == "ashikhmin-velvet")
+      return {"roughness", kSheenTableMinRoughness, 1, 48, Warp::Linear};
+    return {"roughness", kSheenTableMinRoughness, 1, 128, Warp::Log};
+  }
   for (const ParamInfo& p : m.params)
     if (p.name == "roughness")
       return m.specular() ? AxisSpec{"roughness", 0, p.hi, 128, Warp::Sqrt}

@@ -1,0 +1,54 @@
+// KHR_materials_sheen: the charlie-smith albedo table (the spec's albedo scaling; the same
+// integral as its dfg) over the materials' sheenRoughness
+// range, narrowed like the other roughness axes; a sheen roughness below the tables' domain
+// (0.045) is clamped there with a note.
+#include <catch2/catch.hpp>
+
+#include "scene_util.h"
+
+using namespace kiln;
+using namespace kiln::test;
+using Names = std::vector<std::string>;
+using Kind = SceneNote::Kind;
+
+TEST_CASE("Sheen maps to the charlie-smith albedo over the sheenRoughness range",
+          "[scene][sheen]") {
+  Plan plan = PlanSceneFile(ScenePath("sheen.gltf"));
+  Names names = TableNames(plan);
+  INFO(::Catch::Detail::stringify(names));
+  CHECK(std::find(names.begin(), names.end(), "charlie-smith-albedo-r0.3-0.6") != names.end());
+  int sheenTables = 0;
+  for (const PlannedTable& t : plan.tables) {
+    if (t.spec.model != "charlie-smith") continue;
+    ++sheenTables;
+    CHECK(t.spec.quantity == Quantity::Albedo);
+    const AxisSpec* r = FindAxis(t.spec, "roughness");
+    REQUIRE(r);
+    CHECK(r->lo == 0.3);
+    CHECK(r->hi == 0.6);
+  }
+  CHECK(sheenTables == 1);
+  // 'No sheen' (sheenColorFactor 0) does not widen the axis to its 0.9.
+  const PlanNote* none = FindNote(plan, Kind::NoEffect, "KHR_materials_sheen");
+  REQUIRE(none);
+  CHECK(none->materials == Names{"'No sheen' (/materials/2)"});
+  CHECK(FindNote(plan, Kind::NotYet, "KHR_materials_sheen") == nullptr);
+}
+
+TEST_CASE("A sheen roughness below 0.045 is clamped to the tables' domain, with a note",
+          "[scene][sheen]") {
+  Plan plan = PlanText(OneMaterialGltf(R"({"extensions": {
+      "KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1]}}})"));
+  bool found = false;
+  for (const PlannedTable& t : plan.tables) {
+    if (t.spec.model != "charlie-smith") continue;
+    found = true;
+    const AxisSpec* r = FindAxis(t.spec, "roughness");
+    REQUIRE(r);
+    CHECK(r->lo == 0.045);
+  }
+  CHECK(found);
+  const PlanNote* clamped = FindNote(plan, Kind::NoEffect, "KHR_materials_sheen");
+  REQUIRE(clamped);
+  CHECK(clamped->why.find("clamped to 0.045") != std::string::npos);
+}
