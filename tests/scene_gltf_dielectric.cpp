@@ -12,11 +12,14 @@ using Names = std::vector<std::string>;
 
 TEST_CASE("IOR and transmission: the dielectric table at one IOR is 2D", "[scene]") {
   Plan plan = PlanSceneFile(ScenePath("transmission_ior.gltf"));
-  REQUIRE(TableNames(plan) == Names{"ggx-dfg", "ggx-albedo", "ggx-albedo-avg",
-                                    "ggx-fresnel-albedo-ior1.5", "ggx-dielectric-albedo-r-ior1.5",
-                                    "ggx-dielectric-albedo-t-ior1.5",
-                                    "ggx-dielectric-albedo-r-exit-ior0.666667",
-                                    "ggx-dielectric-albedo-t-exit-ior0.666667"});
+  REQUIRE(TableNames(plan) ==
+          Names{"ggx-dfg", "ggx-albedo", "ggx-albedo-avg", "ggx-fresnel-albedo-ior1.5",
+                "ggx-dielectric-albedo-r-ior1.5", "ggx-dielectric-albedo-t-ior1.5",
+                "ggx-dielectric-albedo-r-avg-ior1.5", "ggx-dielectric-albedo-t-avg-ior1.5",
+                "ggx-dielectric-albedo-r-exit-ior0.666667",
+                "ggx-dielectric-albedo-t-exit-ior0.666667",
+                "ggx-dielectric-albedo-r-exit-avg-ior0.666667",
+                "ggx-dielectric-albedo-t-exit-avg-ior0.666667"});
   const TableSpec& d = FindTable(plan, "ggx-fresnel-albedo-ior1.5")->spec;
   TableSpec full = CatalogueTable("ggx-fresnel-albedo");
   REQUIRE(full.axes.size() == 3);

@@ -224,11 +224,16 @@ void MaterialReader::Read() {
         // entering at eta = ior, and, with a volume (light leaves it through the back), the exit
         // side at eta' = 1 / ior.
         std::string why = "rough dielectric interface (" + what + "), " + roughWhat;
-        for (Quantity q : {Quantity::DielectricAlbedoR, Quantity::DielectricAlbedoT})
+        // A multiple-scattering compensation (Turquin 2019, as Cycles applies it to glass)
+        // reads E(mu) and its average E_avg of each side: the averages come with the E tables.
+        for (Quantity q : {Quantity::DielectricAlbedoR, Quantity::DielectricAlbedoT,
+                           Quantity::DielectricAlbedoRAvg, Quantity::DielectricAlbedoTAvg})
           NeedModel(q, "ggx-dielectric", {{"roughness", rough}, {"eta", eta}}, why);
         if (vol) {
           ValueRange inv = eta.whole ? eta : ValueRange::Between(1 / eta.hi, 1 / eta.lo);
-          for (Quantity q : {Quantity::DielectricAlbedoRExit, Quantity::DielectricAlbedoTExit})
+          for (Quantity q :
+               {Quantity::DielectricAlbedoRExit, Quantity::DielectricAlbedoTExit,
+                Quantity::DielectricAlbedoRExitAvg, Quantity::DielectricAlbedoTExitAvg})
             NeedModel(q, "ggx-dielectric", {{"roughness", rough}, {"eta", inv}},
                       why + ", exit side eta = 1/ior " + inv.Text());
         }

@@ -51,6 +51,14 @@ enum class StoredForm {
   /// P = (n + 2) / (2 pi^2) x^(n/4) / 16, the texel before Unity's clamp at 1 (P is linear in n
   /// at fixed s), and the quantity is min(1, P) (unityNHxRoughnessCoordinates).
   UnityLobe,
+  /// kiln.quantity "albedo-r", "albedo-t", "albedo-r-exit" or "albedo-t-exit" (the
+  /// ggx-dielectric tables) with channel E_R_residual or E_T_residual, on axes (mu, roughness,
+  /// eta) or a slice of them (an axis cut to one value is in kiln.params): the rough
+  /// dielectric's reflected or transmitted energy minus dielectricAlbedoClosedForm(mu,
+  /// roughness, eta, transmit), which carries the Fresnel layer at grazing and, for eta < 1,
+  /// the kink of total internal reflection at mu_c = sqrt(1 - eta^2) softened by roughness;
+  /// the quantity is the sample plus that form.
+  DielectricAlbedoResidual,
 };
 
 /// Unity's PerceptualRoughnessToSpecPower at perceptual roughness r: m = r^2,
@@ -113,6 +121,55 @@ inline double fresnelAlbedoClosedForm(double mu, double r, double eta) {
   return dielectricFresnel(std::sqrt(m * m + alpha * alpha), eta) * h / (1.0 + 10.0 * alpha);
 }
 
+/// The dielectric Fresnel reflectance at cos(theta_i) = mu in [0, 1] (clamped) and relative
+/// index eta > 0 with the transmitted cosine softened by delta >= 0: with q = mu^2 + eta^2 - 1
+/// (eta^2 cos_t^2, negative under total internal reflection) and
+/// w = sqrt((q + sqrt(q^2 + delta^2)) / 2) (the real part of sqrt(q + i delta): sqrt(q) for
+/// q >> delta, -> 0 for q << -delta, smooth across q = 0), F = (r_s^2 + r_p^2) / 2,
+/// r_s = (mu - w) / (mu + w), r_p = (eta^2 mu - w) / (eta^2 mu + w). delta = 0 is the exact F
+/// (dielectricFresnel, 1 under total internal reflection); delta > 0 replaces the square-root
+/// kink of F at the critical cosine by a smooth shoulder of width ~ delta / mu_c in mu.
+inline double dielectricFresnelSoft(double mu, double eta, double delta) {
+  const double m = std::min(std::max(mu, 0.0), 1.0);
+  if (!(delta > 0.0)) return dielectricFresnel(m, eta);
+  const double q = m * m + (eta - 1.0) * (eta + 1.0);
+  // q + sqrt(q^2 + d^2) without cancellation for q < 0: d^2 / (sqrt(q^2 + d^2) - q).
+  const double root = std::sqrt(q * q + delta * delta);
+  const double w = std::sqrt(0.5 * (q >= 0.0 ? q + root : delta * delta / (root - q)));
+  if (!(m + w > 0.0)) return 1.0;
+  const double rs = (m - w) / (m + w), rp = (eta * eta * m - w) / (eta * eta * m + w);
+  return std::min(1.0, 0.5 * (rs * rs + rp * rp));
+}
+
+/// The closed form a ggx-dielectric albedo table in the DielectricAlbedoResidual form stores
+/// its E_R (transmit false) or E_T (transmit true) against, at view cosine mu, perceptual
+/// roughness r (clamped to [0, 1]) and index eta = inside / outside (> 1 entering, < 1 exit):
+///     F_s = dielectricFresnelSoft(sqrt(mu^2 + alpha^2), eta, delta),
+///     delta = 4 alpha mu_c, mu_c = sqrt(1 - eta^2), for eta < 1 (0 for eta >= 1),
+///     g_R = F_s h(mu / alpha) / (1 + 20 alpha),   g_T = 1 - F_s,
+/// h as in fresnelAlbedoClosedForm, alpha = max(r^2, 1e-12) for r > 0; at r = 0 exactly the
+/// smooth interface, g_R = F(mu, eta), g_T = 1 - F(mu, eta) (a residual of 0 there). F_s
+/// carries the Fresnel layer at grazing (eta > 1) and the kink of total internal reflection at
+/// mu_c = sqrt(1 - eta^2) (eta < 1) softened over the spread of microfacet cosines, ~ alpha
+/// sin(theta_o) around mu; g_R's h the dip of GGX's albedo inside its layer mu ~ alpha. Any
+/// smooth g would be exact (the table stores E - g); this one leaves a residual that
+/// interpolates far better than E (docs/models.md, ggx-dielectric).
+inline double dielectricAlbedoClosedForm(double mu, double r, double eta, bool transmit) {
+  const double m = std::min(std::max(mu, 0.0), 1.0);
+  const double rc = std::min(std::max(r, 0.0), 1.0);
+  if (!(rc > 0.0)) {
+    const double f = dielectricFresnel(m, eta);
+    return transmit ? 1.0 - f : f;
+  }
+  const double alpha = std::max(rc * rc, 1e-12);
+  const double delta = eta < 1.0 ? 4.0 * alpha * std::sqrt((1.0 - eta) * (1.0 + eta)) : 0.0;
+  const double f = dielectricFresnelSoft(std::sqrt(m * m + alpha * alpha), eta, delta);
+  if (transmit) return 1.0 - f;
+  const double s = m / alpha;
+  const double h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+  return f * h / (1.0 + 20.0 * alpha);
+}
+
 /// The value of key `key` in a kiln.params string "key=value;key=value", or `def`.
 inline double storedParam(const std::string& params, const std::string& key, double def) {
   std::size_t at = 0;
@@ -152,6 +209,10 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
   if (quantity == "fresnel-albedo" && channel0 == "E_residual")
     return StoredForm::FresnelAlbedoResidual;
   if (quantity == "unity-nhxroughness" && axis0 == "s") return StoredForm::UnityLobe;
+  if ((quantity == "albedo-r" || quantity == "albedo-t" || quantity == "albedo-r-exit" ||
+       quantity == "albedo-t-exit") &&
+      (channel0 == "E_R_residual" || channel0 == "E_T_residual"))
+    return StoredForm::DielectricAlbedoResidual;
   return StoredForm::Plain;
 }
 
@@ -239,6 +300,22 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
   if (form == StoredForm::UnityLobe) {
     // Unity's clamp of the texel at 1 (min is 1-Lipschitz: the table's bound holds for it).
     out[0] = std::min(1.0, out[0]);
+    return;
+  }
+  if (form == StoredForm::DielectricAlbedoResidual) {
+    // As FresnelAlbedoResidual: the closed form at the point the lookup clamped to.
+    const bool exit = table.quantity.size() > 5 &&
+                      table.quantity.compare(table.quantity.size() - 5, 5, "-exit") == 0;
+    double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
+           eta = storedParam(table.params, "eta", exit ? 1.0 / 1.5 : 1.5);
+    for (int d = 0; d < dims; ++d) {
+      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
+      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
+      if (ta.name == "mu") mu = v;
+      if (ta.name == "roughness") r = v;
+      if (ta.name == "eta") eta = v;
+    }
+    out[0] += dielectricAlbedoClosedForm(mu, r, eta, table.channels[0] == "E_T_residual");
     return;
   }
   if (dims >= 1) {

@@ -1,0 +1,37 @@
+// The hemispherical averages of the rough dielectric's energies (models/dielectric_bsdf.h, GGX,
+// height-correlated Smith, exact Fresnel; Walter et al. 2007),
+//     E_avg_R = 2 integral_0^1 E_R(mu) mu dmu,   E_avg_T = 2 integral_0^1 E_T(mu) mu dmu,
+// E_R, E_T as integrate/dielectric_albedo.h gives them (E_T in importance form, without
+// 1/eta^2). What a Turquin-style multiple-scattering compensation of glass reads next to E(mu)
+// on both sides of the interface.
+//
+// The rule over mu (derivation in dielectric_albedo_avg.cpp): panels graded from the GGX layer
+// at mu = 0 (as integrate/fixed_rule_average.h) and, for eta < 1, graded in s = sqrt|mu - mu_c|
+// on both sides of the critical cosine mu_c = sqrt(1 - eta^2), where E follows F's square-root
+// kink (softened over ~alpha mu_c): F is analytic in s there.
+#pragma once
+#include <array>
+
+#include "baker/integrate/hemisphere.h"
+
+namespace kiln {
+
+/// {E_avg_R, E_avg_T} at GGX alpha > 0 and eta in (0, inf) by the fixed rule: E by
+/// FixedRuleDielectricAlbedo (the 3D tables' rule) at 8 Gauss nodes per mu panel.
+/// Deterministic; evals (optional) accumulates integrand evaluations.
+std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
+                                                       long long* evals = nullptr);
+
+/// The same averages by adaptive quadrature over mu (Gauss-Kronrod on the same panels) of the
+/// adaptive E (DielectricAlbedo to tol / 10): the reference, to about tol (absolute).
+std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double tol,
+                                              IntegrationStats& stats);
+
+/// The smooth interface (alpha = 0): {F_avg(eta), 1 - F_avg(eta)}, F_avg = 2 int F mu dmu; for
+/// eta < 1 from the entering side by reciprocity, 1 - F_avg(eta) = eta^2 (1 - F_avg(1 / eta)).
+std::array<double, 2> SmoothDielectricAlbedoAverage(double eta);
+
+/// The error the fixed rule adds to that of the E it averages (tests hold it to adaptive).
+constexpr double kDielectricAverageBound = 1e-7;
+
+}  // namespace kiln

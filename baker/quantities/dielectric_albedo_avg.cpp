@@ -1,0 +1,164 @@
+// albedo-r-avg, albedo-t-avg (and their -exit sides): the hemispherical averages
+// E_avg = 2 int E(mu) mu dmu of the rough dielectric's reflected and transmitted energies
+// (ggx-dielectric, Walter 2007; E_T in importance form), over (roughness, eta): the 2D tables a
+// Turquin-style multiple-scattering compensation of glass reads next to the 3D E tables (Cycles
+// bakes them beside its 3D ones). Entering: eta in [1.1, 3]; exit: eta' = 1/eta in [1/3, 1/1.1].
+// One family, four kinds (which channel, which side), as quantities/dielectric_albedo.cpp.
+#include "baker/integrate/dielectric_albedo.h"
+#include "baker/integrate/dielectric_albedo_avg.h"
+#include "baker/quantities/common.h"
+
+namespace kiln {
+namespace {
+using namespace quantity_detail;
+
+constexpr const char* kModel = "ggx-dielectric";
+constexpr double kEtaMin = 1.1;  ///< as the E tables (quantities/dielectric_albedo.cpp)
+
+struct Kind {
+  Quantity id;
+  bool transmit;  ///< E_avg_T (else E_avg_R)
+  bool exit;      ///< eta in [1/3, 1/1.1] (else [1.1, 3])
+};
+
+const Kind kKinds[] = {{Quantity::DielectricAlbedoRAvg, false, false},
+                       {Quantity::DielectricAlbedoTAvg, true, false},
+                       {Quantity::DielectricAlbedoRExitAvg, false, true},
+                       {Quantity::DielectricAlbedoTExitAvg, true, true}};
+
+const Kind& KindOf(Quantity q) {
+  for (const Kind& k : kKinds)
+    if (k.id == q) return k;
+  return kKinds[0];
+}
+
+template <Quantity Q>
+TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
+  const Kind& k = KindOf(Q);
+  std::string meaning = k.transmit ? "E_avg_T = 2 int E_T(mu) mu dmu: the rough dielectric's "
+                                     "hemispherical transmittance, without 1/eta^2"
+                                   : "E_avg_R = 2 int E_R(mu) mu dmu: the rough dielectric's "
+                                     "hemispherical reflectance";
+  meaning += k.exit ? ", eta = inside / outside < 1 (leaving the denser medium)"
+                    : ", eta = inside / outside >= 1 (entering the denser medium)";
+  return Shell(Q, std::string(kModel) + "-" + QuantityName(Q), kModel,
+               {k.transmit ? "E_avg_T" : "E_avg_R"}, {meaning}, std::move(axes));
+}
+
+/// roughness (sqrt warp: the averages' r -> 0 slope follows alpha = r^2) by eta (entering: sqrt
+/// warp from 1.1, exit: linear, as the E tables).
+template <Quantity Q>
+std::vector<AxisSpec> DefaultAxes(const std::string&) {
+  AxisSpec eta = KindOf(Q).exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 16, Warp::Linear}
+                                : AxisSpec{"eta", kEtaMin, 3, 16, Warp::Sqrt};
+  return {{"roughness", 0, 1, 24, Warp::Sqrt}, eta};
+}
+
+template <Quantity Q>
+std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
+  return {MakeSpec<Q>(kModel, DefaultAxes<Q>(kModel))};
+}
+
+std::array<double, 2> PointOf(const TableSpec& spec, const double* x) {
+  return {CoordinateOf(spec, x, "roughness", 0.5),
+          CoordinateOf(spec, x, "eta", KindOf(spec.quantity).exit ? 1 / 1.5 : 1.5)};
+}
+
+void CheckModel(const TableSpec& spec) {
+  if (spec.model != kModel)
+    throw std::invalid_argument(std::string(QuantityName(spec.quantity)) + " is baked for " +
+                                kModel + " only, not '" + spec.model + "'");
+}
+
+bool UsesRule(const TableSpec& spec) { return spec.model == kModel; }
+
+std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  CheckModel(spec);
+  const auto [r, eta] = PointOf(spec, x);
+  std::array<double, 2> e = FixedRuleDielectricAlbedoAverage(
+      std::max(AlphaFromPerceptual(r), MinAlpha), eta, &stats.evals);
+  stats.errorEstimate = kDielectricRuleBound + kDielectricAverageBound;
+  return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
+}
+
+std::string FixedRuleMethod(const TableSpec&) {
+  return "fixed Gauss rule over mu (8 nodes per panel, panels graded from the GGX layer at mu = "
+         "0 and, eta < 1, in sqrt|mu - mu_c| about the critical cosine) of E by the 3D tables' "
+         "rule (integrate/dielectric_albedo_avg.cpp)";
+}
+
+std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
+                             IntegrationStats& stats) {
+  CheckModel(spec);
+  const auto [r, eta] = PointOf(spec, x);
+  std::array<double, 2> e =
+      DielectricAlbedoAverage(std::max(AlphaFromPerceptual(r), MinAlpha), eta, tol, stats);
+  return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
+}
+
+/// Roughness 0: the smooth interface's F_avg or 1 - F_avg.
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (spec.model != kModel) return false;
+  const auto [r, eta] = PointOf(spec, x);
+  if (r != 0.0) return false;
+  out = {SmoothDielectricAlbedoAverage(eta)[KindOf(spec.quantity).transmit ? 1 : 0]};
+  return true;
+}
+
+std::string Method(const TableSpec& spec) {
+  return "adaptive Gauss-Kronrod over mu of E by adaptive quadrature, to " + Full17(spec.tol) +
+         " abs";
+}
+
+template <Quantity Q>
+QuantityInfo MakeInfo(const char* name, const char* description) {
+  QuantityInfo q;
+  q.id = Q;
+  q.name = name;
+  q.description = description;
+  q.makeSpec = MakeSpec<Q>;
+  q.defaultAxes = DefaultAxes<Q>;
+  q.catalogue = Catalogue<Q>;
+  q.inDefaultCatalogue = false;  // tens of seconds of CPU per table (README)
+  q.usesFixedRule = UsesRule;
+  q.fixedRule = FixedRule;
+  q.fixedRuleMethod = FixedRuleMethod;
+  q.evaluate = Evaluate;
+  q.smoothLimit = SmoothLimit;
+  q.method = Method;
+  q.sceneKind = true;
+  q.sceneModel = kModel;
+  q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
+  q.sceneDomain = KindOf(Q).exit ? "glass seen from inside: eta = 1/ior, ior in [1.1, 3]"
+                                 : "glass: eta = ior in [1.1, 3]";
+  q.readsParams = true;
+  return q;
+}
+
+}  // namespace
+
+const QuantityInfo& DielectricAlbedoRAvgQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoRAvg>(
+      "albedo-r-avg", "rough dielectric's average reflected energy E_avg_R: glass compensation");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoTAvgQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoTAvg>(
+      "albedo-t-avg", "rough dielectric's average transmitted energy E_avg_T: glass compensation");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoRExitAvgQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoRExitAvg>(
+      "albedo-r-exit-avg", "E_avg_R seen from inside the denser medium (eta < 1): glass");
+  return info;
+}
+
+const QuantityInfo& DielectricAlbedoTExitAvgQuantity() {
+  static const QuantityInfo info = MakeInfo<Quantity::DielectricAlbedoTExitAvg>(
+      "albedo-t-exit-avg", "E_avg_T seen from inside the denser medium (eta < 1): glass");
+  return info;
+}
+
+}  // namespace kiln
