@@ -7,6 +7,7 @@
 #include "baker/integrate/fixed_rule_lobe.h"
 #include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/models/lafortune.h"
+#include "baker/models/unity.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
 #include "baker/tables/catalogue.h"
@@ -52,12 +53,14 @@ TEST_CASE(
   bool inDefault = false, onRequest = false;
   for (const TableSpec& s : DefaultCatalogue())
     inDefault |= s.name == "unity-brdf1-albedo" || s.name == "unity-brdf1-albedo-avg" ||
-                 s.name == "lafortune-albedo" || s.name == "lafortune-albedo-avg";
+                 s.name == "lafortune-albedo" || s.name == "lafortune-albedo-avg" ||
+                 s.name == "unity-brdf3-albedo" || s.name == "unity-brdf3-albedo-avg";
   int onRequestCount = 0;
   for (const TableSpec& s : OnRequestTables())
     onRequestCount += s.name == "unity-brdf1-albedo" || s.name == "lafortune-albedo" ||
-                      s.name == "unity-brdf1-albedo-avg" || s.name == "lafortune-albedo-avg";
-  onRequest = onRequestCount == 4;
+                      s.name == "unity-brdf1-albedo-avg" || s.name == "lafortune-albedo-avg" ||
+                      s.name == "unity-brdf3-albedo" || s.name == "unity-brdf3-albedo-avg";
+  onRequest = onRequestCount == 6;
   CHECK_FALSE(inDefault);
   CHECK(onRequest);
   // Below r = sqrt(0.002) Unity's a = max(r^2, 0.002) is constant: the table's roughness axis
@@ -76,8 +79,9 @@ TEST_CASE(
   // A smaller table of the same spec: -j 1 and -j 2 bake the same bytes and bound.
   CatalogueOptions small;
   small.size = 9;
-  for (const char* name : {"unity-brdf1-albedo", "unity-brdf1-albedo-avg", "lafortune-albedo",
-                           "lafortune-albedo-avg"}) {
+  for (const char* name :
+       {"unity-brdf1-albedo", "unity-brdf1-albedo-avg", "lafortune-albedo", "lafortune-albedo-avg",
+        "unity-brdf3-albedo", "unity-brdf3-albedo-avg"}) {
     TableSpec s = CatalogueTable(name, small);
     BakeOptions one, two;
     one.threads = 1;
@@ -147,6 +151,48 @@ TEST_CASE(
   // n -> 0+: the half-space m.l > 0 reflects E = (1 + mu) / 2 exactly.
   for (double mu : {0.0, 0.01, 0.3, 0.7, 1.0})
     CHECK(FixedRuleMirrorLobeAlbedo(mu, 0) == Approx((1 + mu) / 2).epsilon(1e-12));
+}
+
+}  // namespace kiln
+
+namespace kiln {
+
+TEST_CASE(
+    "unity-brdf3: the model's lobe is even in R.L (a twin about -m), and the twin-lobe rule's "
+    "albedo is the adaptive integrator's within 6e-7",
+    "[unity-rule]") {
+  // (R.L)^4 is even: the model has no max(0, R.L), so l and its reflection through the plane
+  // normal to m (the mirror direction) see the same value (a grazing view, both above the horizon).
+  ModelParams p;
+  p.roughness = 0.7;
+  AnyModel model = MakeModel("unity-brdf3", p);
+  const double mu = 0.05, s = std::sqrt(1 - mu * mu);
+  const Vec3 wo{s, 0, mu}, m{-s, 0, mu};
+  const Vec3 wi = Normalize(Vec3{0.3, 0.2, 0.93});
+  const Vec3 twin = wi - 2 * Dot(wi, m) * m;  // m.twin = -m.wi
+  REQUIRE(twin.z > 0);
+  CHECK(Dot(m, twin) == Approx(-Dot(m, wi)));
+  CHECK(Evaluate(model, wo, wi) == Approx(Evaluate(model, wo, twin)).epsilon(1e-12));
+  CHECK(Evaluate(model, wo, wi) > 0);
+
+  double worst = 0, wmu = 0, wr = 0;
+  const double mus[] = {0, 1e-9, 1e-4, 0.01, 0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999, 1};
+  const double rs[] = {0, 0.1, 0.15, 0.2, 0.3, 0.35, 0.4, 0.5, 0.6, 0.8, 0.9, 0.99, 1};
+  for (double r : rs)
+    for (double mu2 : mus) {
+      ModelParams q;
+      q.roughness = r;
+      IntegrationOptions opt;
+      opt.tol = 1e-10;
+      IntegrationStats stats;
+      RhoParts e = DirectionalAlbedo(MakeModel("unity-brdf3", q), mu2, opt, stats);
+      double got = FixedRuleUnityBRDF3Albedo(mu2, UnitySpecPower(r) / 4);
+      REQUIRE(std::isfinite(got));
+      double err = std::abs(got - (e.lin + e.quad));
+      if (err > worst) worst = err, wmu = mu2, wr = r;
+    }
+  INFO("worst " << worst << " at mu " << wmu << " r " << wr);
+  CHECK(worst < kMirrorLobeRuleBound);
 }
 
 }  // namespace kiln

@@ -21,12 +21,13 @@ std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions& opt);
 /// The albedo-avg kind's on-request entries: `M-albedo-avg`, 64 roughness nodes.
 std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions& opt);
 
-/// True when the mirror-lobe rule (integrate/fixed_rule_lobe.h) bakes `spec`: model lafortune,
-/// axes (mu, roughness).
+/// True when the mirror-lobe rule (integrate/fixed_rule_lobe.h) bakes `spec`: model lafortune or
+/// unity-brdf3, axes (mu, roughness).
 bool MirrorLobeRuleApplies(const TableSpec& spec);
 
-/// E at x = (mu, roughness) by the mirror-lobe rule (n = LafortuneBRDF::ExponentFromPerceptual;
-/// at r = 1, n = 0, the limit n -> 0+, docs/models.md); sets stats.errorEstimate to its bound.
+/// E at x = (mu, roughness) by the mirror-lobe rule (lafortune: n = LafortuneBRDF::
+/// ExponentFromPerceptual, at r = 1 the limit n -> 0+; unity-brdf3: FixedRuleUnityBRDF3Albedo at
+/// n = UnitySpecPower(r) / 4; docs/models.md); sets stats.errorEstimate to its bound.
 std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
                                      IntegrationStats& stats);
 
