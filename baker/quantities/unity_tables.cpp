@@ -13,7 +13,7 @@
 namespace kiln {
 
 const std::vector<std::string>& OnRequestAlbedoModels() {
-  static const std::vector<std::string> models = {"unity-brdf1", "lafortune", "unity-brdf3"};
+  static const std::vector<std::string> models = {"unity-brdf1", "lafortune", "unity-brdf3", "unity-brdf2"};
   return models;
 }
 
