@@ -13,7 +13,8 @@
 namespace kiln {
 
 const std::vector<std::string>& OnRequestAlbedoModels() {
-  static const std::vector<std::string> models = {"unity-brdf1", "lafortune", "unity-brdf3", "unity-brdf2"};
+  static const std::vector<std::string> models = {"unity-brdf1", "lafortune", "unity-brdf3",
+                                                  "unity-brdf2"};
   return models;
 }
 
@@ -30,6 +31,7 @@ AxisSpec RoughnessAxis(const std::string& model, int size) {
   if (model == "lafortune") return {"roughness", 0.1, 1, size, Warp::Sqrt};
   // unity-brdf3: UnitySpecPower's max(1e-4, r^4), constant below r = 0.1 (the same start).
   if (model == "unity-brdf3") return {"roughness", 0.1, 1, size, Warp::Sqrt};
+  // unity-brdf2: a = r^2 without a minimum, E = 0 at r = 0 (no smooth limit), from 0.
   return {"roughness", 0, 1, size, Warp::Sqrt};
 }
 

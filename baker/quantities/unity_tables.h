@@ -1,7 +1,8 @@
 // The albedo and albedo-avg tables of Unity's, Ward's and Lafortune's models (issue #16): on
 // request only (QuantityInfo::onRequest of the albedo kinds), each by a fixed rule held to the
-// adaptive integrator. Today unity-brdf1 (integrate/fixed_rule_microfacet.h, FixedRuleNdf::
-// UnityBRDF1); the others are listed in docs/models.md with why they have none yet.
+// adaptive integrator. Today unity-brdf1 and unity-brdf2 (integrate/fixed_rule_microfacet.h,
+// FixedRuleNdf::UnityBRDF1, UnityBRDF2), lafortune and unity-brdf3 (integrate/fixed_rule_lobe.h);
+// the Ward models are listed in docs/models.md with why they have none yet.
 #pragma once
 #include <string>
 #include <vector>
