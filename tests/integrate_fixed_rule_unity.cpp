@@ -1,5 +1,6 @@
-// The fixed rule of unity-brdf1's albedo (integrate/fixed_rule_microfacet.h, FixedRuleNdf::
-// UnityBRDF1) against the adaptive integrator (issue #16: bake error below 1e-6).
+// The fixed rules of the on-request Unity / Lafortune albedo tables against the adaptive
+// integrator (issue #16: bake error below 1e-6): unity-brdf1 and unity-brdf2
+// (integrate/fixed_rule_microfacet.h), lafortune and unity-brdf3 (integrate/fixed_rule_lobe.h).
 #include <catch2/catch.hpp>
 #include <cmath>
 
