@@ -138,6 +138,34 @@ void AddUnity(Context& k, double t, double C, double S, double q, double M2, dou
   k.sumB += val * (w2 * w2 * w);
 }
 
+/// unity-brdf2 at an inner node (see Add): f = D_u / (4 max(0.1, l.h^2) (a + 0.5)) with
+/// D_u = a^2 / (pi d^2), d = n.h^2 (a^2 - 1) + 1.00001, so G2 = 4 mu_o mu_l V is
+/// mu_o mu_l / (max(0.1, l.h^2) (a + 0.5)) and, at alpha_q = max(a, sqrt(1e-5)),
+///     r = a^2 aq^2 q^4 / (1e-5 M2 + aq^2 S^2 + a^2 C^2)^2,
+///     g = mu_l (mu_o + mu_o Lambda_ggx(o)) / (max(0.1, (o.h)^2) (a + 0.5))
+/// (l.h = o.h for a reflection). g is linear in mu_l: no masking layer. Where 4 (o.h)^2 < 0.001,
+/// Unity_SafeNormalize scales n.h and l.h by 2 (o.h) / sqrt(0.001): l.h^2 is then below 0.1 (the
+/// max holds it) and D reads the scaled n.h, as in unity-brdf1.
+void AddUnity2(Context& k, double t, double C, double S, double q, double M2, double muL,
+               double weight, double c) {
+  const double a = k.unityA, aq = k.a, mu = k.mu;
+  const double oh = (k.st * aq * S * c + mu * C) / std::sqrt(M2);
+  double r;
+  if (4 * oh * oh < 0.001) {
+    const double cos2 = 4 * oh * oh / 0.001 * C * C / M2, d = cos2 * (a * a - 1) + 1.00001;
+    const double dggx = M2 * M2 / (kPi * aq * aq * q * q * q * q);
+    r = a * a / (kPi * d * d) / dggx;
+  } else {
+    const double x = 1e-5 * M2 + aq * aq * S * S + a * a * C * C;
+    r = a * a * aq * aq * q * q * q * q / (x * x);
+  }
+  const double g = muL * k.gNum / (std::max(0.1, oh * oh) * (a + 0.5));
+  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * r * g;
+  const double w = 1 - oh, w2 = w * w;
+  k.sumV += val;
+  k.sumB += val * (w2 * w2 * w);
+}
+
 /// Adds weight times the integrand at inner node t of the azimuth with cos p = c.
 inline void Add(Context& k, double c, double t, double weight) {
   ++k.count;
@@ -160,6 +188,10 @@ inline void Add(Context& k, double c, double t, double weight) {
   }
   if (k.model.ndf == FixedRuleNdf::UnityBRDF1) {
     AddUnity(k, t, C, S, q, M2, muL, weight, c);
+    return;
+  }
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
+    AddUnity2(k, t, C, S, q, M2, muL, weight, c);
     return;
   }
   if (r == 0) return;
@@ -197,6 +229,148 @@ inline void GradedPanel(Context& k, double c, double pw, double end, double dir,
   }
 }
 
+/// A segment [t0, t1] of an azimuth graded towards its left end at scale eL and its right end at
+/// eR (INFINITY: no grading): both, halves graded each way; one, graded where the scale is below
+/// kGradeBelow of the segment (that half graded, the other n plain nodes); none, n plain nodes.
+void Segment(Context& k, double c, double pw, double t0, double t1, double eL, double eR, int n,
+             const MicrofacetRuleOptions& opt) {
+  const double len = t1 - t0;
+  if (!(len > 0)) return;
+  const bool gl = eL < kGradeBelow * len, gr = eR < kGradeBelow * len;
+  if (gl && gr) {
+    GradedPanel(k, c, pw, t0, 1, len / 2, eL, opt.gradedNodes, opt.nodesPerEFold);
+    GradedPanel(k, c, pw, t1, -1, len - len / 2, eR, opt.gradedNodes, opt.nodesPerEFold);
+  } else if (gl) {
+    GradedPanel(k, c, pw, t0, 1, len / 2, eL, opt.gradedNodes, opt.nodesPerEFold);
+    PlainPanel(k, c, pw, t0 + len / 2, len - len / 2, n);
+  } else if (gr) {
+    PlainPanel(k, c, pw, t0, len - len / 2, n);
+    GradedPanel(k, c, pw, t1, -1, len / 2, eR, opt.gradedNodes, opt.nodesPerEFold);
+  } else {
+    PlainPanel(k, c, pw, t0, len, n);
+  }
+}
+
+/// unity-brdf2's kink levels of o.h: Unity_SafeNormalize's sqrt(0.001) / 2 and max(0.1, l.h^2)'s
+/// sqrt(0.1).
+constexpr double kUnity2Levels[2] = {kUnitySafeOh, 0.31622776601683794};
+
+/// o.h along the azimuth with cos p = c. The stretch is isotropic, so the azimuth is h's own and
+/// o.h = mu cos(theta) + s_o c sin(theta) = A cos(theta - theta0), A = sqrt(mu^2 + s_o^2 c^2),
+/// theta0 = atan2(s_o c, mu), theta the polar angle of h (tan theta = alpha tan t', t = tan(t'/2)).
+/// It rises to A at theta0 and falls after: a level L < A is crossed at theta0 -+ acos(L / A).
+/// Writes the crossings inside (0, t1) in t, increasing, and whether o.h rises through each.
+int Unity2Crossings(const Context& k, double c, double t1, double level, double* t, bool* rising) {
+  const double A = std::sqrt(k.mu * k.mu + k.st * k.st * c * c);
+  if (!(A > level)) return 0;
+  const double th0 = std::atan2(k.st * c, k.mu), d = std::acos(level / A);
+  int n = 0;
+  for (int i = 0; i < 2; ++i) {
+    const double th = i == 0 ? th0 - d : th0 + d;
+    if (!(th > 0 && th < kPi / 2)) continue;
+    const double tq = std::tan(std::atan(std::tan(th) / k.a) / 2);
+    if (tq > 0 && tq < t1) {
+      t[n] = tq;
+      rising[n] = i == 0;
+      ++n;
+    }
+  }
+  return n;
+}
+
+/// unity-brdf2's azimuth [0, t1]: panel boundaries where o.h crosses its kink levels
+/// (Unity2Crossings); the SafeNormalize kink's inner side (o.h below it: D's scaled peak sits on
+/// the kink) graded towards it at unity-brdf1's scale, with max(a^2, 1e-5) for D's width in
+/// n.h^2; eEnd at t1.
+void UnityBRDF2Azimuth(Context& k, double c, double pw, double t1, double eEnd,
+                       const MicrofacetRuleOptions& opt) {
+  const double a = k.a, st = k.st, mu = k.mu;
+  auto ohAt = [&](double t) {
+    const double C = 1 - t * t, aS = a * 2 * t;
+    return (st * aS * c + mu * C) / std::sqrt(aS * aS + C * C);
+  };
+  struct B {
+    double t, eBefore, eAfter;
+  } bs[4];
+  int m = 0;
+  for (int li = 0; li < 2; ++li) {
+    double tc[2];
+    bool up[2];
+    const int n = Unity2Crossings(k, c, t1, kUnity2Levels[li], tc, up);
+    for (int i = 0; i < n; ++i) {
+      double eK = INFINITY;
+      if (li == 0) {
+        const double dt = 1e-7 * t1,
+                     slope = std::abs(ohAt(tc[i] + dt) - ohAt(tc[i] - dt)) / (2 * dt);
+        const double ua = k.unityA * k.unityA;
+        eK = std::max(std::max(ua, 1e-5) * kUnitySafeOh / (2 * std::max(slope, 1e-300)), 1e-12);
+      }
+      // Rising through the level: the inside (below it) is before the crossing.
+      bs[m++] = {tc[i], up[i] ? eK : INFINITY, up[i] ? INFINITY : eK};
+    }
+  }
+  for (int i = 1; i < m; ++i)  // insertion sort by t (at most 4)
+    for (int j = i; j > 0 && bs[j].t < bs[j - 1].t; --j) std::swap(bs[j], bs[j - 1]);
+  const int n = opt.bulkNodes + opt.gradedNodes;
+  double t0 = 0, eL = INFINITY;
+  for (int i = 0; i < m; ++i) {
+    Segment(k, c, pw, t0, bs[i].t, eL, bs[i].eBefore, n, opt);
+    t0 = bs[i].t;
+    eL = bs[i].eAfter;
+  }
+  Segment(k, c, pw, t0, t1, eL, eEnd, n, opt);
+}
+
+/// t at the cut of the azimuth with cos p = +-cx (side 0: +, 1: -), as Rule2 computes it.
+double CutT(const Context& k, double cx, int side) {
+  const double mu = k.mu, X = k.st * cx, R = std::sqrt(mu * mu + X * X), RX = R + X;
+  if (side == 1 && mu == 0) return 0;
+  // (side 0 at mu = 0: iT = 0 on every azimuth, also at cx = 0 where Rule2 puts no node)
+  const double iT =
+      side == 0 ? (mu > 0 ? mu * (1 / RX) : 0) : std::min(RX * (mu > 0 ? 1 / mu : 0), 1e150);
+  const double iu = k.a * iT;
+  return 1 / (iu + std::sqrt(iu * iu + 1));
+}
+
+/// unity-brdf2's outer breakpoints in y (cx = sin(sigma sinh y)) over [0, Y]: where o.h at the
+/// cut crosses one of its kink levels sqrt(0.1), sqrt(0.001) / 2 on either side, by bisection
+/// (o.h at the cut taken monotone in y), sorted, with 0 and Y.
+std::vector<double> UnityBRDF2OuterBreaks(const Context& k, double sigma, double Y) {
+  const double* levels = kUnity2Levels;
+  auto ohCut = [&](double y, int side) {
+    const double cx = std::sin(sigma * std::sinh(y)), c = side == 0 ? cx : -cx;
+    const double t = CutT(k, cx, side), C = 1 - t * t, aS = k.a * 2 * t;
+    return (k.st * aS * c + k.mu * C) / std::sqrt(aS * aS + C * C);
+  };
+  std::vector<double> out = {0.0, Y};
+  // Where a level is tangent to an azimuth (A = level: the two crossings meet), cx =
+  // sqrt(level^2 - mu^2) / s_o.
+  for (int li = 0; li < 2; ++li) {
+    const double level = levels[li];
+    if (!(level > k.mu && k.st > 0)) continue;
+    const double cx = std::sqrt((level - k.mu) * (level + k.mu)) / k.st;
+    if (cx < 1) {
+      const double y = std::asinh(std::asin(cx) / sigma);
+      if (y > 1e-9 * Y && y < Y * (1 - 1e-9)) out.push_back(y);
+    }
+  }
+  for (int side = 0; side < 2; ++side)
+    for (int li = 0; li < 2; ++li) {
+      const double level = levels[li];
+      const double f0 = ohCut(0, side) - level, f1 = ohCut(Y, side) - level;
+      if (!((f0 < 0) != (f1 < 0))) continue;
+      double lo = 0, hi = Y;
+      for (int i = 0; i < 60; ++i) {
+        const double m = (lo + hi) / 2;
+        ((ohCut(m, side) - level < 0) == (f0 < 0) ? lo : hi) = m;
+      }
+      const double yb = (lo + hi) / 2;
+      if (yb > 1e-9 * Y && yb < Y * (1 - 1e-9)) out.push_back(yb);
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 /// The rule: (sumV, sumB) times the prefactor (Fresnel: sumV is E).
 std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long long* evals) {
   const double mu = k.mu, st = k.st, a = k.a, a2 = a * a;
@@ -207,6 +381,13 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
   // unity-brdf1: V's pole in mu_l at -(a mu + 1e-5) / (2 mu (1 - a) + a).
   if (k.model.ndf == FixedRuleNdf::UnityBRDF1)
     sMask = (k.unityA * mu + 1e-5) / (2 * mu * (1 - k.unityA) + k.unityA);
+  // unity-brdf2: g is linear in mu_l (no masking pole), and up to 1 / (0.1 (a + 0.5)) times
+  // GGX's: the weights that pick light azimuths scale by it.
+  double weightScale = 1;
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
+    sMask = 0;
+    weightScale = 1 / (0.1 * (k.unityA + 0.5));
+  }
   double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
   double eps = 0;
   if (k.eta > 0) {
@@ -221,9 +402,26 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
                      opt.outerNodes * std::max(0.0, Y - kYRef) / kYRef - 1e-9)));
   const GaussRule01& go = Gauss(nOuter);
   const double invMu = mu > 0 ? 1 / mu : 0;
-  for (size_t io = 0; io < go.x.size(); ++io) {
-    const double y = Y * go.x[io];
-    const double cx = std::sin(sigma * std::sinh(y)), pw = go.w[io] * Y * sigma * std::cosh(y);
+  // The outer nodes (y, weight in y): one Gauss panel over [0, Y]; unity-brdf2 splits it where a
+  // kink of its o.h levels meets the cut (UnityBRDF2OuterBreaks): there the inner integral is not
+  // smooth in the azimuth.
+  std::vector<double> ys, wys;
+  std::vector<double> breaks = {0.0, Y};
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF2) breaks = UnityBRDF2OuterBreaks(k, sigma, Y);
+  for (size_t b = 0; b + 1 < breaks.size(); ++b)
+    for (size_t io = 0; io < go.x.size(); ++io) {
+      if (breaks.size() == 2) {
+        ys.push_back(Y * go.x[io]);
+        wys.push_back(go.w[io] * Y);
+      } else {
+        const double len = breaks[b + 1] - breaks[b];
+        ys.push_back(breaks[b] + len * go.x[io]);
+        wys.push_back(go.w[io] * len);
+      }
+    }
+  for (size_t io = 0; io < ys.size(); ++io) {
+    const double y = ys[io];
+    const double cx = std::sin(sigma * std::sinh(y)), pw = wys[io] * sigma * std::cosh(y);
     // Both sides (0: cos p > 0, 1: cos p < 0): t at the cut, dt/dt' there, the masking scale e2
     // at the cut and, for the opposite side, e0 (fixed_rule_dfg.cpp).
     const double X = st * cx, R = std::sqrt(mu * mu + X * X), RX = R + X;
@@ -243,8 +441,8 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
       const bool capped = t1 < tm[side];  // the cut and its structures lie beyond the NDF's end
       if (!(t1 > 0)) continue;
       const double c = side == 0 ? cx : -cx, kOn = 2 * k.oxs * c;
-      const double weight =
-          kWeightBound * pref / 4 * pw * t1 * t1 * (4.0 / 3 * std::abs(kOn) * t1 + 2 * k.ozs);
+      const double weight = weightScale * kWeightBound * pref / 4 * pw * t1 * t1 *
+                            (4.0 / 3 * std::abs(kOn) * t1 + 2 * k.ozs);
       if (weight < kTinyWeight) {
         PlainPanel(k, c, pw, 0, t1, kTinyNodes);
         continue;
@@ -269,6 +467,10 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
       if (k.eta > 0 && onMaxQ * eFT > floorW && eFT < kGradeBelow * len) eEnd = std::min(eEnd, eFT);
       if (!capped && sMask > 0 && e2[side] < kGradeBelow * len && onMaxQ * e2[side] > floorW)
         eEnd = std::min(eEnd, e2[side]);
+      if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
+        UnityBRDF2Azimuth(k, c, pw, t1, eEnd, opt);
+        continue;
+      }
       double eStart = INFINITY;
       const double eMask = e0[1 - side];
       if (sMask > 0 && tm[1 - side] > 0 && eMask < t1 / 8 && eMask * eMask * k.ozs > kNegligible)
@@ -362,6 +564,10 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
     k.unityA = std::max(alpha, 0.002);
     k.a = std::max(k.unityA, 0.01778279410038923);  // alpha_q: UnityBRDF1::Sampler
   }
+  if (model.ndf == FixedRuleNdf::UnityBRDF2) {
+    k.unityA = std::max(alpha, 0.0);
+    k.a = std::max(k.unityA, 0.0031622776601683794);  // alpha_q: UnityBRDF2::Sampler
+  }
   k.st = std::sqrt(std::max(0.0, 1 - k.mu * k.mu));
   const double L = std::sqrt(k.a * k.a * k.st * k.st + k.mu * k.mu);
   k.ozs = k.mu / L;
@@ -412,6 +618,7 @@ const Tuned kTuned[] = {
     {FixedRuleNdf::BlinnPhong, false, {22, 14, 8, 3, 10, 8}},
     {FixedRuleNdf::GGX, false, {24, 12, 6, 2, 8, 8}},
     {FixedRuleNdf::UnityBRDF1, false, {32, 16, 8, 2, 8, 8}},
+    {FixedRuleNdf::UnityBRDF2, false, {16, 16, 8, 2, 8, 8}},
 };
 const MicrofacetRuleOptions kTunedFresnel = {24, 16, 8, 2, 8, 8};
 // The search's verification-grade counts: fewer outer nodes (16) and, for the Beckmann Lambda's
@@ -436,7 +643,8 @@ bool FixedRuleModelFor(const char* model, FixedRuleModel* out) {
                  {"beckmann", {FixedRuleNdf::Beckmann, false}},
                  {"beckmann-separable", {FixedRuleNdf::Beckmann, true}},
                  {"blinn-phong", {FixedRuleNdf::BlinnPhong, false}},
-                 {"unity-brdf1", {FixedRuleNdf::UnityBRDF1, false}}};
+                 {"unity-brdf1", {FixedRuleNdf::UnityBRDF1, false}},
+                 {"unity-brdf2", {FixedRuleNdf::UnityBRDF2, false}}};
   for (const auto& e : kModels)
     if (std::strcmp(e.name, model) == 0) {
       if (out) *out = e.m;

@@ -20,7 +20,10 @@ namespace kiln {
 /// UnityBRDF1: unity-brdf1's capped GGX (the 1e-7 in GGXTerm), Unity's approximate joint
 /// visibility (with its 1e-5) and Unity_SafeNormalize's half vector (models/unity.h), in the
 /// GGX variables at alpha_q = max(a, 1e-7^(1/4)), a = max(r^2, 0.002).
-enum class FixedRuleNdf { GGX, Beckmann, BlinnPhong, UnityBRDF1 };
+/// UnityBRDF2: unity-brdf2's GGX with 1.00001 for 1, its visibility-Fresnel term
+/// 1 / (4 max(0.1, l.h^2) (a + 0.5)) and Unity_SafeNormalize's half vector, in the GGX variables at
+/// alpha_q = max(a, sqrt(1e-5)), a = r^2; rs = 1.
+enum class FixedRuleNdf { GGX, Beckmann, BlinnPhong, UnityBRDF1, UnityBRDF2 };
 
 /// A microfacet model the fixed rule takes: its NDF and whether Smith's G2 is separable
 /// (G1(o) G1(l)) or height-correlated (1 / (1 + Lambda(o) + Lambda(l))). Blinn-Phong takes

@@ -6,13 +6,15 @@
 #include "baker/integrate/fixed_rule_lobe.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/lafortune.h"
+#include "baker/models/unity.h"
 #include "baker/quantities/quantity.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {
 
 const std::vector<std::string>& OnRequestAlbedoModels() {
-  static const std::vector<std::string> models = {"unity-brdf1", "lafortune"};
+  static const std::vector<std::string> models = {"unity-brdf1", "lafortune", "unity-brdf3",
+                                                  "unity-brdf2"};
   return models;
 }
 
@@ -27,6 +29,9 @@ AxisSpec RoughnessAxis(const std::string& model, int size) {
   if (model == "unity-brdf1") return {"roughness", 0.044721359549995794, 1, size, Warp::Sqrt};
   // lafortune: alpha = max(r^2, 0.01), constant below r = 0.1 (the same clamp-exact start).
   if (model == "lafortune") return {"roughness", 0.1, 1, size, Warp::Sqrt};
+  // unity-brdf3: UnitySpecPower's max(1e-4, r^4), constant below r = 0.1 (the same start).
+  if (model == "unity-brdf3") return {"roughness", 0.1, 1, size, Warp::Sqrt};
+  // unity-brdf2: a = r^2 without a minimum, E = 0 at r = 0 (no smooth limit), from 0.
   return {"roughness", 0, 1, size, Warp::Sqrt};
 }
 
@@ -50,17 +55,24 @@ std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions&) {
 }
 
 bool MirrorLobeRuleApplies(const TableSpec& spec) {
-  return spec.model == "lafortune" && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
-         spec.axes[1].name == "roughness";
+  return (spec.model == "lafortune" || spec.model == "unity-brdf3") && spec.axes.size() == 2 &&
+         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
 }
 
-std::vector<double> MirrorLobeRuleAt(const TableSpec&, const double* x, IntegrationStats& stats) {
+std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
+                                     IntegrationStats& stats) {
   const double r = std::min(1.0, std::max(0.0, x[1]));
   stats.errorEstimate = kMirrorLobeRuleBound;
+  if (spec.model == "unity-brdf3")
+    return {FixedRuleUnityBRDF3Albedo(x[0], UnitySpecPower(r) / 4, &stats.evals)};
   return {FixedRuleMirrorLobeAlbedo(x[0], LafortuneBRDF::ExponentFromPerceptual(r), &stats.evals)};
 }
 
-std::string MirrorLobeRuleMethod(const TableSpec&) {
+std::string MirrorLobeRuleMethod(const TableSpec& spec) {
+  if (spec.model == "unity-brdf3")
+    return "fixed rule: one integral over the lobe angle about the mirror direction, the lobe "
+           "and its twin about -m summed, the azimuth in closed form, a panel boundary at the "
+           "texture's saturation (integrate/fixed_rule_lobe.cpp), declared to 6e-7";
   return "fixed rule: one integral over the lobe angle about the mirror direction, the azimuth "
          "in closed form (integrate/fixed_rule_lobe.cpp), declared to 6e-7";
 }

@@ -1,7 +1,8 @@
 // The albedo and albedo-avg tables of Unity's, Ward's and Lafortune's models (issue #16): on
 // request only (QuantityInfo::onRequest of the albedo kinds), each by a fixed rule held to the
-// adaptive integrator. Today unity-brdf1 (integrate/fixed_rule_microfacet.h, FixedRuleNdf::
-// UnityBRDF1); the others are listed in docs/models.md with why they have none yet.
+// adaptive integrator. Today unity-brdf1 and unity-brdf2 (integrate/fixed_rule_microfacet.h,
+// FixedRuleNdf::UnityBRDF1, UnityBRDF2), lafortune and unity-brdf3 (integrate/fixed_rule_lobe.h);
+// the Ward models are listed in docs/models.md with why they have none yet.
 #pragma once
 #include <string>
 #include <vector>
@@ -21,12 +22,13 @@ std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions& opt);
 /// The albedo-avg kind's on-request entries: `M-albedo-avg`, 64 roughness nodes.
 std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions& opt);
 
-/// True when the mirror-lobe rule (integrate/fixed_rule_lobe.h) bakes `spec`: model lafortune,
-/// axes (mu, roughness).
+/// True when the mirror-lobe rule (integrate/fixed_rule_lobe.h) bakes `spec`: model lafortune or
+/// unity-brdf3, axes (mu, roughness).
 bool MirrorLobeRuleApplies(const TableSpec& spec);
 
-/// E at x = (mu, roughness) by the mirror-lobe rule (n = LafortuneBRDF::ExponentFromPerceptual;
-/// at r = 1, n = 0, the limit n -> 0+, docs/models.md); sets stats.errorEstimate to its bound.
+/// E at x = (mu, roughness) by the mirror-lobe rule (lafortune: n = LafortuneBRDF::
+/// ExponentFromPerceptual, at r = 1 the limit n -> 0+; unity-brdf3: FixedRuleUnityBRDF3Albedo at
+/// n = UnitySpecPower(r) / 4; docs/models.md); sets stats.errorEstimate to its bound.
 std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
                                      IntegrationStats& stats);
 
