@@ -40,6 +40,17 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
 /// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
 constexpr double kDielectricRuleBound = 6e-7;
 
+/// Where the ggx-dielectric tables' domain starts (E tables and averages alike): eta >= this
+/// entering, eta' <= 1 / this exiting (quantities/dielectric_albedo.cpp says why: the Fresnel
+/// layer at grazing collapses as eta -> 1).
+constexpr double kDielectricTableEtaMin = 1.1;
+
+/// The tables' domain in words (QuantityInfo::sceneDomain), for the entering or the exit side.
+constexpr const char* DielectricTableDomain(bool exit) {
+  return exit ? "glass seen from inside: eta = 1/ior, ior in [1.1, 3]"
+              : "glass: eta = ior in [1.1, 3]";
+}
+
 /// The smooth interface (alpha = 0): {F(mu, eta), 1 - F(mu, eta)}.
 std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta);
 

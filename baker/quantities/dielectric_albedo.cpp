@@ -41,7 +41,7 @@ const Kind& KindOf(Quantity q) {
 /// ggx-dielectric-albedo-r over [1, 3], `kiln inspect`). Transparent dielectrics against air
 /// start near 1.2 (ice 1.31, water 1.33); 1.1 leaves the layer 0.46 wide. The planner refuses
 /// an ior outside (sceneDomain).
-constexpr double kEtaMin = 1.1;
+constexpr double kEtaMin = kDielectricTableEtaMin;
 
 /// The eta axis of a side: entering [1.1, 3] with nodes denser near its start (sqrt warp: the
 /// Fresnel layer of width sqrt(eta^2 - 1) at grazing), exit [1/3, 1/1.1] linear.
@@ -209,8 +209,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.sceneKind = true;
   q.sceneModel = kModel;
   q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
-  q.sceneDomain = KindOf(Q).exit ? "glass seen from inside: eta = 1/ior, ior in [1.1, 3]"
-                                 : "glass: eta = ior in [1.1, 3]";
+  q.sceneDomain = DielectricTableDomain(KindOf(Q).exit);
   q.readsParams = true;
   if (!KindOf(Q).exit) {  // kiln integrate takes any eta: one command per channel
     q.integrateName = name;

@@ -13,7 +13,7 @@ namespace {
 using namespace quantity_detail;
 
 constexpr const char* kModel = "ggx-dielectric";
-constexpr double kEtaMin = 1.1;  ///< as the E tables (quantities/dielectric_albedo.cpp)
+constexpr double kEtaMin = kDielectricTableEtaMin;
 
 struct Kind {
   Quantity id;
@@ -129,8 +129,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.sceneKind = true;
   q.sceneModel = kModel;
   q.sceneAxes = {{"roughness", "roughness"}, {"eta", "eta"}};
-  q.sceneDomain = KindOf(Q).exit ? "glass seen from inside: eta = 1/ior, ior in [1.1, 3]"
-                                 : "glass: eta = ior in [1.1, 3]";
+  q.sceneDomain = DielectricTableDomain(KindOf(Q).exit);
   q.readsParams = true;
   return q;
 }
