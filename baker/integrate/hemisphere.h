@@ -1,6 +1,7 @@
 // Deterministic directional integrals over the hemisphere of light directions,
 //     E(o) = integral_{H^2} g(o, l) mu_l dl,
-// for a channel-valued g, to an absolute tolerance, in double precision.
+// for a channel-valued g, to a tolerance that is absolute where the integral is at most 1 and
+// relative above (WithRelativeTolerance below), in double precision.
 //
 // Light space (smooth lobes): E = 2 int_0^{pi/2} dtheta_l sin cos int_0^pi dphi g, the factor 2
 // from the mirror symmetry phi -> -phi of isotropic models. The diffuse models bend where
@@ -28,7 +29,7 @@ namespace kiln {
 
 /// Tolerance and panel budget of an integral; stats collect what it cost.
 struct IntegrationOptions {
-  double tol = 1e-9;    ///< absolute tolerance on every channel
+  double tol = 1e-9;    ///< tolerance on every channel: absolute, relative where |E| > 1
   int maxPanels = 400;  ///< per adaptive level
 };
 struct IntegrationStats {
@@ -36,10 +37,45 @@ struct IntegrationStats {
   double errorEstimate = 0;
 };
 
-/// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine).
+/// Runs integral(options, stats) -> Channels<N> to opt.tol absolute where the result is at most
+/// 1 in magnitude and opt.tol relative above. An absolute tolerance on a large integral asks for
+/// more digits than double has (Ward's albedo grows like mu^(-1/2), Duer's like 1 / mu: 7.7e10 at
+/// mu = 1e-12, where 1e-9 absolute is 1e-20 relative and every adaptive level ran to its panel
+/// cap, 20 s per albedo). A first pass with the initial panels of every level only (tol = inf)
+/// estimates the magnitude m; above 1 the tolerance is scaled by it. An estimate far above the
+/// final value (a lobe the first panels overweigh) is redone at the tolerance the value calls for,
+/// so the result never gets a looser tolerance than max(1, |E|) opt.tol. Integrals at most 1 are
+/// integrated exactly as before, at the cost of the first pass's evaluations.
+template <int N, class Integral>
+Channels<N> WithRelativeTolerance(Integral&& integral, const IntegrationOptions& opt,
+                                  IntegrationStats& stats) {
+  auto magnitude = [](const Channels<N>& v) {
+    double m = 0;
+    for (int c = 0; c < N; ++c) m = std::max(m, std::abs(v[c]));
+    return m;
+  };
+  IntegrationOptions first = opt;
+  first.tol = INFINITY;
+  IntegrationStats firstStats;
+  double scale = magnitude(integral(first, firstStats));
+  stats.evals += firstStats.evals;
+  if (!(scale > 1) || !std::isfinite(scale)) return integral(opt, stats);
+  IntegrationOptions scaled = opt;
+  scaled.tol = opt.tol * scale;
+  Channels<N> r = integral(scaled, stats);
+  double needed = std::max(1.0, magnitude(r));
+  if (!(scale <= 2 * needed)) {
+    scaled.tol = opt.tol * needed;
+    r = integral(scaled, stats);
+  }
+  return r;
+}
+
+/// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine), to the absolute
+/// tolerance opt.tol.
 template <int N, class G>
-Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& opt,
-                                IntegrationStats& stats) {
+Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOptions& opt,
+                                        IntegrationStats& stats) {
   Vec3 wo = ViewDirection(mu_o);
   double theta_o = std::acos(Clamp(mu_o, 0.0, 1.0));
   double thetaBreaks[3] = {0, theta_o, Pi / 2};
@@ -67,6 +103,18 @@ Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& op
   return r;
 }
 
+/// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine), to opt.tol
+/// absolute, relative where |E| > 1 (WithRelativeTolerance).
+template <int N, class G>
+Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& opt,
+                                IntegrationStats& stats) {
+  return WithRelativeTolerance<N>(
+      [&](const IntegrationOptions& o, IntegrationStats& st) {
+        return IntegrateLightSpaceAbsolute<N>(mu_o, g, o, st);
+      },
+      opt, stats);
+}
+
 /// Insertion sort for the handful of panel boundaries (std::sort trips GCC 12's -Warray-bounds).
 inline void SortSmall(double* x, int n) {
   for (int i = 1; i < n; ++i)
@@ -84,10 +132,11 @@ inline double HorizonCutCosPhi(double mu_o, double sinTheta_o, PolarParam h) {
 }
 
 /// E(o) over half-vector space for a specular model M (kDomain == HalfVector):
-/// weights(const HalfSample&, double rho) -> Channels<N>, where rho = model.HalfWeight(sample).
+/// weights(const HalfSample&, double rho) -> Channels<N>, where rho = model.HalfWeight(sample);
+/// to the absolute tolerance opt.tol.
 template <int N, class M, class W>
-Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
-                                const IntegrationOptions& opt, IntegrationStats& stats) {
+Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights,
+                                        const IntegrationOptions& opt, IntegrationStats& stats) {
   mu_o = Clamp(mu_o, 0.0, 1.0);
   Vec3 wo = ViewDirection(mu_o);
   double sinTheta_o = wo.x, theta_o = std::acos(mu_o);
@@ -177,6 +226,18 @@ Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
   Channels<N> r = IntegrateAdaptive<N>(outer, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
   stats.errorEstimate = err;
   return r;
+}
+
+/// E(o) over half-vector space for a specular model M (IntegrateHalfVectorAbsolute), to opt.tol
+/// absolute, relative where |E| > 1 (WithRelativeTolerance).
+template <int N, class M, class W>
+Channels<N> IntegrateHalfVector(const M& model, double mu_o, W&& weights,
+                                const IntegrationOptions& opt, IntegrationStats& stats) {
+  return WithRelativeTolerance<N>(
+      [&](const IntegrationOptions& o, IntegrationStats& st) {
+        return IntegrateHalfVectorAbsolute<N>(model, mu_o, weights, o, st);
+      },
+      opt, stats);
 }
 
 }  // namespace kiln
