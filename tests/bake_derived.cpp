@@ -30,8 +30,9 @@ bool SameTexels(const Table& a, const Table& b) {
 
 }  // namespace
 
-TEST_CASE("A microfacet or sheen albedo derived from its dfg's node values has its own rule's texels",
-          "[bake][derived]") {
+TEST_CASE(
+    "A microfacet or sheen albedo derived from its dfg's node values has its own rule's texels",
+    "[bake][derived]") {
   std::vector<std::string> models = CatalogueMicrofacetModels();
   for (const std::string& m : CatalogueSheenModels()) models.push_back(m);  // a copy of DFV
   for (const std::string& model : models) {

@@ -1,5 +1,5 @@
-// Specification of the false-colour PNG preview: a valid PNG (checked by a little reader of its own,
-// the image data inflated by zlib), one viridis panel per channel.
+// Specification of the false-colour PNG preview: a valid PNG (checked by a little reader of its
+// own, the image data inflated by zlib), one viridis panel per channel.
 #include <catch2/catch.hpp>
 
 #include <unistd.h>

@@ -145,8 +145,9 @@ void readAttributes(const Imf::Header& h, Table& table) {
     a.axis.size = requireInt(h, prefix + "size");
     const std::string warp = requireString(h, prefix + "warp");
     if (!warpFromName(warp.c_str(), a.axis.warp))
-      throw Refusal(prefix + "warp is '" + warp +
-                    "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta");
+      throw Refusal(
+          prefix + "warp is '" + warp +
+          "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta");
     std::string axisIssue = axisProblem(a.axis);
     if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
     if (!axisIssue.empty())
