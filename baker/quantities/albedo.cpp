@@ -15,7 +15,7 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
     return Shell(Quantity::Albedo, name, model, {"E_rho", "E_rho2"},
                  {"directional albedo, rho^1 part", "rho^2 part: E = rho E_rho + rho^2 E_rho2"},
                  std::move(axes));
-  if (IsWardModel(model))  // E_sqrt_mu, E_mu: E is unbounded at mu = 0 (ward_tables.h)
+  if (IsWardModel(model))  // E_sqrt_mu, E_mu, E_layer: stored forms of E (ward_tables.h)
     return Shell(Quantity::Albedo, name, model, {WardAlbedoChannel(model)},
                  {WardAlbedoChannelMeaning(model)}, std::move(axes));
   return Shell(Quantity::Albedo, name, model, {"E"}, {"directional albedo E(mu) at rho = 1, F = 1"},
