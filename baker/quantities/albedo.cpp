@@ -3,6 +3,7 @@
 #include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
 #include "baker/quantities/unity_tables.h"
+#include "baker/quantities/ward_tables.h"
 
 namespace kiln {
 namespace {
@@ -14,6 +15,9 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
     return Shell(Quantity::Albedo, name, model, {"E_rho", "E_rho2"},
                  {"directional albedo, rho^1 part", "rho^2 part: E = rho E_rho + rho^2 E_rho2"},
                  std::move(axes));
+  if (IsWardModel(model))  // E_sqrt_mu, E_mu, E_layer: stored forms of E (ward_tables.h)
+    return Shell(Quantity::Albedo, name, model, {WardAlbedoChannel(model)},
+                 {WardAlbedoChannelMeaning(model)}, std::move(axes));
   return Shell(Quantity::Albedo, name, model, {"E"}, {"directional albedo E(mu) at rho = 1, F = 1"},
                std::move(axes));
 }
@@ -46,12 +50,13 @@ std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
 /// model (light space) and the sheen lobes (light space, integrate/fixed_rule_sheen.h).
 bool AlbedoUsesFixedRule(const TableSpec& spec) {
   return MicrofacetFixedRuleApplies(spec) || DiffuseFixedRuleApplies(spec) ||
-         MirrorLobeRuleApplies(spec) || SheenFixedRuleApplies(spec);
+         MirrorLobeRuleApplies(spec) || SheenFixedRuleApplies(spec) || WardRuleApplies(spec);
 }
 
 /// Microfacet at F = 1: A + B of the microfacet fixed rule is the albedo. Diffuse: the diffuse
 /// fixed rule.
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (WardRuleApplies(spec)) return WardRuleAt(spec, x, stats);
   if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleAt(spec, x, stats);
   if (SheenFixedRuleApplies(spec)) return SheenFixedRuleAt(spec, x, stats);
   if (DiffuseFixedRuleApplies(spec)) return DiffuseFixedRuleAt(spec, x, stats);
@@ -61,6 +66,7 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
 
 /// The lookup-error search's form of FixedRule (DiffuseSearchRuleAt, MicrofacetSearchRuleAt).
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (WardRuleApplies(spec)) return WardRuleAt(spec, x, stats, true);  // the bake's own rule
   if (MirrorLobeRuleApplies(spec)) {
     std::vector<double> v = MirrorLobeRuleAt(spec, x, stats);
     stats.errorEstimate = 0;  // the bake's own rule
@@ -73,6 +79,7 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
+  if (WardRuleApplies(spec)) return WardRuleMethod(spec);
   if (MirrorLobeRuleApplies(spec)) return MirrorLobeRuleMethod(spec);
   if (SheenFixedRuleApplies(spec)) return SheenFixedRuleMethod(spec);
   return DiffuseFixedRuleApplies(spec) ? DiffuseFixedRuleMethod(spec)
@@ -102,6 +109,14 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
                              IntegrationStats& stats) {
   IntegrationOptions opt;
   opt.tol = tol;
+  if (IsWardModel(spec.model)) {
+    // m(mu) E (ward_tables.h); at mu = 0 the limit mu -> 0+, read at mu = 1e-12 (E(0) is the
+    // horizon convention's 0).
+    const double mu = std::max(x[0], 1e-12);
+    RhoParts e = DirectionalAlbedo(ModelInDomain(spec.model, x[1]), mu, opt, stats);
+    return {WardStoredFactorOf(spec.model, mu) * e.lin +
+            WardStoredOffsetOf(spec.model, x[0], std::clamp(x[1], 0.0, 1.0))};
+  }
   return RhoChannels(spec, DirectionalAlbedo(ModelInDomain(spec.model, x[1]), x[0], opt, stats));
 }
 

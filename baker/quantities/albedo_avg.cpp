@@ -2,6 +2,7 @@
 // E_avg_rho, E_avg_rho2 for a model with a rho^2 term.
 #include "baker/quantities/common.h"
 #include "baker/quantities/unity_tables.h"
+#include "baker/quantities/ward_tables.h"
 
 namespace kiln {
 namespace {
@@ -63,15 +64,18 @@ bool OverRoughness(const TableSpec& spec) {
 }
 
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (WardRuleApplies(spec)) return WardRuleAt(spec, x, stats);  // over E, not the stored m E
   return AverageFixedRule(AlbedoSpecFor(spec), x, stats);
 }
 
 /// The lookup-error search's form: the same mu rule over the albedo's search rule.
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  if (WardRuleApplies(spec)) return WardRuleAt(spec, x, stats, true);
   return AverageFixedRule(AlbedoSpecFor(spec), x, stats, true);
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
+  if (WardRuleApplies(spec)) return WardRuleMethod(spec);
   return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
 
