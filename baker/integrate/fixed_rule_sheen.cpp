@@ -107,6 +107,31 @@ std::vector<double> ClampSwitches(const CharlieSmithSheen& m, double mu_o) {
   return roots;
 }
 
+/// Lambda(mu_o) of charlie-smith (0 for the others): constant over a texel.
+template <class M>
+double LambdaOf(const M& m, double mu_o) {
+  if constexpr (std::is_same_v<M, CharlieSmithSheen>) return CharlieSheenLambda(mu_o, m.alpha);
+  return 0;
+}
+
+/// The model's visibility V(mu_o, mu_l) as its Parts computes it (lambdaO = LambdaOf(mu_o)).
+template <class M>
+double Visibility(const M& m, double mu_o, double mu_l, double lambdaO) {
+  if constexpr (std::is_same_v<M, CharlieSmithSheen>) {
+    double inv = 4 * mu_o * mu_l * (1 + lambdaO + CharlieSheenLambda(mu_l, m.alpha));
+    return inv > 1 ? 1 / inv : 1.0;
+  } else {
+    return NeubeltVisibility(mu_o, mu_l);
+  }
+}
+
+/// The model's NDF from sin^2(theta_h).
+template <class M>
+double Ndf(const M& m, double sin2h) {
+  if constexpr (std::is_same_v<M, AshikhminVelvet>) return VelvetD(m.alpha, sin2h);
+  return CharlieD(m.alpha, sin2h);
+}
+
 template <class M>
 double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
@@ -142,13 +167,22 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
     sinPhi[j] = std::sin(psi);
     ws[j] = sw[j] * e;
   }
+  // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
+  // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
+  // once per node. The same products as the model's Parts (D * V), so the same bits.
+  const double lambdaO = LambdaOf(m, mu_o);
   double sum = 0;
   for (size_t i = 0; i < tx.size(); ++i) {
     double e = std::exp(tx[i]), mu_l = Clamp(e - c, 0.0, 1.0);
+    if (!(mu_o + mu_l > 0)) continue;
     double sinT = std::sqrt(std::max(0.0, 1 - mu_l * mu_l));
+    const double v = Visibility(m, mu_o, mu_l, lambdaO);
     double row = 0;
-    for (size_t j = 0; j < sx.size(); ++j)
-      row += ws[j] * m.Parts(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], mu_l}).lin;
+    for (size_t j = 0; j < sx.size(); ++j) {
+      bool ok;
+      double s2 = HalfSin2(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], mu_l}, &ok);
+      row += ws[j] * (ok ? Ndf(m, s2) * v : 0);
+    }
     sum += 2 * mu_l * tw[i] * e * row;
   }
   if (evals) *evals += static_cast<long long>(tx.size() * sx.size());
