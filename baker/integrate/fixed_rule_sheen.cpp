@@ -20,18 +20,24 @@
 // most 4 units in t and s, 12 x 8 Gauss-Legendre nodes per panel.
 //  4. the mirror direction l = (-sin theta_o, 0, mu_o) (mu_l = mu_o, psi = 0), where h = n:
 //     sin(theta_h)^(1/alpha) ~ |theta_h|^(1/alpha), not smooth unless 1/alpha is an even integer
-//     (a cone |theta_h| at r = 1): panels graded geometrically (ratio 4, mirrorPanels of them)
-//     towards mu_l = mu_o from both sides and towards psi = 0. The velvet NDF, whose
-//     exp(-cot^2 / alpha^2) is smooth but not analytic at theta_h = 0, takes the same panels.
+//     (a cone |theta_h| at r = 1): panels graded geometrically (ratio 4, mirrorPanels = 3 of
+//     them) towards mu_l = mu_o from both sides, and (psiPanels = 2) towards psi = 0, which also
+//     take the cone of item 1 at mu_o -> 0. The velvet NDF, whose exp(-cot^2 / alpha^2) is
+//     smooth but not analytic at theta_h = 0, takes the same panels.
 //  5. charlie-smith: its Lambda switches form at mu = 1/2 (C1 only): a boundary at mu_l = 1/2;
-//     Lambda(mu_l) = exp(2 L(1/2) - L(1 - mu_l)) has (1 - mu_l)^c (c ~ 0.17-0.2) at mu_l = 1:
-//     panels graded towards mu_l = 1; the clamp V <= 1 is a kink where 4 mu_o mu_l (1 +
-//     Lambda(mu_o) + Lambda(mu_l)) = 1, a condition on mu_l alone: boundaries at its roots
-//     (ClampSwitches; one root for every mu_o > 0 and alpha measured, none at mu_o = 0 where V =
-//     1).
-// At most 8640 integrand evaluations per texel (mu_o -> 0, where t and s span 16 units), fewer
-// at larger mu_o. Measured against adaptive quadrature at 1e-10 (tests/
-// integrate_fixed_rule_sheen.cpp prints the worst): below 3e-7 on 15 mu x 8 r per model.
+//     the clamp V <= 1 is a kink where 4 mu_o mu_l (1 + Lambda(mu_o) + Lambda(mu_l)) = 1, a
+//     condition on mu_l alone: boundaries at its roots (ClampSwitches; one root for every
+//     mu_o > 0 and alpha measured, none at mu_o = 0 where V = 1). Lambda(mu_l) =
+//     exp(2 L(1/2) - L(1 - mu_l)) has a (1 - mu_l)^c term at mu_l = 1, but there Lambda(mu_l) <
+//     1e-2 next to 1 + Lambda(mu_o): no grading towards mu_l = 1 is needed (measured: the worst
+//     error on the test's grid is the same with and without 3 graded panels there).
+// Cost: V depends on (mu_o, mu_l) alone and is evaluated once per row of mu_l (charlie-smith's
+// two Lambdas included), the NDF once per node. At most 5760 integrand evaluations per texel
+// (6912 for charlie-smith; at mu_o -> 0, where t and s span 16 units), fewer at larger mu_o; the
+// tables' texels average 2652 (charlie), 3161 (charlie-smith), 2622 (velvet) (kiln bake: the
+// manifest's integrand_evaluations over texels). Measured against adaptive
+// quadrature at 1e-10 (tests/integrate_fixed_rule_sheen.cpp prints the worst): below 3e-7 on
+// 13 mu x 8 r per model.
 // Also checked against the closed forms at mu_o = 0 (E(0) = 2 int D sin^2(theta) dtheta: a
 // Wallis integral for Charlie, 1/2 + 4 alpha/sqrt(pi) over (1 + 4 alpha^2) for the velvet),
 // where the adaptive reference fails below r ~ 0.03 for the velvet (it misses the spike of
@@ -107,6 +113,31 @@ std::vector<double> ClampSwitches(const CharlieSmithSheen& m, double mu_o) {
   return roots;
 }
 
+/// Lambda(mu_o) of charlie-smith (0 for the others): constant over a texel.
+template <class M>
+double LambdaOf(const M& m, double mu_o) {
+  if constexpr (std::is_same_v<M, CharlieSmithSheen>) return CharlieSheenLambda(mu_o, m.alpha);
+  return 0;
+}
+
+/// The model's visibility V(mu_o, mu_l) as its Parts computes it (lambdaO = LambdaOf(mu_o)).
+template <class M>
+double Visibility(const M& m, double mu_o, double mu_l, double lambdaO) {
+  if constexpr (std::is_same_v<M, CharlieSmithSheen>) {
+    double inv = 4 * mu_o * mu_l * (1 + lambdaO + CharlieSheenLambda(mu_l, m.alpha));
+    return inv > 1 ? 1 / inv : 1.0;
+  } else {
+    return NeubeltVisibility(mu_o, mu_l);
+  }
+}
+
+/// The model's NDF from sin^2(theta_h).
+template <class M>
+double Ndf(const M& m, double sin2h) {
+  if constexpr (std::is_same_v<M, AshikhminVelvet>) return VelvetD(m.alpha, sin2h);
+  return CharlieD(m.alpha, sin2h);
+}
+
 template <class M>
 double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
@@ -125,12 +156,11 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
   }
   if constexpr (std::is_same_v<M, CharlieSmithSheen>) {
     addMu(0.5);
-    for (int k = 1; k <= opt.mirrorPanels; ++k) addMu(1 - std::pow(0.25, k));
     for (double mu_l : ClampSwitches(m, mu_o)) addMu(mu_l);
   }
   auto S = [&](double psi) { return std::log(psi + c2); };
   std::vector<double> sBreaks = {S(0), S(Pi)};
-  for (int k = 1; k <= opt.mirrorPanels; ++k) sBreaks.push_back(S(Pi * std::pow(0.25, k)));
+  for (int k = 1; k <= opt.psiPanels; ++k) sBreaks.push_back(S(Pi * std::pow(0.25, k)));
 
   std::vector<double> tx, tw, sx, sw;
   PanelRule(tBreaks, opt.tNodes, opt.tPanel, tx, tw);
@@ -142,13 +172,22 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
     sinPhi[j] = std::sin(psi);
     ws[j] = sw[j] * e;
   }
+  // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
+  // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
+  // once per node. The same products as the model's Parts (D * V), so the same bits.
+  const double lambdaO = LambdaOf(m, mu_o);
   double sum = 0;
   for (size_t i = 0; i < tx.size(); ++i) {
     double e = std::exp(tx[i]), mu_l = Clamp(e - c, 0.0, 1.0);
+    if (!(mu_o + mu_l > 0)) continue;
     double sinT = std::sqrt(std::max(0.0, 1 - mu_l * mu_l));
+    const double v = Visibility(m, mu_o, mu_l, lambdaO);
     double row = 0;
-    for (size_t j = 0; j < sx.size(); ++j)
-      row += ws[j] * m.Parts(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], mu_l}).lin;
+    for (size_t j = 0; j < sx.size(); ++j) {
+      bool ok;
+      double s2 = HalfSin2(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], mu_l}, &ok);
+      row += ws[j] * (ok ? Ndf(m, s2) * v : 0);
+    }
     sum += 2 * mu_l * tw[i] * e * row;
   }
   if (evals) *evals += static_cast<long long>(tx.size() * sx.size());

@@ -29,20 +29,31 @@ std::vector<AxisSpec> DefaultAxes(const std::string& model) {
   return {mu, DefaultRoughnessAxis(model)};
 }
 
+/// The sheen models' specs in (inDefault) or out of the default catalogue.
+std::vector<TableSpec> SheenSpecs(bool inDefault) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueSheenModels()) {
+    TableSpec s = MakeSpec(m, DefaultAxes(m));
+    if (SheenTableInDefaultCatalogue(s.name) == inDefault) out.push_back(s);
+  }
+  return out;
+}
+
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
   for (const std::string& m : CatalogueMicrofacetModels())
     out.push_back(MakeSpec(m, DefaultAxes(m)));
   for (const std::string& m : CatalogueDiffuseModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const TableSpec& s : SheenSpecs(true)) out.push_back(s);
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables, too slow for the
-/// default catalogue's budget today (README "Sheen tables"), and the Unity / Lafortune ones
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
+/// catalogue's budget today (SheenTableInDefaultCatalogue), and the Unity / Lafortune ones
 /// (unity_tables.h).
 std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
   std::vector<TableSpec> out = OnRequestAlbedoTables(opt);
-  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const TableSpec& s : SheenSpecs(false)) out.push_back(s);
   return out;
 }
 

@@ -27,20 +27,27 @@ std::vector<AxisSpec> DefaultAxes(const std::string& model) {
   return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
 }
 
+/// The sheen models' specs in (inDefault) or out of the default catalogue.
+std::vector<TableSpec> SheenSpecs(bool inDefault) {
+  std::vector<TableSpec> out;
+  for (const std::string& m : CatalogueSheenModels()) {
+    TableSpec s = MakeSpec(m, DefaultAxes(m));
+    if (SheenTableInDefaultCatalogue(s.name) == inDefault) out.push_back(s);
+  }
+  return out;
+}
+
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
   for (const std::string& m : CatalogueMicrofacetModels())
     out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const TableSpec& s : SheenSpecs(true)) out.push_back(s);
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables, too slow for the
-/// default catalogue's budget today (README "Sheen tables").
-std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
-  std::vector<TableSpec> out;
-  for (const std::string& m : CatalogueSheenModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
-  return out;
-}
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
+/// catalogue's budget today (SheenTableInDefaultCatalogue; README "Tables on request").
+std::vector<TableSpec> OnRequest(const CatalogueOptions&) { return SheenSpecs(false); }
 
 /// The microfacet fixed rules, and the sheen rule for a sheen lobe's one channel: the same
 /// function as its albedo's (SheenFixedRuleAt), so the two tables hold the same bits.

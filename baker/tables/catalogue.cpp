@@ -52,6 +52,14 @@ const std::vector<std::string>& CatalogueSheenModels() {
   return models;
 }
 
+bool SheenTableInDefaultCatalogue(const std::string& name) {
+  static const char* const kDefault[] = {"charlie-dfg", "charlie-albedo", "ashikhmin-velvet-dfg",
+                                         "ashikhmin-velvet-albedo", "ashikhmin-velvet-albedo-avg"};
+  for (const char* n : kDefault)
+    if (name == n) return true;
+  return false;
+}
+
 namespace {
 bool IsCatalogueSheen(const std::string& model) {
   for (const std::string& m : CatalogueSheenModels())

@@ -28,9 +28,14 @@ TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt = 
 /// The models the catalogue bakes its per-model tables for (quantity descriptors iterate them).
 const std::vector<std::string>& CatalogueMicrofacetModels();
 const std::vector<std::string>& CatalogueDiffuseModels();
-/// The sheen models whose default axes are chosen here (their tables are not in the default
-/// catalogue yet: no validated fixed rule, docs/models.md "Sheen models").
+/// The sheen models whose default axes are chosen here (docs/models.md "Sheen tables").
 const std::vector<std::string>& CatalogueSheenModels();
+
+/// Whether a sheen table (`M-dfg`, `M-albedo`, `M-albedo-avg` of a CatalogueSheenModels model)
+/// is in the default catalogue; the others are on request. charlie's dfg and albedo and the
+/// velvet's three fit the sheen tables' share of the catalogue's time; charlie-albedo-avg and
+/// charlie-smith's do not yet (README "Tables on request").
+bool SheenTableInDefaultCatalogue(const std::string& name);
 
 /// The catalogue's default axes (size and warp chosen per model; quantity descriptors choose
 /// the rest, baker/quantities/).
