@@ -72,6 +72,22 @@ TEST_CASE("dielectricAlbedoClosedForm: F and 1 - F at roughness 0, continuous as
     }
 }
 
+TEST_CASE(
+    "dielectricAlbedoClosedForm: under total internal reflection it stays at F = 1 as r -> 0+",
+    "[runtime][stored][dielectric]") {
+  // A table's corner cell (0 < r < its first node) interpolates between the r = 0 row (g = F) and
+  // that node: g must not carry a layer of its own there. mu / alpha >= 100, where GGX's albedo
+  // dip (h) has faded: g_R within 1e-3 of F = 1 and g_T of 0, for every exit eta.
+  for (double eta : {1 / 3.0, 0.5, 0.7, 1 / 1.1})
+    for (double mu : {1e-6, 1e-4, 1e-2, 0.2})
+      for (double r : {1e-4, 1e-3}) {
+        if (mu < 100 * r * r || !(mu < 0.9 * std::sqrt(1 - eta * eta))) continue;
+        INFO("mu " << mu << " r " << r << " eta " << eta);
+        CHECK(dielectricAlbedoClosedForm(mu, r, eta, false) == Approx(1.0).margin(1e-3));
+        CHECK(dielectricAlbedoClosedForm(mu, r, eta, true) == Approx(0.0).margin(1e-3));
+      }
+}
+
 TEST_CASE("ggx-dielectric residual tables: a lookup is the residual plus the closed form",
           "[runtime][stored][dielectric]") {
   struct Case {
