@@ -88,6 +88,24 @@ TEST_CASE(
       }
 }
 
+TEST_CASE("dielectricAlbedoClosedForm: continuous in eta at mu = 0 and high roughness",
+          "[runtime][stored][dielectric]") {
+  // sqrt(mu^2 + alpha^2) crosses the critical cosine as eta varies: the softening must not vanish
+  // there (a jump of 0.59 in g_T between eta 0.38 and 0.39 at r = 0.96 with delta = 4 alpha mu).
+  for (double r : {0.5, 0.8, 0.96})
+    for (bool t : {false, true}) {
+      double prev = dielectricAlbedoClosedForm(0.0, r, 1 / 3.0, t), worst = 0;
+      for (int i = 1; i <= 2000; ++i) {
+        const double eta = 1 / 3.0 + (1 / 1.1 - 1 / 3.0) * i / 2000;
+        const double g = dielectricAlbedoClosedForm(0.0, r, eta, t);
+        worst = std::max(worst, std::abs(g - prev));
+        prev = g;
+      }
+      INFO("r " << r << " transmit " << t);
+      CHECK(worst < 0.01);
+    }
+}
+
 TEST_CASE("ggx-dielectric residual tables: a lookup is the residual plus the closed form",
           "[runtime][stored][dielectric]") {
   struct Case {
