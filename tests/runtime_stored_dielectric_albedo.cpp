@@ -72,6 +72,40 @@ TEST_CASE("dielectricAlbedoClosedForm: F and 1 - F at roughness 0, continuous as
     }
 }
 
+TEST_CASE(
+    "dielectricAlbedoClosedForm: under total internal reflection it stays at F = 1 as r -> 0+",
+    "[runtime][stored][dielectric]") {
+  // A table's corner cell (0 < r < its first node) interpolates between the r = 0 row (g = F) and
+  // that node: g must not carry a layer of its own there. mu / alpha >= 100, where GGX's albedo
+  // dip (h) has faded: g_R within 1e-3 of F = 1 and g_T of 0, for every exit eta.
+  for (double eta : {1 / 3.0, 0.5, 0.7, 1 / 1.1})
+    for (double mu : {1e-6, 1e-4, 1e-2, 0.2})
+      for (double r : {1e-4, 1e-3}) {
+        if (mu < 100 * r * r || !(mu < 0.9 * std::sqrt(1 - eta * eta))) continue;
+        INFO("mu " << mu << " r " << r << " eta " << eta);
+        CHECK(dielectricAlbedoClosedForm(mu, r, eta, false) == Approx(1.0).margin(1e-3));
+        CHECK(dielectricAlbedoClosedForm(mu, r, eta, true) == Approx(0.0).margin(1e-3));
+      }
+}
+
+TEST_CASE("dielectricAlbedoClosedForm: continuous in eta at mu = 0 and high roughness",
+          "[runtime][stored][dielectric]") {
+  // sqrt(mu^2 + alpha^2) crosses the critical cosine as eta varies: the softening must not vanish
+  // there (a jump of 0.59 in g_T between eta 0.38 and 0.39 at r = 0.96 with delta = 4 alpha mu).
+  for (double r : {0.5, 0.8, 0.96})
+    for (bool t : {false, true}) {
+      double prev = dielectricAlbedoClosedForm(0.0, r, 1 / 3.0, t), worst = 0;
+      for (int i = 1; i <= 2000; ++i) {
+        const double eta = 1 / 3.0 + (1 / 1.1 - 1 / 3.0) * i / 2000;
+        const double g = dielectricAlbedoClosedForm(0.0, r, eta, t);
+        worst = std::max(worst, std::abs(g - prev));
+        prev = g;
+      }
+      INFO("r " << r << " transmit " << t);
+      CHECK(worst < 0.01);
+    }
+}
+
 TEST_CASE("ggx-dielectric residual tables: a lookup is the residual plus the closed form",
           "[runtime][stored][dielectric]") {
   struct Case {

@@ -20,10 +20,18 @@ namespace kiln {
 std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
                                        const IntegrationOptions& opt, IntegrationStats& stats);
 
-/// Node counts of the fixed rule: Gauss nodes per outer (theta_m) and inner (phi_m) panel.
+/// Node counts of the fixed rule (dielectric_albedo.cpp, "The fixed rule"). Gauss nodes of an
+/// outer (v) panel by its weight class, the bound W of its share of E: outerNodes[k] for the
+/// first k with W > outerWeight[k], outerNodes[3] below them all; of an inner (phi_m) panel by
+/// its width in radians against innerWidth. Then the ratios of the geometric panel sequences:
+/// the reflected ray's masking layer (maskingRatio), the grazing view's sweep (grazingRatio),
+/// the GGX tail in tan theta_m (tailRatio). The adaptive reference keeps ratio 4 everywhere.
 struct DielectricRuleOptions {
-  int outerNodes = 12;
-  int innerNodes = 12;
+  int outerNodes[4] = {24, 24, 24, 24};
+  double outerWeight[3] = {1e-2, 1e-4, 1e-6};
+  int innerNodes[4] = {16, 16, 16, 16};
+  double innerWidth[3] = {1, 0.1, 0.02};
+  double maskingRatio = 4, grazingRatio = 4, tailRatio = 4;
 };
 
 /// The bake's node counts (dielectric_albedo.cpp, kTuned).

@@ -123,6 +123,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
+  q.fixedRuleVersion = "3";  // E by the graded rule (integrate/dielectric_albedo.cpp)
   q.evaluate = Evaluate;
   q.smoothLimit = SmoothLimit;
   q.method = Method;

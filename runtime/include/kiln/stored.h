@@ -152,7 +152,8 @@ inline double dielectricFresnelSoft(double mu, double eta, double delta) {
 /// its E_R (transmit false) or E_T (transmit true) against, at view cosine mu, perceptual
 /// roughness r (clamped to [0, 1]) and index eta = inside / outside (> 1 entering, < 1 exit):
 ///     F_s = dielectricFresnelSoft(sqrt(mu^2 + alpha^2), eta, delta),
-///     delta = 4 alpha mu_c, mu_c = sqrt(1 - eta^2), for eta < 1 (0 for eta >= 1),
+///     delta = 4 alpha sqrt(mu^2 + alpha^2) for eta < 1 (4 alpha mu_c at the critical cosine
+///     mu_c = sqrt(1 - eta^2); 0 for eta >= 1),
 ///     g_R = F_s h(mu / alpha) / (1 + 20 alpha),   g_T = 1 - F_s,
 /// h as in fresnelAlbedoClosedForm, alpha = max(r^2, 1e-12) for r > 0; at r = 0 exactly the
 /// smooth interface, g_R = F(mu, eta), g_T = 1 - F(mu, eta) (a residual of 0 there). F_s
@@ -169,8 +170,14 @@ inline double dielectricAlbedoClosedForm(double mu, double r, double eta, bool t
     return transmit ? 1.0 - f : f;
   }
   const double alpha = std::max(rc * rc, 1e-12);
-  const double delta = eta < 1.0 ? 4.0 * alpha * std::sqrt((1.0 - eta) * (1.0 + eta)) : 0.0;
-  const double f = dielectricFresnelSoft(std::sqrt(m * m + alpha * alpha), eta, delta);
+  // delta = 4 alpha mu_s, mu_s = sqrt(mu^2 + alpha^2) the cosine F_s is taken at: 4 alpha mu_c at
+  // the kink mu_s = mu_c; under total internal reflection w ~ delta / (2 sqrt|q|) then vanishes
+  // faster than mu_s, so F_s stays ~ 1 - O(alpha / eta^2) down to mu = 0 instead of dipping to
+  // ~0.46 over mu < ~20 alpha / eta^2, a layer the r = 0 row of a table cannot hold (4 alpha mu_c
+  // there: lookup error 0.77 in the corner cell); and delta > 0 wherever mu_s can reach mu_c.
+  const double muS = std::sqrt(m * m + alpha * alpha);
+  const double delta = eta < 1.0 ? 4.0 * alpha * muS : 0.0;
+  const double f = dielectricFresnelSoft(muS, eta, delta);
   if (transmit) return 1.0 - f;
   const double s = m / alpha;
   const double h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
