@@ -28,7 +28,12 @@
 //   texel from the previous one's solution scaled by the ratio of the alphas; then each
 //   roughness column from its first texel towards grazing, each from its neighbour's solution,
 //   the columns in parallel (the same bits for any thread count). Two Nelder-Mead runs of at
-//   most maxIterations steps (the second from the first's result frees a collapsed simplex).
+//   most maxIterations steps (the second from the first's result frees a collapsed simplex),
+//   then a free-frame stage of at most frameSteps: the frame's rotation about y as a fourth
+//   parameter (the full family of M^-1 = [[a, 0, c], [0, 1, 0], [b, 0, d]] up to scale), from
+//   the three-parameter result, which the simplex keeps as a vertex: it cannot lose. The
+//   average direction is a good frame for the search to start from, not the best one: the
+//   stage halves the fit error at mid views (docs/models.md "LTC").
 // - The declared error is measured independently of the objective: L1 = integral |f - D| over
 //   the sphere (at most 2: two disjoint densities), by the paper's MIS of the lobe's proposal
 //   and the fitted LTC's own samples, the norm from the same lobe samples (LtcFitError).
@@ -83,13 +88,18 @@ Vec3 Cross(Vec3 a, Vec3 b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-/// The parameters of the Nelder-Mead search: (ln m11, ln m22, m13 / m11).
-LtcFrameParams FromSearch(const double* x, bool isotropic, Vec3 z) {
+/// The parameters of the Nelder-Mead search: (ln m11, ln m22, m13 / m11) and, in the free-frame
+/// stage, x[3] = the frame's rotation about y (radians) from the lobe's average direction z.
+LtcFrameParams FromSearch(const double* x, int dim, bool isotropic, Vec3 z) {
   LtcFrameParams p;
   p.z = z;
   p.m11 = std::exp(x[0]);
   p.m22 = isotropic ? p.m11 : std::exp(x[1]);
   p.m13 = isotropic ? 0 : x[2] * p.m11;
+  if (dim == 4) {
+    double c = std::cos(x[3]), s = std::sin(x[3]);
+    p.z = Vec3{z.x * c + z.z * s, 0, z.z * c - z.x * s};
+  }
   return p;
 }
 
@@ -215,7 +225,7 @@ Vec3 LtcMatrix::Sample(double u1, double u2) const {
 double NelderMead(const std::function<double(const double*)>& f, int dim, double* x, double step,
                   int maxIter, double tol) {
   const int n = dim;
-  double s[4][3] = {}, v[4] = {};
+  double s[5][4] = {}, v[5] = {};
   for (int i = 0; i <= n; ++i) {
     for (int j = 0; j < n; ++j) s[i][j] = x[j] + (i == j + 1 ? step : 0.0);
     v[i] = f(s[i]);
@@ -230,10 +240,10 @@ double NelderMead(const std::function<double(const double*)>& f, int dim, double
   for (int it = 0; it < maxIter; ++it) {
     order();
     if (std::fabs(v[n] - v[0]) <= tol * (std::fabs(v[0]) + 1e-300)) break;
-    double c[3] = {0, 0, 0};
+    double c[4] = {0, 0, 0, 0};
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) c[j] += s[i][j] / n;
-    double r[3], e[3], k[3];
+    double r[4], e[4], k[4];
     for (int j = 0; j < n; ++j) r[j] = c[j] + (c[j] - s[n][j]);
     double fr = f(r);
     if (fr < v[0]) {
@@ -357,8 +367,9 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   auto pw = [p](double v) { return p == 2 ? v * v : v * v * v; };
   // integral |f - D|^p = integral over the lobe's support (|f - D|^p - D^p) + integral D^p, the
   // first by the lobe's points, the second as the LTC's expectation of D^(p-1) by its own points.
+  int dim = isotropic ? 1 : 3;
   auto objective = [&](const double* x) {
-    LtcMatrix mt = LtcMatrix::From(FromSearch(x, isotropic, z));
+    LtcMatrix mt = LtcMatrix::From(FromSearch(x, dim, isotropic, z));
     double sum = 0;
     for (const Point& q : pts) {
       double d = mt.Eval(q.l);
@@ -373,14 +384,23 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
     }
     return sum + own / (double(m) * m);
   };
-  double x[3] = {std::log(std::max(start.m11, 1e-9)), std::log(std::max(start.m22, 1e-9)),
-                 start.m13 / std::max(start.m11, 1e-9)};
+  double x[4] = {std::log(std::max(start.m11, 1e-9)), std::log(std::max(start.m22, 1e-9)),
+                 start.m13 / std::max(start.m11, 1e-9), 0};
   LtcTexel t;
   // Nelder-Mead, then once more from its result (a restart frees a collapsed simplex).
-  NelderMead(objective, isotropic ? 1 : 3, x, opt.step, opt.maxIterations, opt.tolerance);
-  t.l3 =
-      NelderMead(objective, isotropic ? 1 : 3, x, opt.step / 2, opt.maxIterations, opt.tolerance);
-  t.params = FromSearch(x, isotropic, z);
+  NelderMead(objective, dim, x, opt.step, opt.maxIterations, opt.tolerance);
+  t.l3 = NelderMead(objective, dim, x, opt.step / 2, opt.maxIterations, opt.tolerance);
+  t.params = FromSearch(x, dim, isotropic, z);
+  t.chain = t.params;
+  // Then the frame's rotation about y as a fourth parameter, from that result (whose objective
+  // is the new simplex's first vertex: the stage cannot lose in the objective). The next
+  // texel starts from the three-parameter result (t.chain): a rotated frame is no start for a
+  // neighbour whose own frame differs.
+  if (!isotropic && opt.frameSteps > 0) {
+    dim = 4;
+    t.l3 = NelderMead(objective, dim, x, opt.step / 2, opt.frameSteps, opt.tolerance);
+    t.params = FromSearch(x, dim, isotropic, z);
+  }
   LtcMatrix mt = LtcMatrix::From(t.params);
   double s = mt.inv[4];  // (M^-1)_11 = 1 / m22: the published normalisation
   t.minv[0] = mt.inv[0] / s;
@@ -421,7 +441,7 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
       start.m13 *= s;
     }
     out[k] = fitOne(k, 0, start);
-    start = out[k].params;
+    start = out[k].chain;
     prevAlpha = alpha;
   }
   // Each roughness column along the views, from its first-row texel; columns in parallel.
@@ -433,7 +453,7 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
                           LtcFrameParams p = out[ir].params;
                           for (size_t im = 1; im < nm; ++im) {
                             out[ir + nr * im] = fitOne(ir, im, p);
-                            p = out[ir + nr * im].params;
+                            p = out[ir + nr * im].chain;
                           }
                         }
                       });
