@@ -43,8 +43,13 @@ TEST_CASE("luts/ holds the catalogue, listed in its manifest", "[luts]") {
     CHECK(std::find(files.begin(), files.end(), t["file"].get<std::string>()) != files.end());
     CHECK(t["bake_error"].get<double>() < 1e-6);
     // Every shipped table declares (the bake's lookup-error search: 1.5 x (the max it found +
-    // its reference's distance from the bake rule)) below 1e-3 over its whole domain.
-    CHECK(t["lookup_error"]["max"].get<double>() < 1e-3);
+    // its reference's distance from the bake rule)) below 1e-3 over its whole domain, but one:
+    // the LTC table in the published layout (kind ltc; 64 linear nodes of roughness x
+    // sqrt(1 - N.V), for the shaders written for the original textures) cannot follow the
+    // albedo's layer at N.V -> 0: its norm channel declares ~0.16 (README "LTC tables"); kiln's
+    // own layout, ltc-ggx-kiln (on request), declares 7.5e-4.
+    const bool publishedLtc = t["quantity"].get<std::string>() == "ltc";
+    CHECK(t["lookup_error"]["max"].get<double>() < (publishedLtc ? 0.2 : 1e-3));
   }
 }
 

@@ -6,7 +6,8 @@
 // (cosine included) of a registry model at perceptual roughness r (alpha = r^2 for the microfacet
 // models). The LTC is D(l) = max(0, l'.z)/pi |det M^-1| / |M^-1 l|^3 with l' = M^-1 l / |M^-1 l|,
 // M = [X Y Z] [[m11, 0, m13], [0, m22, 0], [0, 0, 1]], Z the lobe's average direction (its
-// "dominant direction"), X = (Z.z, 0, -Z.x), Y = (0, 1, 0), as the paper's fitting code.
+// "dominant direction") rotated about y by the fit's free-frame stage, X = (Z.z, 0, -Z.x),
+// Y = (0, 1, 0), as the paper's fitting code.
 #pragma once
 #include <functional>
 #include <string>
@@ -64,17 +65,22 @@ struct LtcMatrix {
 /// What the fit of one texel gives.
 struct LtcTexel {
   LtcFrameParams params;
+  LtcFrameParams chain;  ///< the three-parameter (average-direction frame) result: the next start
   double minv[4] = {1, 0, 0, 1};  ///< M^-1 / (M^-1)_11 as (a, b, c, d): [[a,0,c],[0,1,0],[b,0,d]]
-  double l3 = 0;                  ///< the minimised objective, integral |f mu_l / norm - D|^3
+  double l3 = 0;                  ///< the minimised objective, integral |f mu_l / norm - D|^p
   double l1 = 0;                  ///< the fit error: integral over the sphere |f mu_l / norm - D|
 };
 
 /// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
 /// the LTC, on a stratified n x n grid each: deterministic).
 struct LtcFitOptions {
-  int fitSamples = 16;      ///< n of the objective during Nelder-Mead
-  int errorSamples = 32;    ///< n of the declared L1 error (the paper's Nsample)
-  int maxIterations = 300;  ///< Nelder-Mead iterations
+  int fitSamples = 8;       ///< n: the lobe's n x n points of the objective (and the frame)
+  int ltcSamples = 8;       ///< m: the LTC's own m x m points of the objective
+  int power = 2;            ///< the objective's norm: 2 or 3 (the paper's)
+  int errorSamples = 16;    ///< n of the declared L1 error; 0: not measured
+  int maxIterations = 30;   ///< Nelder-Mead iterations (each of the two runs)
+  int frameSteps = 60;      ///< then the free-frame stage's iterations (0: none)
+  double step = 0.1;        ///< Nelder-Mead's initial step (in ln m11, ln m22, m13 / m11)
   double tolerance = 1e-7;  ///< stop when the simplex's objective spread is below this (relative)
 };
 
@@ -82,18 +88,21 @@ struct LtcFitOptions {
 /// n x n stratified samples.
 void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir);
 
-/// Fits an LTC to `lobe` / norm minimising the L3 error over the sphere (the paper's norm),
-/// by Nelder-Mead (written for kiln) from `start` over (ln m11, ln m22, m13 / m11); with
-/// `isotropic` m22 = m11 and m13 = 0 (a view along the normal). The frame's Z is the lobe's
-/// average direction. Deterministic.
+/// Fits an LTC to `lobe` / norm (norm <= 0: estimated from the fit's own lobe samples)
+/// minimising the L^p error over the sphere (opt.power; ltc_fit.cpp's header derives the
+/// objective) by Nelder-Mead (written for kiln) from `start` over (ln m11, ln m22, m13 / m11);
+/// with `isotropic` m22 = m11 and m13 = 0 (a view along the normal). The frame's Z is the
+/// lobe's average direction. Deterministic.
 LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
                 const LtcFitOptions& opt = {});
 
-/// integral over the sphere |lobe / norm - D_ltc|^p (p = 1 or 3) by MIS on an n x n grid.
+/// integral over the sphere |lobe / norm - D_ltc|^p (p = 1 or 3) by MIS (balance heuristic) of
+/// the lobe's and the LTC's n x n stratified samples; norm <= 0: the norm estimated from the
+/// same lobe samples (the lobe normalised to 1 by the measurement's own quadrature).
 double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n);
 
 /// Nelder-Mead minimisation (Nelder & Mead 1965, standard coefficients 1, 2, 1/2, 1/2) of f
-/// over `dim` <= 3 parameters from x (in/out) with initial step `step`; stops after maxIter
+/// over `dim` <= 4 parameters from x (in/out) with initial step `step`; stops after maxIter
 /// iterations or when the simplex's values agree to `tol` (relative). Returns min f.
 double NelderMead(const std::function<double(const double*)>& f, int dim, double* x, double step,
                   int maxIter, double tol);
