@@ -59,6 +59,13 @@ enum class StoredForm {
   /// the kink of total internal reflection at mu_c = sqrt(1 - eta^2) softened by roughness;
   /// the quantity is the sample plus that form.
   DielectricAlbedoResidual,
+  /// kiln.quantity "btdf-split-sum" (ggx-dielectric's split-sum BTDF pair) with channels
+  /// T_lobe, T_F_residual on axes (mu, roughness, eta) or a slice of them (an axis cut to one
+  /// value is in kiln.params): T_lobe is stored as it is; T_F minus btdfFresnelClosedForm(mu,
+  /// roughness, eta) = 1 - dielectricAlbedoClosedForm(mu, roughness, eta, true), the softened
+  /// Fresnel term that carries the layer at grazing (F(mu) at roughness 0: a residual of 0 on
+  /// that row); the quantity is the sample plus that form.
+  BtdfSplitSumResidual,
 };
 
 /// Unity's PerceptualRoughnessToSpecPower at perceptual roughness r: m = r^2,
@@ -170,6 +177,14 @@ inline double dielectricAlbedoClosedForm(double mu, double r, double eta, bool t
   return f * h / (1.0 + 20.0 * alpha);
 }
 
+/// The closed form a btdf-split-sum table's T_F_residual channel stores T_F against, at view
+/// cosine mu, perceptual roughness r (clamped to [0, 1]) and eta >= 1: the Fresnel term at the
+/// softened cosine, F(sqrt(mu^2 + alpha^2), eta), alpha = r^2 (exactly F(mu, eta) at r = 0), the
+/// same F_s as dielectricAlbedoClosedForm's g_T = 1 - F_s.
+inline double btdfFresnelClosedForm(double mu, double r, double eta) {
+  return 1.0 - dielectricAlbedoClosedForm(mu, r, eta, true);
+}
+
 /// The value of key `key` in a kiln.params string "key=value;key=value", or `def`.
 inline double storedParam(const std::string& params, const std::string& key, double def) {
   std::size_t at = 0;
@@ -213,6 +228,7 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
        quantity == "albedo-t-exit") &&
       (channel0 == "E_R_residual" || channel0 == "E_T_residual"))
     return StoredForm::DielectricAlbedoResidual;
+  if (quantity == "btdf-split-sum" && channel0 == "T_lobe") return StoredForm::BtdfSplitSumResidual;
   return StoredForm::Plain;
 }
 
@@ -316,6 +332,20 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
       if (ta.name == "eta") eta = v;
     }
     out[0] += dielectricAlbedoClosedForm(mu, r, eta, table.channels[0] == "E_T_residual");
+    return;
+  }
+  if (form == StoredForm::BtdfSplitSumResidual) {
+    // T_F_residual (channel 1): the closed form at the point the lookup clamped to.
+    double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
+           eta = storedParam(table.params, "eta", 1.5);
+    for (int d = 0; d < dims; ++d) {
+      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
+      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
+      if (ta.name == "mu") mu = v;
+      if (ta.name == "roughness") r = v;
+      if (ta.name == "eta") eta = v;
+    }
+    if (n > 1) out[1] += btdfFresnelClosedForm(mu, r, eta);
     return;
   }
   if (dims >= 1) {
