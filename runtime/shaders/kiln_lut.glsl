@@ -221,4 +221,22 @@ highp float kilnDielectricAlbedoClosedForm(highp float mu, highp float r, highp 
     return f * h / (1.0 + 20.0 * alpha);
 }
 
+// The closed form a ggx-dielectric-btdf-split-sum file's channel T_F_residual stores T_F against
+// (kiln::btdfFresnelClosedForm): F(sqrt(mu^2 + alpha^2), eta), alpha = r^2, eta >= 1.
+highp float kilnBtdfFresnelClosedForm(highp float mu, highp float r, highp float eta) {
+    return 1.0 - kilnDielectricAlbedoClosedForm(mu, r, eta, true);
+}
+
+// The split-sum BTDF pair's weight for image-based refraction (ggx-dielectric-btdf-split-sum,
+// axes (mu, roughness, eta = ior >= 1.1) from kiln.axis0..2): the energy the rough interface
+// transmits, T_lobe - s T_F, s the scale of the Fresnel term (1: the model; KHR_materials_specular's
+// specular factor). Multiply the prefiltered environment sampled along the refracted ray by it
+// (importance form: divide by eta^2 for radiance).
+highp float kilnBtdfSplitSum(highp sampler2D lut, highp float NoV, highp float r, highp float eta,
+                             highp float s, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    highp vec2 t = kilnSample3D(lut, vec3(NoV, r, eta), a0, a1, a2).rg;
+    highp float tF = t.y + kilnBtdfFresnelClosedForm(NoV, r, eta);
+    return t.x - s * tF;
+}
+
 #endif  // KILN_LUT_GLSL
