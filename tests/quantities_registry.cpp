@@ -38,11 +38,11 @@ TEST_CASE("Every quantity has one descriptor, found by its name", "[quantities]"
 
 TEST_CASE("The names scenes, files and kiln integrate use are unchanged", "[quantities]") {
   CHECK(SceneTableKinds() ==
-        std::vector<std::string>{"dfg", "albedo", "albedo-avg", "fresnel-albedo",
-                                 "fresnel-albedo-avg", "fresnel-dielectric",
-                                 "fresnel-dielectric-avg", "fresnel-conductor", "albedo-r",
-                                 "albedo-t", "albedo-r-exit", "albedo-t-exit", "albedo-r-avg",
-                                 "albedo-t-avg", "albedo-r-exit-avg", "albedo-t-exit-avg"});
+        std::vector<std::string>{
+            "dfg", "albedo", "albedo-avg", "fresnel-albedo", "fresnel-albedo-avg",
+            "fresnel-dielectric", "fresnel-dielectric-avg", "fresnel-conductor", "albedo-r",
+            "albedo-t", "albedo-r-exit", "albedo-t-exit", "albedo-r-avg", "albedo-t-avg",
+            "albedo-r-exit-avg", "albedo-t-exit-avg", "btdf-split-sum"});
   std::set<std::string> integrable;
   for (const QuantityInfo* q : AllQuantities())
     if (q->integrateName) integrable.insert(q->integrateName);

@@ -52,7 +52,10 @@ void main() {
     color = kilnSample1D(lut1, x.x, a0) + kilnSample2D(lut2, x.xy, a0, a1)
           + kilnSample3D(lut3, x, a0, a1, a2) + kilnSample2DExact(lut2, x.xy, a0, a1)
           + kilnSample3DExact(lut3, x, a0, a1, a2)
-          + kilnSample3D(lut3, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z);
+          + kilnSample3D(lut3, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z)
+          + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, true)
+          + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, false)
+          + kilnBtdfSplitSum(lut3, x.x, x.y, x.z, 1.0, a0, a1, a2);
 }
 )";
 
@@ -63,7 +66,10 @@ float4 main(float3 x : TEXCOORD0) : SV_Target {
     return kilnSample1D(lut1, linearClamp, x.x, a0) + kilnSample2D(lut2, linearClamp, x.xy, a0, a1)
          + kilnSample3D(lut3, linearClamp, x, a0, a1, a2) + kilnSample2DExact(lut2, x.xy, a0, a1)
          + kilnSample3DExact(lut3, x, a0, a1, a2)
-         + kilnSample3D(lut3, linearClamp, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z);
+         + kilnSample3D(lut3, linearClamp, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z)
+         + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, true)
+         + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, false)
+         + kilnBtdfSplitSum(lut3, linearClamp, x.x, x.y, x.z, 1.0, a0, a1, a2);
 }
 )";
 

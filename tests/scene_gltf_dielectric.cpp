@@ -19,7 +19,8 @@ TEST_CASE("IOR and transmission: the dielectric table at one IOR is 2D", "[scene
                 "ggx-dielectric-albedo-r-exit-ior0.666667",
                 "ggx-dielectric-albedo-t-exit-ior0.666667",
                 "ggx-dielectric-albedo-r-exit-avg-ior0.666667",
-                "ggx-dielectric-albedo-t-exit-avg-ior0.666667"});
+                "ggx-dielectric-albedo-t-exit-avg-ior0.666667",
+                "ggx-dielectric-btdf-split-sum-ior1.5"});
   const TableSpec& d = FindTable(plan, "ggx-fresnel-albedo-ior1.5")->spec;
   TableSpec full = CatalogueTable("ggx-fresnel-albedo");
   REQUIRE(full.axes.size() == 3);

@@ -237,6 +237,10 @@ void MaterialReader::Read() {
             NeedModel(q, "ggx-dielectric", {{"roughness", rough}, {"eta", inv}},
                       why + ", exit side eta = 1/ior " + inv.Text());
         }
+        // Image-based refraction (entering side): the split-sum BTDF pair an engine multiplies
+        // its prefiltered environment, sampled along the refracted ray, by (T_lobe - s T_F).
+        NeedModel(Quantity::DielectricBtdfSplitSum, "ggx-dielectric",
+                  {{"roughness", rough}, {"eta", eta}}, why + ", image-based refraction");
       }
       if (transmits && vol)
         Note(Kind::NoTable, "KHR_materials_volume",

@@ -190,4 +190,57 @@ float kilnFresnelAlbedoClosedForm(float mu, float r, float eta) {
     return kilnFresnelDielectric(sqrt(m * m + alpha * alpha), eta) * h / (1.0 + 10.0 * alpha);
 }
 
+// The dielectric Fresnel reflectance with the transmitted cosine softened by delta >= 0
+// (kiln::dielectricFresnelSoft): w = Re sqrt(q + i delta), q = mu^2 + eta^2 - 1, for any
+// eta > 0; delta = 0 is the exact term (1 under total internal reflection).
+float kilnFresnelDielectricSoft(float mu, float eta, float delta) {
+    float m = clamp(mu, 0.0, 1.0);
+    if (!(delta > 0.0)) return kilnFresnelDielectric(m, eta);
+    float q = m * m + (eta - 1.0) * (eta + 1.0);
+    float root = sqrt(q * q + delta * delta);
+    float w = sqrt(0.5 * (q >= 0.0 ? q + root : delta * delta / (root - q)));
+    if (!(m + w > 0.0)) return 1.0;
+    float rs = (m - w) / (m + w);
+    float rp = (eta * eta * m - w) / (eta * eta * m + w);
+    return min(1.0, 0.5 * (rs * rs + rp * rp));
+}
+
+// The closed form g a ggx-dielectric-albedo-* file with channel E_R_residual (transmit false)
+// or E_T_residual (transmit true) stores E against (kiln::dielectricAlbedoClosedForm,
+// runtime/FORMAT.md "Stored forms"): E = sample + g at the view cosine mu, perceptual roughness r
+// and index eta (> 1 entering, < 1 exit) of the lookup (clamped to the axes).
+float kilnDielectricAlbedoClosedForm(float mu, float r, float eta, bool transmit) {
+    float m = clamp(mu, 0.0, 1.0);
+    float rc = clamp(r, 0.0, 1.0);
+    if (!(rc > 0.0)) {
+        float f0 = kilnFresnelDielectricSoft(m, eta, 0.0);
+        return transmit ? 1.0 - f0 : f0;
+    }
+    float alpha = max(rc * rc, 1e-12);
+    float delta = eta < 1.0 ? 4.0 * alpha * sqrt((1.0 - eta) * (1.0 + eta)) : 0.0;
+    float f = kilnFresnelDielectricSoft(sqrt(m * m + alpha * alpha), eta, delta);
+    if (transmit) return 1.0 - f;
+    float s = m / alpha;
+    float h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+    return f * h / (1.0 + 20.0 * alpha);
+}
+
+// The closed form a ggx-dielectric-btdf-split-sum file's channel T_F_residual stores T_F against
+// (kiln::btdfFresnelClosedForm): F(sqrt(mu^2 + alpha^2), eta), alpha = r^2, eta >= 1.
+float kilnBtdfFresnelClosedForm(float mu, float r, float eta) {
+    return 1.0 - kilnDielectricAlbedoClosedForm(mu, r, eta, true);
+}
+
+// The split-sum BTDF pair's weight for image-based refraction (ggx-dielectric-btdf-split-sum,
+// axes (mu, roughness, eta = ior >= 1.1) from kiln.axis0..2): the energy the rough interface
+// transmits, T_lobe - s T_F, s the scale of the Fresnel term (1: the model; KHR_materials_specular's
+// specular factor). Multiply the prefiltered environment sampled along the refracted ray by it
+// (importance form: divide by eta^2 for radiance).
+float kilnBtdfSplitSum(Texture2D<float4> lut, SamplerState smp, float NoV, float r, float eta,
+                       float s, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
+    float2 t = kilnSample3D(lut, smp, float3(NoV, r, eta), a0, a1, a2).rg;
+    float tF = t.y + kilnBtdfFresnelClosedForm(NoV, r, eta);
+    return t.x - s * tF;
+}
+
 #endif  // KILN_LUT_HLSL

@@ -66,6 +66,13 @@ enum class StoredForm {
   /// (+infinity at mu = 0 where the sample is positive), or minus the layer's closed form, at
   /// the point the lookup clamped to.
   WardAlbedo,
+  /// kiln.quantity "btdf-split-sum" (ggx-dielectric's split-sum BTDF pair) with channels
+  /// T_lobe, T_F_residual on axes (mu, roughness, eta) or a slice of them (an axis cut to one
+  /// value is in kiln.params): T_lobe is stored as it is; T_F minus btdfFresnelClosedForm(mu,
+  /// roughness, eta) = 1 - dielectricAlbedoClosedForm(mu, roughness, eta, true), the softened
+  /// Fresnel term that carries the layer at grazing (F(mu) at roughness 0: a residual of 0 on
+  /// that row); the quantity is the sample plus that form.
+  BtdfSplitSumResidual,
 };
 
 /// Unity's PerceptualRoughnessToSpecPower at perceptual roughness r: m = r^2,
@@ -213,6 +220,14 @@ inline double wardAlbedoFromStored(const std::string& channel, double v, double 
   return v > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
 }
 
+/// The closed form a btdf-split-sum table's T_F_residual channel stores T_F against, at view
+/// cosine mu, perceptual roughness r (clamped to [0, 1]) and eta >= 1: the Fresnel term at the
+/// softened cosine, F(sqrt(mu^2 + alpha^2), eta), alpha = r^2 (exactly F(mu, eta) at r = 0), the
+/// same F_s as dielectricAlbedoClosedForm's g_T = 1 - F_s.
+inline double btdfFresnelClosedForm(double mu, double r, double eta) {
+  return 1.0 - dielectricAlbedoClosedForm(mu, r, eta, true);
+}
+
 /// The value of key `key` in a kiln.params string "key=value;key=value", or `def`.
 inline double storedParam(const std::string& params, const std::string& key, double def) {
   std::size_t at = 0;
@@ -259,6 +274,7 @@ inline StoredForm storedFormOf(const std::string& quantity, const std::string& a
   if (quantity == "albedo" &&
       (channel0 == "E_sqrt_mu" || channel0 == "E_mu" || channel0 == "E_layer"))
     return StoredForm::WardAlbedo;
+  if (quantity == "btdf-split-sum" && channel0 == "T_lobe") return StoredForm::BtdfSplitSumResidual;
   return StoredForm::Plain;
 }
 
@@ -370,6 +386,20 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
     const double mu = std::min(std::max(x[0], a0.lo), a0.hi);
     const double r = std::min(std::max(x[1], a1.lo), a1.hi);
     out[0] = wardAlbedoFromStored(table.channels[0], out[0], mu, r);
+  return;
+  }
+  if (form == StoredForm::BtdfSplitSumResidual) {
+    // T_F_residual (channel 1): the closed form at the point the lookup clamped to.
+    double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
+           eta = storedParam(table.params, "eta", 1.5);
+    for (int d = 0; d < dims; ++d) {
+      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
+      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
+      if (ta.name == "mu") mu = v;
+      if (ta.name == "roughness") r = v;
+      if (ta.name == "eta") eta = v;
+    }
+    if (n > 1) out[1] += btdfFresnelClosedForm(mu, r, eta);
     return;
   }
   if (dims >= 1) {

@@ -1,0 +1,51 @@
+// The split-sum pair of the rough dielectric's transmission (models/dielectric_bsdf.h: GGX,
+// height-correlated Smith, exact Fresnel; Walter et al. 2007) for image-based refraction, for a
+// view above the interface entering the denser medium (eta = inside / outside >= 1):
+//     T_lobe(mu) = integral W_t(wo, wi) |cos_i| dwi          (the lobe's transmittance at F = 0),
+//     T_F(mu)    = integral F(wo.m) W_t(wo, wi) |cos_i| dwi  (its Fresnel-weighted part),
+// over the lower hemisphere, W_t the importance-form BTDF without its (1 - F) factor
+// (fhat_t = (1 - F) W_t: no 1/eta^2 radiance factor). The transmitted energy is
+// E_T = T_lobe - T_F; an engine that scales the Fresnel term by s (KHR_materials_specular's
+// specular factor) transmits T_lobe - s T_F, and multiplies its prefiltered environment, sampled
+// along the refracted direction, by that (docs/models.md, "ggx-dielectric: the split-sum BTDF
+// pair"). Both are integrals over the visible microfacet normals (derivation in
+// dielectric_btdf.cpp). Two rules with the same panels: adaptive Gauss-Kronrod to a tolerance
+// (the reference) and a fixed Gauss rule (the bake), which the tests hold to the reference.
+#pragma once
+#include <array>
+
+#include "baker/integrate/hemisphere.h"
+
+namespace kiln {
+
+/// {T_lobe, T_F} at view cosine mu in [0, 1], GGX alpha > 0 (at least MinAlpha), eta >= 1
+/// (inside / outside: the view enters the denser medium; throws std::invalid_argument below 1),
+/// by adaptive quadrature to opt.tol (absolute, per channel). stats.errorEstimate: the outer
+/// rule's estimate.
+std::array<double, 2> DielectricBtdfPair(double mu, double alpha, double eta,
+                                         const IntegrationOptions& opt, IntegrationStats& stats);
+
+/// Node counts of the fixed rule: Gauss nodes per outer (v) and inner (phi_m) panel.
+struct DielectricBtdfRuleOptions {
+  int outerNodes = 12;
+  int innerNodes = 12;
+};
+
+/// The bake's node counts (dielectric_btdf.cpp, kTuned).
+DielectricBtdfRuleOptions TunedDielectricBtdfRuleOptions();
+
+/// {T_lobe, T_F} as DielectricBtdfPair, by the fixed rule: deterministic, the same arguments give
+/// the same bits. evals (optional) accumulates integrand evaluations.
+std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,
+                                                  const DielectricBtdfRuleOptions& opt,
+                                                  long long* evals = nullptr);
+std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,
+                                                  long long* evals = nullptr);
+
+/// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
+constexpr double kDielectricBtdfRuleBound = 5e-7;
+
+/// The smooth interface (alpha = 0): {1, F(mu, eta)} (all of the lobe refracts; E_T = 1 - F).
+std::array<double, 2> SmoothDielectricBtdfPair(double mu, double eta);
+
+}  // namespace kiln
