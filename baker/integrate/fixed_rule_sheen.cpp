@@ -82,37 +82,6 @@ void PanelRule(std::vector<double> breaks, int n, double maxLen, std::vector<dou
   }
 }
 
-/// Where charlie-smith's clamp V <= 1 switches (4 mu_o mu_l (1 + Lambda(mu_o) + Lambda(mu_l))
-/// crosses 1): a scan of ln(mu_l) from 1e-12 to 1 in quarter decades, each sign change refined by
-/// 60 bisections in ln(mu_l). Deterministic.
-std::vector<double> ClampSwitches(const CharlieSmithSheen& m, double mu_o) {
-  std::vector<double> roots;
-  if (!(mu_o > 0)) return roots;
-  auto g = [&](double lnMu) { return m.InverseV(mu_o, std::exp(lnMu)) - 1; };
-  const double lo = std::log(1e-12), step = std::log(10.0) / 4;
-  const int n = static_cast<int>(std::ceil(-lo / step));
-  double a = lo, ga = g(a);
-  for (int i = 1; i <= n; ++i) {
-    double b = i == n ? 0 : lo + i * step, gb = g(b);
-    if ((ga > 0) != (gb > 0)) {
-      double x0 = a, x1 = b, g0 = ga;
-      for (int k = 0; k < 60; ++k) {
-        double xm = 0.5 * (x0 + x1), gm = g(xm);
-        if ((gm > 0) == (g0 > 0)) {
-          x0 = xm;
-          g0 = gm;
-        } else {
-          x1 = xm;
-        }
-      }
-      roots.push_back(std::exp(0.5 * (x0 + x1)));
-    }
-    a = b;
-    ga = gb;
-  }
-  return roots;
-}
-
 /// Lambda(mu_o) of charlie-smith (0 for the others): constant over a texel.
 template <class M>
 double LambdaOf(const M& m, double mu_o) {
@@ -156,7 +125,7 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
   }
   if constexpr (std::is_same_v<M, CharlieSmithSheen>) {
     addMu(0.5);
-    for (double mu_l : ClampSwitches(m, mu_o)) addMu(mu_l);
+    for (double mu_l : m.ClampSwitches(mu_o)) addMu(mu_l);
   }
   auto S = [&](double psi) { return std::log(psi + c2); };
   std::vector<double> sBreaks = {S(0), S(Pi)};

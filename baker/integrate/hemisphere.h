@@ -6,7 +6,9 @@
 // Light space (smooth lobes): E = 2 int_0^{pi/2} dtheta_l sin cos int_0^pi dphi g, the factor 2
 // from the mirror symmetry phi -> -phi of isotropic models. The diffuse models bend where
 // theta_l = theta_o (max/min of the angles) and at phi = pi/2 (the sign of cos(phi)): those are
-// the first panel boundaries, so every panel is smooth and Gauss-Kronrod converges fast.
+// the first panel boundaries, so every panel is smooth and Gauss-Kronrod converges fast. A model
+// names the other cosines where it bends (LightMuKinks: charlie-smith's Lambda switch at
+// mu_l = 1/2 and its clamp V <= 1), which become boundaries too (a quarter of the evaluations).
 //
 // Half-vector space (sharp lobes): with l = reflect(o, h), dl = 4 (o.h) dh, and h walked by
 // (v, phi_h) where v is the complementary CDF of the lobe's own polar density (see
@@ -20,6 +22,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "baker/math/quadrature.h"
 #include "baker/models/brdf.h"
@@ -73,14 +76,20 @@ Channels<N> WithRelativeTolerance(Integral&& integral, const IntegrationOptions&
 
 /// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine), to the absolute
 /// tolerance opt.tol.
+/// muKinks (optional): light cosines where g bends (a model's LightMuKinks), extra outer panel
+/// boundaries at theta_l = acos(mu_l).
 template <int N, class G>
 Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOptions& opt,
-                                        IntegrationStats& stats) {
+                                        IntegrationStats& stats,
+                                        const std::vector<double>& muKinks = {}) {
   Vec3 wo = ViewDirection(mu_o);
   double theta_o = std::acos(Clamp(mu_o, 0.0, 1.0));
-  double thetaBreaks[3] = {0, theta_o, Pi / 2};
-  double thetaOnly[2] = {0, Pi / 2};
-  bool split = theta_o > 0 && theta_o < Pi / 2;
+  std::vector<double> thetaBreaks = {0, Pi / 2};
+  if (theta_o > 0 && theta_o < Pi / 2) thetaBreaks.push_back(theta_o);
+  for (double mu_l : muKinks)
+    if (mu_l > 0 && mu_l < 1) thetaBreaks.push_back(std::acos(mu_l));
+  std::sort(thetaBreaks.begin(), thetaBreaks.end());
+  thetaBreaks.erase(std::unique(thetaBreaks.begin(), thetaBreaks.end()), thetaBreaks.end());
   double phiBreaks[3] = {0, Pi / 2, Pi};
   double innerTol = opt.tol / (10 * Pi);
   double errSum = 0;
@@ -97,8 +106,8 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
   };
   double err = 0;
   Channels<N> r =
-      split ? IntegrateAdaptive<N>(outer, thetaBreaks, 3, opt.tol / 2, opt.maxPanels, &err)
-            : IntegrateAdaptive<N>(outer, thetaOnly, 2, opt.tol / 2, opt.maxPanels, &err);
+      IntegrateAdaptive<N>(outer, thetaBreaks.data(), static_cast<int>(thetaBreaks.size()),
+                           opt.tol / 2, opt.maxPanels, &err);
   stats.errorEstimate = err;
   return r;
 }
@@ -107,10 +116,10 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
 /// absolute, relative where |E| > 1 (WithRelativeTolerance).
 template <int N, class G>
 Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& opt,
-                                IntegrationStats& stats) {
+                                IntegrationStats& stats, const std::vector<double>& muKinks = {}) {
   return WithRelativeTolerance<N>(
       [&](const IntegrationOptions& o, IntegrationStats& st) {
-        return IntegrateLightSpaceAbsolute<N>(mu_o, g, o, st);
+        return IntegrateLightSpaceAbsolute<N>(mu_o, g, o, st, muKinks);
       },
       opt, stats);
 }

@@ -19,6 +19,21 @@ Channels<N> CosineWeightedAverage(G&& g, double tol) {
   return IntegrateAdaptive<N>(integrand, breaks, 5, tol);
 }
 
+/// The light cosines where a light-space model's f bends (its LightMuKinks), none for a model
+/// without that method.
+template <class M>
+auto LightMuKinksOf(const M& m, double mu_o, int) -> decltype(m.LightMuKinks(mu_o)) {
+  return m.LightMuKinks(mu_o);
+}
+template <class M>
+std::vector<double> LightMuKinksOf(const M&, double, long) {
+  return {};
+}
+template <class M>
+std::vector<double> LightMuKinksOf(const M& m, double mu_o) {
+  return LightMuKinksOf(m, mu_o, 0);
+}
+
 }  // namespace
 
 RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const IntegrationOptions& opt,
@@ -34,7 +49,7 @@ RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const Integration
             RhoParts p = m.Parts(wo, wi);
             return Channels<2>{p.lin, p.quad};
           };
-          Channels<2> r = IntegrateLightSpace<2>(mu_o, g, opt, stats);
+          Channels<2> r = IntegrateLightSpace<2>(mu_o, g, opt, stats, LightMuKinksOf(m, mu_o));
           return {r[0], r[1]};
         }
       },

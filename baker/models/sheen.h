@@ -10,6 +10,7 @@
 // and concentrate at grazing half vectors (integrate/fixed_rule_sheen.h places panels there).
 #pragma once
 #include <cmath>
+#include <vector>
 
 #include "baker/models/brdf.h"
 
@@ -115,6 +116,44 @@ struct CharlieSmithSheen {
   double InverseV(double mu_o, double mu_l) const {
     return 4 * mu_o * mu_l *
            (1 + CharlieSheenLambda(mu_o, alpha) + CharlieSheenLambda(mu_l, alpha));
+  }
+  /// Where the clamp V <= 1 switches (4 mu_o mu_l (1 + Lambda(mu_o) + Lambda(mu_l)) crosses 1),
+  /// a condition on mu_l alone: a scan of ln(mu_l) from 1e-12 to 1 in quarter decades, each sign
+  /// change refined by 60 bisections in ln(mu_l). Ascending, deterministic; none for mu_o <= 0.
+  std::vector<double> ClampSwitches(double mu_o) const {
+    std::vector<double> roots;
+    if (!(mu_o > 0)) return roots;
+    auto g = [&](double lnMu) { return InverseV(mu_o, std::exp(lnMu)) - 1; };
+    const double lo = std::log(1e-12), step = std::log(10.0) / 4;
+    const int n = static_cast<int>(std::ceil(-lo / step));
+    double a = lo, ga = g(a);
+    for (int i = 1; i <= n; ++i) {
+      double b = i == n ? 0 : lo + i * step, gb = g(b);
+      if ((ga > 0) != (gb > 0)) {
+        double x0 = a, x1 = b, g0 = ga;
+        for (int k = 0; k < 60; ++k) {
+          double xm = 0.5 * (x0 + x1), gm = g(xm);
+          if ((gm > 0) == (g0 > 0)) {
+            x0 = xm;
+            g0 = gm;
+          } else {
+            x1 = xm;
+          }
+        }
+        roots.push_back(std::exp(0.5 * (x0 + x1)));
+      }
+      a = b;
+      ga = gb;
+    }
+    return roots;
+  }
+  /// The light cosines mu_l at which f(o, l) has a kink for view cosine mu_o (the adaptive
+  /// light-space integrator's panel boundaries): Lambda's switch at mu_l = 1/2 and the clamp's
+  /// switches (ClampSwitches).
+  std::vector<double> LightMuKinks(double mu_o) const {
+    std::vector<double> k = ClampSwitches(mu_o);
+    k.push_back(0.5);
+    return k;
   }
   RhoParts Parts(Vec3 wo, Vec3 wi) const {
     double mu_o = CosTheta(wo), mu_l = CosTheta(wi);
