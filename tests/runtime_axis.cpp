@@ -51,6 +51,7 @@ double inverseWarp(const Axis& a, double t) {
       return a.lo + (a.hi - a.lo) * std::pow(t, 4.0);
     case Warp::Root4Layer:
     case Warp::LayerEta:
+    case Warp::Root4LayerSplit:
       break;  // read another axis: tested on their own (below, runtime_layer_warps.cpp)
     case Warp::Angle:
       return a.lo + (a.hi - a.lo) * std::sin(t * M_PI / 2);

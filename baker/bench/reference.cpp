@@ -99,7 +99,8 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
         ref.inCorner[j] = 1;
     }
     if (axes[0].size > 1)  // a root4-layer axis 0 follows axis 1
-      x[0] = axes[0].unwarped(texel[j * dims] / (axes[0].size - 1), LayerScaleOf(spec, x));
+      x[0] = axes[0].unwarped(texel[j * dims] / (axes[0].size - 1), LayerScaleOf(spec, x),
+                              SplitOf(spec, x));
   }
   ref.pointValues.assign(count * nc, 0);
   evals += ParallelEvals(count, opt.threads, [&](size_t j) {

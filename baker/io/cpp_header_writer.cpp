@@ -118,6 +118,8 @@ std::string warpEnumerator(Warp warp) {
       return "kiln::Warp::Angle";
     case Warp::LayerEta:
       return "kiln::Warp::LayerEta";
+    case Warp::Root4LayerSplit:
+      return "kiln::Warp::Root4LayerSplit";
     case Warp::Log:
       return "kiln::Warp::Log";
   }

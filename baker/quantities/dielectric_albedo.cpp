@@ -63,11 +63,17 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
                {meaning}, std::move(axes));
 }
 
+/// The mu axis of a side: entering, root4-layer (48 nodes); exit, root4-layer-split (49 nodes:
+/// the critical cosine sqrt(1 - eta'^2), where E has the kink of total internal reflection, is
+/// the grid line t = 1/2 in every eta' layer, with nodes crowded on both sides over ~alpha).
+AxisSpec MuAxis(bool exit) {
+  return exit ? AxisSpec{"mu", 0, 1, 49, Warp::Root4LayerSplit}
+              : AxisSpec{"mu", 0, 1, 48, Warp::Root4Layer};
+}
+
 template <Quantity Q>
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"mu", 0, 1, 48, Warp::Root4Layer},
-          {"roughness", 0, 1, 40, Warp::Sqrt},
-          EtaAxis(KindOf(Q).exit)};
+  return {MuAxis(KindOf(Q).exit), {"roughness", 0, 1, 40, Warp::Sqrt}, EtaAxis(KindOf(Q).exit)};
 }
 
 /// The catalogue's table stores E - dielectricAlbedoClosedForm (kiln/stored.h,

@@ -17,8 +17,11 @@ const ModelInfo& Info(const std::string& model) {
 
 void Resize(TableSpec& spec, int size) {
   if (size <= 0) return;
-  for (AxisSpec& a : spec.axes)
+  for (AxisSpec& a : spec.axes) {
     if (a.size > 2 || a.name != "roughness") a.size = size;  // a roughness-less model keeps 2
+    // root4-layer-split needs N - 1 a multiple of 8 (its piece ends are nodes): round up
+    if (a.warp == Warp::Root4LayerSplit) a.size = std::max(9, (size + 6) / 8 * 8 + 1);
+  }
 }
 
 }  // namespace

@@ -132,28 +132,34 @@ double LayerScaleOf(const TableSpec& spec, const double* x) {
   return layerScaleFor(spec.axes[0].warp, spec.axes[1].lo, spec.axes[1].hi, x[1]);
 }
 
+double SplitOf(const TableSpec& spec, const double* x) {
+  if (spec.axes.size() != 3 || spec.axes[0].warp != Warp::Root4LayerSplit) return 0.5;
+  return criticalSplit(spec.axes[0].lo, spec.axes[0].hi, spec.axes[2].lo, spec.axes[2].hi, x[2]);
+}
+
 void PointAtWarped(const TableSpec& spec, const double* t, double* x) {
-  // A layered axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative).
+  // A layered axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative)
+  // and, for root4-layer-split, the split point axis 2 gives.
   const bool layered = spec.axes.size() >= 2 && isLayerWarp(spec.axes[0].warp);
   for (size_t d = 0; d < spec.axes.size(); ++d)
     if (d != 0 || !layered) x[d] = spec.axes[d].ToAxis().unwarped(t[d]);
-  if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t[0], LayerScaleOf(spec, x));
+  if (layered) x[0] = spec.axes[0].ToAxis().unwarped(t[0], LayerScaleOf(spec, x), SplitOf(spec, x));
 }
 
 bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x) {
   PointAtWarped(spec, t, x);
   if (spec.axes.size() < 2 || !isLayerWarp(spec.axes[0].warp)) return false;
   const Axis a0 = spec.axes[0].ToAxis();
-  if (LayerScaleOf(spec, x) != 0.0 || !(t[0] < a0.collapsedStart())) return false;
+  if (LayerScaleOf(spec, x) != 0.0 || !a0.holdsLayerLimit(t[0])) return false;
   // The smallest value of axis 1 past the collapse point where the layer has a scale: r = 1e-6
   // (c = alpha = 1e-12, the floor every r in (0, 1e-6] shares), or the double next to eta = 1
   // (c = 2.1e-8; F there is the layer's limit G(mu / c) to ~1e-8, FrDielectric has no
   // cancellation).
-  if (spec.axes[0].warp == Warp::Root4Layer)
+  if (spec.axes[0].warp == Warp::Root4Layer || spec.axes[0].warp == Warp::Root4LayerSplit)
     x[1] = 1e-6;
   else
     x[1] = std::nextafter(x[1], x[1] < spec.axes[1].hi ? spec.axes[1].hi : spec.axes[1].lo);
-  x[0] = a0.unwarped(t[0], LayerScaleOf(spec, x));
+  x[0] = a0.unwarped(t[0], LayerScaleOf(spec, x), SplitOf(spec, x));
   return true;
 }
 

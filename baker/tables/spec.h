@@ -64,6 +64,10 @@ Table TableShell(const TableSpec& spec, const std::string& generator, const std:
 /// eta = 1 exactly; 1e-12 for any other warp).
 double LayerScaleOf(const TableSpec& spec, const double* x);
 
+/// The split point of a root4-layer-split axis 0 at the point x (kiln::criticalSplit of axis 2's
+/// value, the critical cosine sqrt(1 - eta^2)); 0.5 (ignored) for any other axis 0.
+double SplitOf(const TableSpec& spec, const double* x);
+
 /// The point x (axis units, one coordinate per axis) at warped coordinates t in [0, 1] per axis:
 /// Axis::unwarped of each, a layered axis 0 placed by the layer scale at the other coordinates.
 /// The one place that knows how a layered axis couples to the others (the bake's nodes, the

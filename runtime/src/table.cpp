@@ -28,6 +28,9 @@ std::string axisProblem(const Axis& axis) {
   if (!(axis.lo < axis.hi)) return "lo " + number(axis.lo) + " >= hi " + number(axis.hi);
   if (axis.warp == Warp::Log && !(axis.lo > 0.0))
     return "lo " + number(axis.lo) + " <= 0 with the log warp";
+  if (axis.warp == Warp::Root4LayerSplit && !axis.valid())
+    return "size " + std::to_string(axis.size) +
+           " with the root4-layer-split warp: needs size >= 9 and (size - 1) % 8 == 0";
   Warp parsed;
   if (!warpFromName(warpName(axis.warp), parsed)) return "unknown warp";
   return std::string();
@@ -80,6 +83,12 @@ bool validateTable(const Table& table, std::string& problem) {
       problem = label + ": the " + warpName(a.axis.warp) +
                 " warp couples axis 0 to axis 1; it is allowed "
                 "only on axis 0 of a table with two or more axes";
+      return false;
+    }
+    if (a.axis.warp == Warp::Root4LayerSplit && dims != 3) {
+      problem = label +
+                ": the root4-layer-split warp reads axes 1 and 2; it is allowed only on "
+                "axis 0 of a table with three axes";
       return false;
     }
     nodes *= static_cast<std::uint64_t>(a.axis.size);

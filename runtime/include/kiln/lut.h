@@ -54,10 +54,28 @@ namespace kiln {
 ///   Angle:  t = 1 - (2 / pi) acos(y)  (nodes uniform in the angle theta = acos(y):
 ///                         a function of theta_o, smooth in the angle, has a square-root
 ///                         point at y = 1 (mu = cos theta) that this resolves)
-enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle, LayerEta };
+///   Root4LayerSplit: a mu axis split at a point s that moves with axis 2, here the critical
+///           cosine s = sqrt(1 - eta^2) of total internal reflection, eta the value of axis 2
+///           (clamped to that axis; s is clamped into [lo + (hi - lo) / 64, hi - (hi - lo) / 64],
+///           so for eta >= 1 it sits near lo). Only on axis 0 of a 3-axis table (mu,
+///           roughness, eta); c is the Root4Layer scale of axis 1. With y = (x - lo) / (hi - lo),
+///           y_s = (s - lo) / (hi - lo) and m = y_s / 2, three pieces, each a Root4Layer warp
+///           L(d, c') of the distance d from a layer end (L at c' = 0: the collapsed form):
+///             y <= m:       t = L(y / m, c / m) / 4                       (the grazing layer)
+///             m < y <= y_s: t = 1/2 - L((y_s - y) / m, c / m) / 4         (the kink, below)
+///             y > y_s:      t = 1/2 + L((y - y_s) / (1 - y_s), c / (1 - y_s)) / 2 (above)
+///           so x = s is t = 1/2 in every eta layer (a grid line when N - 1 is even): a kink
+///           of the tabulated function at s, which rows of other eta hold at other mu, stays
+///           on one grid line, and nodes crowd it over a width ~c on both sides. The size must
+///           satisfy (N - 1) % 8 == 0 (t = 1/8, 3/8, 1/2, 3/4 are nodes). At r = 0 (c = 0) each
+///           piece collapses as Root4Layer does: the nodes t < 1/8 and 3/8 < t < 3/4 of that
+///           row hold the layers' limit r -> 0+, read only by 0 < r < r_1 (holdsLayerLimit).
+///           The split is a function of another axis's value; a constant split point would be
+///           the special case of a 2D table (not implemented).
+enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle, LayerEta, Root4LayerSplit };
 
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log", "root4", "root4-layer",
-/// "angle" or "layer-eta".
+/// "angle", "layer-eta" or "root4-layer-split".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
   switch (warp) {
@@ -77,6 +95,8 @@ inline const char* warpName(Warp warp) noexcept {
       return "angle";
     case Warp::LayerEta:
       return "layer-eta";
+    case Warp::Root4LayerSplit:
+      return "root4-layer-split";
   }
   return "unknown";
 }
@@ -86,8 +106,9 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
   if (name == nullptr) return false;
-  const Warp all[] = {Warp::Linear, Warp::Sqrt,       Warp::Square, Warp::Log,
-                      Warp::Root4,  Warp::Root4Layer, Warp::Angle,  Warp::LayerEta};
+  const Warp all[] = {Warp::Linear, Warp::Sqrt,     Warp::Square,
+                      Warp::Log,    Warp::Root4,    Warp::Root4Layer,
+                      Warp::Angle,  Warp::LayerEta, Warp::Root4LayerSplit};
   for (Warp candidate : all) {
     if (std::strcmp(name, warpName(candidate)) == 0) {
       warp = candidate;
@@ -129,17 +150,28 @@ inline double etaLayerScale(double lo, double hi, double eta) noexcept {
   return c > 1e-12 ? c : 1e-12;
 }
 
-/// True for the warps that read another axis (Root4Layer, LayerEta): only on axis 0
-/// of a table of two or more axes, coupled to axis 1.
+/// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit): only on
+/// axis 0 of a table of two or more axes (three for Root4LayerSplit), coupled to axis 1.
 inline bool isLayerWarp(Warp warp) noexcept {
-  return warp == Warp::Root4Layer || warp == Warp::LayerEta;
+  return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit;
+}
+
+/// The split point of a Root4LayerSplit axis 0 over [lo0, hi0] at the value eta of axis 2
+/// (clamped to [lo2, hi2]; NaN maps to lo2): the critical cosine sqrt(1 - eta^2) (0 for
+/// eta >= 1), clamped into [lo0 + (hi0 - lo0) / 64, hi0 - (hi0 - lo0) / 64].
+inline double criticalSplit(double lo0, double hi0, double lo2, double hi2, double eta) noexcept {
+  const double ec = !(eta > lo2) ? lo2 : (!(eta < hi2) ? hi2 : eta);
+  const double q = (1.0 - ec) * (1.0 + ec);
+  const double s = q > 0.0 ? std::sqrt(q) : 0.0;
+  const double a = lo0 + (hi0 - lo0) / 64.0, b = hi0 - (hi0 - lo0) / 64.0;
+  return s < a ? a : (s > b ? b : s);
 }
 
 /// The layer scale of an axis 0 with warp `warp0` at the value x1 of axis 1 (`axis1`'s
 /// lo and hi clamp it): layerScale for Root4Layer, etaLayerScale for LayerEta, 1e-12
 /// (ignored) for the other warps.
 inline double layerScaleFor(Warp warp0, double lo1, double hi1, double x1) noexcept {
-  if (warp0 == Warp::Root4Layer) return layerScale(lo1, hi1, x1);
+  if (warp0 == Warp::Root4Layer || warp0 == Warp::Root4LayerSplit) return layerScale(lo1, hi1, x1);
   if (warp0 == Warp::LayerEta) return etaLayerScale(lo1, hi1, x1);
   return 1e-12;
 }
@@ -155,25 +187,81 @@ struct Axis {
   int size = 1;
   Warp warp = Warp::Linear;
 
-  /// True when the axis satisfies the conditions above.
+  /// True when the axis satisfies the conditions above (and (size - 1) % 8 == 0 for
+  /// Root4LayerSplit).
   bool valid() const noexcept {
     return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
-           (warp != Warp::Log || lo > 0.0);
+           (warp != Warp::Log || lo > 0.0) &&
+           (warp != Warp::Root4LayerSplit || (size >= 9 && (size - 1) % 8 == 0));
   }
 
   /// Position of node i: lo + (hi - lo) * w^-1(i / (N - 1)) (for the log warp
   /// lo * (hi / lo)^(i / (N - 1))). Exactly lo at i = 0 and exactly hi at
   /// i = N - 1; i is clamped to [0, N - 1]. An axis of size 1 has its single
   /// node at lo.
-  double node(int i, double c = 1e-12) const noexcept {
+  double node(int i, double c = 1e-12, double split = 0.5) const noexcept {
     if (size <= 1 || i <= 0) return lo;
     if (i >= size - 1) return hi;
-    return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c);
+    return unwarped(static_cast<double>(i) / static_cast<double>(size - 1), c, split);
   }
 
   /// The Root4Layer warp of y in [0, 1] (see Warp), c > 0.
   static double layerWarp(double y, double c) noexcept {
     return 0.5 * (std::sqrt(std::sqrt(y)) + y * (1.0 + c) / (y + c));
+  }
+
+  /// The Root4Layer warp of y in [0, 1] with its collapsed form at c = 0: (y^(1/4) + 1) / 2
+  /// for y > 0 and 1/2 at y <= 0 (and 0 at y <= 0 for c > 0); 1 at y >= 1.
+  static double layerWarpCollapsible(double y, double c) noexcept {
+    if (!(y > 0.0)) return c == 0.0 ? 0.5 : 0.0;
+    if (!(y < 1.0)) return 1.0;
+    if (c == 0.0) return 0.5 * (std::sqrt(std::sqrt(y)) + 1.0);
+    return layerWarp(y, c);
+  }
+
+  /// Inverse of layerWarpCollapsible: y in [0, 1] at t in [0, 1] (0 for t <= 1/2 at c = 0).
+  /// Safeguarded Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
+  /// smooth with slope >= 1/2, as rtsafe (Numerical Recipes 9.4): a bisection of the bracket
+  /// [sa, sb] whenever a step would leave it or would not halve the step before, so it cannot
+  /// cycle. Deterministic, to the last bits.
+  static double layerWarpInverse(double t, double c) noexcept {
+    if (!(t > 0.0)) return 0.0;
+    if (!(t < 1.0)) return 1.0;
+    if (c == 0.0) {
+      if (!(t > 0.5)) return 0.0;
+      const double s = 2.0 * t - 1.0;
+      return (s * s) * (s * s);
+    }
+    double sa = 0.0, sb = 1.0, s = t, step = 1.0, stepBefore = 1.0;
+    for (int k = 0; k < 200; ++k) {
+      const double s4 = (s * s) * (s * s);
+      const double r = 0.5 * (s + s4 * (1.0 + c) / (s4 + c)) - t;
+      if (r == 0.0) break;
+      (r < 0.0 ? sa : sb) = s;
+      const double q = (s4 + c) * (s4 + c);
+      const double slope = 0.5 * (1.0 + 4.0 * (1.0 + c) * c * (s * s * s) / q);
+      double next = s - r / slope;
+      stepBefore = step;
+      if (!(next > sa && next < sb) || std::fabs(2.0 * r) > std::fabs(stepBefore * slope)) {
+        step = 0.5 * (sb - sa);
+        next = sa + step;
+      } else {
+        step = r / slope;
+      }
+      const bool done = std::fabs(next - s) <= 1e-16 * next || !(sb > sa);
+      s = next;
+      if (done) break;
+    }
+    return (s * s) * (s * s);
+  }
+
+  /// True when, in a row where the layer collapsed (c = 0), the node at warped coordinate t
+  /// holds the layer's limit rather than the smooth value: t < collapsedStart() for Root4Layer
+  /// and LayerEta; t < 1/8 or 3/8 < t < 3/4 for Root4LayerSplit (the inner halves of its
+  /// three pieces; a lookup at c = 0 maps to the outer halves only). False for other warps.
+  bool holdsLayerLimit(double t) const noexcept {
+    if (warp == Warp::Root4LayerSplit) return t < 0.125 || (t > 0.375 && t < 0.75);
+    return t < collapsedStart();
   }
 
   /// From which node on a collapsed layer (c = 0) holds smooth values: for
@@ -191,7 +279,8 @@ struct Axis {
   /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
   /// (clamp to edge); a NaN x maps to t = 0 (to 1/2 for a Root4Layer axis at
   /// c = 0).
-  double warped(double x, double c = 1e-12) const noexcept {
+  double warped(double x, double c = 1e-12, double split = 0.5) const noexcept {
+    if (warp == Warp::Root4LayerSplit) return splitWarped(x, c, split);
     const bool collapsed = c == 0.0 && warp == Warp::Root4Layer;
     if (!(x > lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
     if (!(x < hi)) return 1.0;
@@ -230,6 +319,8 @@ struct Axis {
       case Warp::Angle:
         t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi);
         break;
+      case Warp::Root4LayerSplit:
+        break;  // splitWarped
     }
     if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
     return t < 1.0 ? t : 1.0;
@@ -239,7 +330,7 @@ struct Axis {
   /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
   /// form: safeguarded Newton to the last bits (deterministic). A collapsed layer
   /// (c = 0) returns lo for every t <= 1/2 (Root4Layer) or t < 1 (LayerEta).
-  double unwarped(double t, double c = 1e-12) const noexcept {
+  double unwarped(double t, double c = 1e-12, double split = 0.5) const noexcept {
     if (!(t > 0.0)) return lo;
     if (!(t < 1.0)) return hi;
     switch (warp) {
@@ -247,37 +338,19 @@ struct Axis {
         if (!(c > 0.0)) return lo;
         return lo + (hi - lo) * (c * t / (1.0 + c - t));
       }
-      case Warp::Root4Layer: {
-        if (c == 0.0) {
-          if (!(t > 0.5)) return lo;
-          const double s = 2.0 * t - 1.0;
-          return lo + (hi - lo) * ((s * s) * (s * s));
+      case Warp::Root4Layer:
+        return lo + (hi - lo) * layerWarpInverse(t, c);
+      case Warp::Root4LayerSplit: {
+        const double ys = (split - lo) / (hi - lo), m = 0.5 * ys;
+        double y = 0.0;
+        if (t <= 0.25) {
+          y = m * layerWarpInverse(4.0 * t, c / m);
+        } else if (t <= 0.5) {
+          y = ys - m * layerWarpInverse(2.0 - 4.0 * t, c / m);
+        } else {
+          y = ys + (1.0 - ys) * layerWarpInverse(2.0 * t - 1.0, c / (1.0 - ys));
         }
-        // Newton on s = y^(1/4), where the warp (s + s^4 (1 + c) / (s^4 + c)) / 2 is
-        // smooth with slope >= 1/2, safeguarded as rtsafe (Numerical Recipes 9.4): a
-        // bisection of the bracket [sa, sb] whenever a step would leave it or would not
-        // halve the step before, so it cannot cycle. Deterministic, to the last bits.
-        double sa = 0.0, sb = 1.0, s = t, step = 1.0, stepBefore = 1.0;
-        for (int k = 0; k < 200; ++k) {
-          const double s4 = (s * s) * (s * s);
-          const double r = 0.5 * (s + s4 * (1.0 + c) / (s4 + c)) - t;
-          if (r == 0.0) break;
-          (r < 0.0 ? sa : sb) = s;
-          const double q = (s4 + c) * (s4 + c);
-          const double slope = 0.5 * (1.0 + 4.0 * (1.0 + c) * c * (s * s * s) / q);
-          double next = s - r / slope;
-          stepBefore = step;
-          if (!(next > sa && next < sb) || std::fabs(2.0 * r) > std::fabs(stepBefore * slope)) {
-            step = 0.5 * (sb - sa);
-            next = sa + step;
-          } else {
-            step = r / slope;
-          }
-          const bool done = std::fabs(next - s) <= 1e-16 * next || !(sb > sa);
-          s = next;
-          if (done) break;
-        }
-        return lo + (hi - lo) * ((s * s) * (s * s));
+        return lo + (hi - lo) * y;
       }
       case Warp::Linear:
         return lo + (hi - lo) * t;
@@ -300,9 +373,9 @@ struct Axis {
   /// snapped onto it, so texel(node(i)) == i exactly despite the rounding of
   /// the warp round trip, and a lookup at a node returns the stored value bit
   /// for bit. Always 0 on an axis of size 1.
-  double texel(double x, double c = 1e-12) const noexcept {
+  double texel(double x, double c = 1e-12, double split = 0.5) const noexcept {
     if (size <= 1) return 0.0;
-    const double s = warped(x, c) * static_cast<double>(size - 1);
+    const double s = warped(x, c, split) * static_cast<double>(size - 1);
     const double nearest = std::floor(s + 0.5);
     return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
   }
@@ -310,9 +383,26 @@ struct Axis {
   /// Texture coordinate of x for hardware bilinear filtering of a texture of
   /// `size` texels with texel centres at (i + 0.5) / size:
   /// (0.5 + texel(x)) / size. Lies in [0.5 / N, 1 - 0.5 / N].
-  double gpuCoord(double x, double c = 1e-12) const noexcept {
+  double gpuCoord(double x, double c = 1e-12, double split = 0.5) const noexcept {
     const int n = size > 1 ? size : 1;
-    return (0.5 + texel(x, c)) / static_cast<double>(n);
+    return (0.5 + texel(x, c, split)) / static_cast<double>(n);
+  }
+
+ private:
+  /// warped() of a Root4LayerSplit axis (see Warp): x clamped to [lo, hi], NaN to lo.
+  double splitWarped(double x, double c, double split) const noexcept {
+    const double xc = !(x > lo) ? lo : (!(x < hi) ? hi : x);
+    const double y = (xc - lo) / (hi - lo), ys = (split - lo) / (hi - lo), m = 0.5 * ys;
+    double t = 0.0;
+    if (y <= m) {
+      t = 0.25 * layerWarpCollapsible(y / m, c / m);
+    } else if (y <= ys) {
+      t = 0.5 - 0.25 * layerWarpCollapsible((ys - y) / m, c / m);
+    } else {
+      t = 0.5 + 0.5 * layerWarpCollapsible((y - ys) / (1.0 - ys), c / (1.0 - ys));
+    }
+    if (!(t >= 0.0)) return 0.0;
+    return t < 1.0 ? t : 1.0;
   }
 };
 
@@ -348,8 +438,16 @@ struct LutView {
     for (int d = 0; d < dims; ++d) {
       if (!axis[d].valid()) return false;
       if (isLayerWarp(axis[d].warp) && (d != 0 || dims < 2)) return false;
+      if (axis[d].warp == Warp::Root4LayerSplit && dims != 3) return false;
     }
     return true;
+  }
+
+  /// The split point of axis 0 at the point x (criticalSplit of axis 2's value for a
+  /// Root4LayerSplit axis 0; 0.5, ignored, otherwise).
+  double splitAt(const double* x) const noexcept {
+    if (dims != 3 || axis[0].warp != Warp::Root4LayerSplit) return 0.5;
+    return criticalSplit(axis[0].lo, axis[0].hi, axis[2].lo, axis[2].hi, x[2]);
   }
 
   /// The layer scale of axis 0 at the point x (layerScaleFor; 1e-12 when axis 0
@@ -378,9 +476,9 @@ struct LutView {
       return;
     }
     Stencil stencil[3];
-    const double c = layerScaleAt(x);
+    const double c = layerScaleAt(x), split = splitAt(x);
     for (int d = 0; d < 3; ++d) {
-      if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c);
+      if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c, split);
     }
     for (int c = 0; c < channels; ++c) {
       double sum = 0.0;
@@ -433,11 +531,12 @@ struct LutView {
            static_cast<std::size_t>(channels);
   }
 
-  static Stencil makeStencil(const Axis& a, double x, Filter filter, double c) noexcept {
+  static Stencil makeStencil(const Axis& a, double x, Filter filter, double c,
+                             double split) noexcept {
     Stencil st;
     const int n = a.size;
     if (n <= 1) return st;  // single node, weight 1
-    const double s = a.texel(x, c);
+    const double s = a.texel(x, c, split);
     int i = static_cast<int>(std::floor(s));
     if (i > n - 2) i = n - 2;
     if (i < 0) i = 0;
