@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "baker/bake/bake.h"
+#include "baker/quantities/quantity.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {
@@ -59,7 +60,10 @@ std::vector<CatalogueBenchRow> RunCatalogueBench(const CatalogueBenchOptions& op
       NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats is;
       std::vector<double> ref = EvaluateSpec(spec, x, opt.refTol, is);
-      for (size_t c = 0; c < nc; ++c) {
+      // A fitted table's coefficient channels are not integrals: only the integral channels
+      // have a reference (QuantityInfo::firstIntegralChannel).
+      for (size_t c = static_cast<size_t>(Describe(spec.quantity).firstIntegralChannel); c < nc;
+           ++c) {
         double e = std::abs(static_cast<double>(t.data[i * nc + c]) - ref[c]) /
                    std::max(1.0, std::abs(ref[c]));
         if (!(e <= r.sampledError)) r.sampledError = e;
