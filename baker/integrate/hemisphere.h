@@ -38,17 +38,19 @@ struct IntegrationOptions {
 struct IntegrationStats {
   long long evals = 0;  ///< integrand evaluations
   double errorEstimate = 0;
+  bool capped = false;  ///< some adaptive level stopped above its tolerance (IntegrateAdaptive)
 };
 
 /// Runs integral(options, stats) -> Channels<N> to opt.tol absolute where the result is at most
 /// 1 in magnitude and opt.tol relative above. An absolute tolerance on a large integral asks for
 /// more digits than double has (Ward's albedo grows like mu^(-1/2), Duer's like 1 / mu: 7.7e10 at
 /// mu = 1e-12, where 1e-9 absolute is 1e-20 relative and every adaptive level ran to its panel
-/// cap, 20 s per albedo). A first pass with the initial panels of every level only (tol = inf)
-/// estimates the magnitude m; above 1 the tolerance is scaled by it. An estimate far above the
-/// final value (a lobe the first panels overweigh) is redone at the tolerance the value calls for,
-/// so the result never gets a looser tolerance than max(1, |E|) opt.tol. Integrals at most 1 are
-/// integrated exactly as before, at the cost of the first pass's evaluations.
+/// cap, 20 s per albedo). A first pass takes the initial panels of every level only (maxPanels
+/// 0). Where no level is above its tolerance there, it is the absolute result itself (the full
+/// run would compute the same panels and stop: the same bits), and it is returned. Otherwise its
+/// magnitude m sets the tolerance, opt.tol max(1, m). An estimate far above the final value (a
+/// lobe the first panels overweigh) is redone at the tolerance the value calls for, so the
+/// result never gets a looser tolerance than max(1, |E|) opt.tol.
 template <int N, class Integral>
 Channels<N> WithRelativeTolerance(Integral&& integral, const IntegrationOptions& opt,
                                   IntegrationStats& stats) {
@@ -58,10 +60,15 @@ Channels<N> WithRelativeTolerance(Integral&& integral, const IntegrationOptions&
     return m;
   };
   IntegrationOptions first = opt;
-  first.tol = INFINITY;
+  first.maxPanels = 0;
   IntegrationStats firstStats;
-  double scale = magnitude(integral(first, firstStats));
+  Channels<N> estimate = integral(first, firstStats);
   stats.evals += firstStats.evals;
+  if (!firstStats.capped) {
+    stats.errorEstimate = firstStats.errorEstimate;
+    return estimate;
+  }
+  double scale = magnitude(estimate);
   if (!(scale > 1) || !std::isfinite(scale)) return integral(opt, stats);
   IntegrationOptions scaled = opt;
   scaled.tol = opt.tol * scale;
@@ -100,14 +107,15 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
       return g(wo, SphericalDirection(sinT, cosT, phi));
     };
     double e = 0;
-    Channels<N> r = IntegrateAdaptive<N>(inner, phiBreaks, 3, innerTol, opt.maxPanels, &e);
+    Channels<N> r =
+        IntegrateAdaptive<N>(inner, phiBreaks, 3, innerTol, opt.maxPanels, &e, &stats.capped);
     errSum += e;
     return (2 * sinT * cosT) * r;
   };
   double err = 0;
   Channels<N> r =
       IntegrateAdaptive<N>(outer, thetaBreaks.data(), static_cast<int>(thetaBreaks.size()),
-                           opt.tol / 2, opt.maxPanels, &err);
+                           opt.tol / 2, opt.maxPanels, &err, &stats.capped);
   stats.errorEstimate = err;
   return r;
 }
@@ -227,12 +235,14 @@ Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights
     // The outer rule weighs this inner integral by 2 jac: its tolerance scales inversely, so
     // a panel of tiny measure is not integrated to a precision nobody can see.
     double tolHere = innerTol / (2 * jac * panels);
-    return (2 * jac) * IntegrateAdaptive<N>(inner, phis, np, tolHere, opt.maxPanels);
+    return (2 * jac) *
+           IntegrateAdaptive<N>(inner, phis, np, tolHere, opt.maxPanels, nullptr, &stats.capped);
   };
   double xs[32];
   for (int i = 0; i <= panels; ++i) xs[i] = i;
   double err = 0;
-  Channels<N> r = IntegrateAdaptive<N>(outer, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
+  Channels<N> r =
+      IntegrateAdaptive<N>(outer, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err, &stats.capped);
   stats.errorEstimate = err;
   return r;
 }

@@ -119,10 +119,13 @@ Channels<N> GaussKronrod15(F& f, double a, double b, double& err) {
 
 /// Integral of f over [breaks[0], breaks[n-1]] (breaks ascending; each gap is a first panel),
 /// bisecting the panel with the largest error until the summed error estimate is below absTol
-/// or maxPanels is reached. errOut (optional) receives the summed estimate.
+/// or maxPanels is reached. errOut (optional) receives the summed estimate; capped (optional) is
+/// set to true when it stopped with the estimate above absTol (at maxPanels, or at the resolution
+/// of double), and left alone otherwise.
 template <int N, class F>
 Channels<N> IntegrateAdaptive(F&& f, const double* breaks, int n, double absTol,
-                              int maxPanels = 200, double* errOut = nullptr) {
+                              int maxPanels = 200, double* errOut = nullptr,
+                              bool* capped = nullptr) {
   struct Panel {
     double a, b;
     Channels<N> value;
@@ -159,6 +162,7 @@ Channels<N> IntegrateAdaptive(F&& f, const double* breaks, int n, double absTol,
     errSum += p.err;
   }
   if (errOut) *errOut = errSum;
+  if (capped && total > absTol) *capped = true;
   return sum;
 }
 
