@@ -316,6 +316,21 @@ inline void quantityFromStored(StoredForm form, const double* x, double lo0, dou
   for (int c = 0; c < channels; ++c) values[c] *= scale;
 }
 
+/// The point (mu, roughness, eta) a lookup at x reads, each axis the table has clamped to its
+/// range (x holds at most 3 coordinates; the closed forms of the residual stored forms are added
+/// back there); an axis the table lacks (a slice) keeps the value passed in (from kiln.params).
+inline void clampedMuRoughnessEta(const Table& table, const double* x, double& mu, double& r,
+                                  double& eta) {
+  const std::size_t dims = table.axes.size() < 3 ? table.axes.size() : 3;  // x holds 3 values
+  for (std::size_t d = 0; d < dims; ++d) {
+    const TableAxis& ta = table.axes[d];
+    const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
+    if (ta.name == "mu") mu = v;
+    if (ta.name == "roughness") r = v;
+    if (ta.name == "eta") eta = v;
+  }
+}
+
 /// Samples `table` at the physical point p (see storedCoordinates) and writes the quantity
 /// itself, one double per channel, to out: what `kiln sample` prints.
 inline void sampleQuantity(const Table& table, const double* p, double* out,
@@ -349,13 +364,7 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
     // not have (a slice) is read from kiln.params.
     double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
            eta = storedParam(table.params, "eta", 1.5);
-    for (int d = 0; d < dims; ++d) {
-      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
-      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
-      if (ta.name == "mu") mu = v;
-      if (ta.name == "roughness") r = v;
-      if (ta.name == "eta") eta = v;
-    }
+    clampedMuRoughnessEta(table, x, mu, r, eta);
     out[0] += fresnelAlbedoClosedForm(mu, r, eta);
     return;
   }
@@ -370,13 +379,7 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
                       table.quantity.compare(table.quantity.size() - 5, 5, "-exit") == 0;
     double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
            eta = storedParam(table.params, "eta", exit ? 1.0 / 1.5 : 1.5);
-    for (int d = 0; d < dims; ++d) {
-      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
-      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
-      if (ta.name == "mu") mu = v;
-      if (ta.name == "roughness") r = v;
-      if (ta.name == "eta") eta = v;
-    }
+    clampedMuRoughnessEta(table, x, mu, r, eta);
     out[0] += dielectricAlbedoClosedForm(mu, r, eta, table.channels[0] == "E_T_residual");
     return;
   }
@@ -386,19 +389,13 @@ inline void sampleQuantity(const Table& table, const double* p, double* out,
     const double mu = std::min(std::max(x[0], a0.lo), a0.hi);
     const double r = std::min(std::max(x[1], a1.lo), a1.hi);
     out[0] = wardAlbedoFromStored(table.channels[0], out[0], mu, r);
-  return;
+    return;
   }
   if (form == StoredForm::BtdfSplitSumResidual) {
     // T_F_residual (channel 1): the closed form at the point the lookup clamped to.
     double mu = 0.0, r = storedParam(table.params, "roughness", 0.0),
            eta = storedParam(table.params, "eta", 1.5);
-    for (int d = 0; d < dims; ++d) {
-      const TableAxis& ta = table.axes[static_cast<std::size_t>(d)];
-      const double v = std::min(std::max(x[d], ta.axis.lo), ta.axis.hi);
-      if (ta.name == "mu") mu = v;
-      if (ta.name == "roughness") r = v;
-      if (ta.name == "eta") eta = v;
-    }
+    clampedMuRoughnessEta(table, x, mu, r, eta);
     if (n > 1) out[1] += btdfFresnelClosedForm(mu, r, eta);
     return;
   }
