@@ -18,7 +18,7 @@ void RegisterBench(CLI::App& app) {
       "time kiln's bake against Monte Carlo and Gauss-Legendre bakes of the same tables, "
       "with bake and lookup errors; writes DIR/bench.csv and DIR/bench.svg");
   struct Args {
-    std::string out = "bench";
+    std::string out;
     bool quick = false;
     int threads = 0;
     bool catalogue = false;
@@ -27,7 +27,10 @@ void RegisterBench(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   sub->add_flag("--quick", args->quick, "small tables and sweeps: under a minute (CI smoke run)");
-  sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
+  auto* oOut =
+      sub->add_option("--out,-o", args->out,
+                      "output folder (default: bench/ for the full run, bench/quick/ with --quick, "
+                      "bench/catalogue/ with --catalogue)");
   sub->add_option("-j,--threads", args->threads,
                   "threads of the bakes and references (default: all cores); the baker-issue "
                   "comparison always uses 2");
@@ -39,8 +42,11 @@ void RegisterBench(CLI::App& app) {
                                 "with --catalogue: comma-separated table names (default: all)");
   sub->add_option("--samples", args->samples, "with --catalogue: texels re-integrated per table")
       ->capture_default_str();
-  sub->callback([args, oOnly] {
+  sub->callback([args, oOnly, oOut] {
     CheckThreads("bench", args->threads);
+    if (oOut->count() && args->out.empty())
+      throw std::invalid_argument("bench: --out '' names no folder");
+    if (args->out.empty()) args->out = DefaultBenchFolder(args->quick, args->catalogue);
     if (args->catalogue) {
       if (args->quick) throw std::invalid_argument("bench: give --catalogue or --quick, not both");
       if (oOnly->count() && args->only.empty())
