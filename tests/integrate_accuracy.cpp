@@ -33,7 +33,7 @@ TEST_CASE("Half-vector integration of the specular models equals a light-space i
   }
 }
 
-TEST_CASE("Every model's albedo at tolerance 1e-9 agrees with tolerance 1e-12 to 1e-9",
+TEST_CASE("Every model's albedo at tolerance 1e-9 agrees with tolerance 1e-11 to 1e-9",
           "[integrate]") {
   for (const ModelInfo& m : AllModels())
     for (double r : {0.1, 0.5, 1.0})
@@ -42,8 +42,12 @@ TEST_CASE("Every model's albedo at tolerance 1e-9 agrees with tolerance 1e-12 to
         if (TakesRoughness(m)) p.roughness = r;
         AnyModel model = MakeModel(m.id, p);
         IntegrationOptions coarse, fine;
+        // The reference at 1e-11, a hundred times tighter than the check. At 1e-12 the inner
+        // integrals of the peaked lobes (unity-brdf3 at r = 0.1: n ~ 5,000, peak ~ 800) ask for
+        // ~1e-17 relative, below double precision: every level ran to its panel cap (40M
+        // evaluations, the suite's second-slowest test) without being more accurate.
         coarse.tol = 1e-9;
-        fine.tol = 1e-12;
+        fine.tol = 1e-11;
         fine.maxPanels = 2000;
         IntegrationStats s1, s2;
         RhoParts a = DirectionalAlbedo(model, mu, coarse, s1);
