@@ -241,9 +241,8 @@ inline double dielectricExitClosedForm(double mu, double r, double eta, bool tra
     if (thetaO + thetaC < 0.5 * pi) v2 = vOf(thetaO + thetaC);
   }
   // 12-node Gauss-Legendre on [0, 1] (the first half; the rest mirrored: 1 - x, same weight).
-  static const double kX[6] = {0.0092196828766403782, 0.047941371814762601,
-                               0.11504866290284765,   0.20634102285669126,
-                               0.31608425050090994,   0.43738329574426554};
+  static const double kX[6] = {0.0092196828766403782, 0.047941371814762601, 0.11504866290284765,
+                               0.20634102285669126,   0.31608425050090994,  0.43738329574426554};
   static const double kW[6] = {0.023587668193255917, 0.053469662997659088, 0.080039164271673166,
                                0.10158371336153292,  0.11674626826917739,  0.12457352290670144};
   auto integrand = [&](double u) {  // u in [0, 1]: phi = pi u
