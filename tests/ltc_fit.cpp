@@ -168,3 +168,23 @@ TEST_CASE("kiln's own LTC layout is the dfg's axes, on request", "[ltc]") {
   for (const TableSpec& d : DefaultCatalogue()) inDefault |= d.name == "ltc-ggx-kiln";
   CHECK_FALSE(inDefault);
 }
+
+TEST_CASE("A lobe's fused EvalPdf gives the same bits as Eval and Pdf", "[ltc]") {
+  // The fit and its error measure read f and the proposal's density through EvalPdf (one half
+  // vector, one D); the separate calls are the definition.
+  for (const char* model : {"ggx", "beckmann", "blinn-phong"})
+    for (double r : {0.05, 0.4, 1.0})
+      for (double mu : {1.0, 0.5, 0.05}) {
+        LtcLobe lobe(model, r, mu);
+        for (int j = 0; j < 9; ++j)
+          for (int i = 0; i < 9; ++i) {
+            Vec3 wi = lobe.Sample((i + 0.5) / 9, (j + 0.5) / 9);
+            double f = -1, p = -1;
+            lobe.EvalPdf(wi, &f, &p);
+            INFO(model << " r " << r << " mu " << mu << " wi " << wi.x << " " << wi.y << " "
+                       << wi.z);
+            CHECK(f == lobe.Eval(wi));
+            CHECK(p == lobe.Pdf(wi));
+          }
+      }
+}

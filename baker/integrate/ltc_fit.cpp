@@ -128,6 +128,12 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 3;
           alpha_ = m.dist.alpha;
         }
+        if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
+                      std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
+                      std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
+          if (m.form == SmithForm::HeightCorrelated && wo_.z > 0)
+            muLambdaO_ = wo_.z + m.dist.MuLambda(wo_.z);
+        }
       },
       model_);
 }
@@ -170,6 +176,44 @@ double LtcLobe::Pdf(Vec3 wi) const {
   if (oh <= 0) return 0;
   double p = DCos(wm) / (4 * oh);
   return std::isfinite(p) ? p : 0;
+}
+
+void LtcLobe::EvalPdf(Vec3 wi, double* f, double* pdf) const {
+  bool done = false;
+  if (muLambdaO_ >= 0) {
+    std::visit(
+        [&](const auto& m) {
+          using T = std::decay_t<decltype(m)>;
+          if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
+                        std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
+                        std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
+            // Pdf's and Parts' half vector (Normalize is (1 / len) h), D once; Parts' product
+            // with G = mu_o / (mu_o + mu_o Lambda(o) + mu_o mu_l Lambda(l) / mu_l) as GOverMuO.
+            Vec3 h = wo_ + wi;
+            double len = Length(h);
+            *f = *pdf = 0;
+            done = true;
+            if (len <= 0) return;
+            Vec3 wm = (1 / len) * h;
+            double oh = Dot(wo_, wm), mu_o = wo_.z, mu_l = wi.z;
+            double d = wm.z > 0 ? m.dist.D(wm) : 0;
+            if (oh > 0) {
+              double p = d * wm.z / (4 * oh);
+              *pdf = std::isfinite(p) ? p : 0;
+            }
+            if (mu_l <= 0) return;
+            double g = mu_o * (1 / (muLambdaO_ + mu_o * m.dist.MuLambda(mu_l) / mu_l));
+            double value = d * g * m.fresnel(oh) / (4 * mu_o * mu_l);
+            double v = (std::isfinite(value) ? value : 0) * mu_l;
+            *f = std::isfinite(v) ? v : 0;
+          }
+        },
+        model_);
+  }
+  if (!done) {
+    *f = Eval(wi);
+    *pdf = Pdf(wi);
+  }
 }
 
 // --- The LTC ----------------------------------------------------------------------------------
@@ -286,7 +330,8 @@ void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir) 
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double p = lobe.Pdf(l), f = lobe.Eval(l);
+      double p, f;
+      lobe.EvalPdf(l, &f, &p);
       if (!(p > 0) || f <= 0) continue;
       double w = f / p;
       sum += w;
@@ -309,7 +354,8 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      Sample s{l, lobe.Eval(l), lobe.Pdf(l)};
+      Sample s{l, 0, 0};
+      lobe.EvalPdf(l, &s.f, &s.pl);
       if (s.pl > 0 && s.f > 0) sum += s.f / s.pl;
       ls.push_back(s);
     }
@@ -326,7 +372,9 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
-      add(l, lobe.Eval(l), lobe.Pdf(l));
+      double f, pl;
+      lobe.EvalPdf(l, &f, &pl);
+      add(l, f, pl);
     }
   return err / (double(n) * n);
 }
@@ -347,7 +395,8 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double pl = lobe.Pdf(l), f = lobe.Eval(l);
+      double pl, f;
+      lobe.EvalPdf(l, &f, &pl);
       if (!(pl > 0) || !(f > 0)) continue;
       pts.push_back({l, f, 1 / (double(n) * n * pl)});
       z = z + (f / pl) * l;

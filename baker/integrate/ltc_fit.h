@@ -32,6 +32,9 @@ class LtcLobe {
   Vec3 Sample(double u1, double u2) const;
   /// The proposal's density over solid angle at wi.
   double Pdf(Vec3 wi) const;
+  /// Eval(wi) and Pdf(wi) together, the same bits as the two calls (a microfacet lobe shares
+  /// its half vector and D, and keeps mu_o + mu_o Lambda(o) of the height-correlated Smith G2).
+  void EvalPdf(Vec3 wi, double* f, double* pdf) const;
   Vec3 wo() const { return wo_; }
   /// The microfacet alpha of a microfacet lobe, 1 for the others.
   double Alpha() const { return kind_ ? alpha_ : 1; }
@@ -41,6 +44,7 @@ class LtcLobe {
   Vec3 wo_;
   int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal
   double alpha_ = 1;
+  double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
   double DCos(Vec3 wm) const;
 };
 

@@ -101,6 +101,16 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return Channels(ab[0], ab[1]);
 }
 
+/// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt: the bake's rule for GGX,
+/// the verification-grade counts with their declared distance for Beckmann and Blinn-Phong).
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  double r, mu;
+  LtcPoint(spec, x, &r, &mu);
+  const double xm[2] = {mu, r};
+  std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, xm, stats);
+  return Channels(ab[0], ab[1]);
+}
+
 std::string FitText() {
   return "LTC fit (Heitz et al. 2016): Nelder-Mead on the L2 norm over the sphere of normalised "
          "lobe minus LTC, frame on the lobe's average direction, each texel from its neighbour's "
@@ -335,6 +345,7 @@ const QuantityInfo& LtcQuantity() {
     q.onRequest = OnRequest;
     q.usesFixedRule = HasRule;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
