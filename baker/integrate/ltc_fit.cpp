@@ -412,23 +412,59 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   cosPts.reserve(size_t(m) * m);
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < m; ++i) cosPts.push_back(CosineSample((i + 0.5) / m, (j + 0.5) / m));
+  std::vector<double> cx, cy, cz;
+  for (Vec3 c : cosPts) {
+    cx.push_back(c.x);
+    cy.push_back(c.y);
+    cz.push_back(c.z);
+  }
   const int p = opt.power;
   auto pw = [p](double v) { return p == 2 ? v * v : v * v * v; };
   // integral |f - D|^p = integral over the lobe's support (|f - D|^p - D^p) + integral D^p, the
   // first by the lobe's points, the second as the LTC's expectation of D^(p-1) by its own points.
   int dim = isotropic ? 1 : 3;
+  // With p = 2 the lobe's term is sum (f^2 - 2 f D) w: a constant and a weighted sum of D at
+  // fixed points, in a lean loop over the points' coordinates (M^-1 keeps y apart: D needs five
+  // products per point).
+  std::vector<double> px, py, pz, pc;
+  double fConst = 0;
+  if (p == 2) {
+    for (const Point& q : pts) {
+      px.push_back(q.l.x);
+      py.push_back(q.l.y);
+      pz.push_back(q.l.z);
+      pc.push_back(2 * q.f * q.w);
+      fConst += q.f * q.f * q.w;
+    }
+  }
+  const size_t np = px.size();
   auto objective = [&](const double* x) {
     LtcMatrix mt = LtcMatrix::From(FromSearch(x, dim, isotropic, z));
     double sum = 0;
-    for (const Point& q : pts) {
-      double d = mt.Eval(q.l);
-      sum += (pw(std::fabs(q.f - d)) - pw(d)) * q.w;
+    if (p == 2) {
+      const double i0 = mt.inv[0], i2 = mt.inv[2], i4 = mt.inv[4], i6 = mt.inv[6], i8 = mt.inv[8];
+      const double scale = kInvPi * mt.detInv;
+      double cross = 0;
+      for (size_t k = 0; k < np; ++k) {
+        double qx = i0 * px[k] + i2 * pz[k], qy = i4 * py[k], qz = i6 * px[k] + i8 * pz[k];
+        double len2 = qx * qx + qy * qy + qz * qz;
+        cross += pc[k] * (std::max(qz, 0.0) * scale / (len2 * len2));
+      }
+      sum = fConst - cross;
+    } else {
+      for (const Point& q : pts) {
+        double d = mt.Eval(q.l);
+        sum += (pw(std::fabs(q.f - d)) - pw(d)) * q.w;
+      }
     }
-    // At l = M c / |M c| (c a cosine direction): D(l) = c.z / pi |det M^-1| |M c|^3.
+    // At l = M c / |M c| (c a cosine direction): D(l) = c.z / pi |det M^-1| |M c|^3 (M keeps y
+    // apart too).
+    const double m0 = mt.m[0], m2 = mt.m[2], m4 = mt.m[4], m6 = mt.m[6], m8 = mt.m[8];
+    const double k = kInvPi * mt.detInv;
     double own = 0;
-    for (Vec3 c : cosPts) {
-      Vec3 mc = Mul(mt.m, c);
-      double len2 = Dot(mc, mc), d = c.z * kInvPi * mt.detInv * len2 * std::sqrt(len2);
+    for (size_t j = 0; j < cx.size(); ++j) {
+      double ax = m0 * cx[j] + m2 * cz[j], ay = m4 * cy[j], az = m6 * cx[j] + m8 * cz[j];
+      double len2 = ax * ax + ay * ay + az * az, d = cz[j] * k * len2 * std::sqrt(len2);
       own += p == 2 ? d : d * d;
     }
     return sum + own / (double(m) * m);

@@ -111,6 +111,13 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
   return Channels(ab[0], ab[1]);
 }
 
+/// The spec hash's rule version: the fit's and the norm channels' microfacet rule's. "fit3": the
+/// objective takes the lobe's 16 x 16 points (was 8 x 8) and 2 x 15 Nelder-Mead steps before the
+/// free frame (was 2 x 30): every ltc table's coefficients changed.
+const char* RuleVersion(const TableSpec& spec) {
+  return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
+}
+
 std::string FitText() {
   return "LTC fit (Heitz et al. 2016): Nelder-Mead on the L2 norm over the sphere of normalised "
          "lobe minus LTC, frame on the lobe's average direction, each texel from its neighbour's "
@@ -346,6 +353,7 @@ const QuantityInfo& LtcQuantity() {
     q.usesFixedRule = HasRule;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
+    q.fixedRuleVersionOf = RuleVersion;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
