@@ -342,23 +342,34 @@ void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir) 
   *averageDir = Length(dir) > 0 ? Normalize(dir) : Vec3{0, 0, 1};
 }
 
-double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n) {
-  // The lobe's samples first (their f / p give the norm when it is not given).
-  struct Sample {
-    Vec3 l;
-    double f, pl;
-  };
-  std::vector<Sample> ls;
+namespace {
+
+/// The lobe's n x n stratified proposal samples with f and the proposal's density (zeros kept).
+struct LobeSample {
+  Vec3 l;
+  double f, pl;
+};
+
+std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
+  std::vector<LobeSample> ls;
   ls.reserve(size_t(n) * n);
-  double sum = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      Sample s{l, 0, 0};
+      LobeSample s{l, 0, 0};
       lobe.EvalPdf(l, &s.f, &s.pl);
-      if (s.pl > 0 && s.f > 0) sum += s.f / s.pl;
       ls.push_back(s);
     }
+  return ls;
+}
+
+/// LtcFitError from the lobe's own n x n samples `ls` (LobeSamples(lobe, n)).
+double FitErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, double norm,
+                    const LtcMatrix& ltc, int p, int n) {
+  // The lobe's samples first (their f / p give the norm when it is not given).
+  double sum = 0;
+  for (const LobeSample& s : ls)
+    if (s.pl > 0 && s.f > 0) sum += s.f / s.pl;
   if (!(norm > 0)) norm = sum / (double(n) * n);
   double err = 0;
   auto add = [&](Vec3 l, double f, double pl) {
@@ -368,7 +379,7 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
     double e = std::fabs(fl - d);
     err += (p == 3 ? e * e * e : e) / den;
   };
-  for (const Sample& s : ls) add(s.l, s.f, s.pl);
+  for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
@@ -377,6 +388,12 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
       add(l, f, pl);
     }
   return err / (double(n) * n);
+}
+
+}  // namespace
+
+double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n) {
+  return FitErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, p, n);
 }
 
 LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
@@ -392,16 +409,15 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   pts.reserve(size_t(n) * n);
   Vec3 z{0, 0, 0};
   double sum = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double pl, f;
-      lobe.EvalPdf(l, &f, &pl);
-      if (!(pl > 0) || !(f > 0)) continue;
-      pts.push_back({l, f, 1 / (double(n) * n * pl)});
-      z = z + (f / pl) * l;
-      sum += f / pl;
-    }
+  const std::vector<LobeSample> all = LobeSamples(lobe, n);
+  for (const LobeSample& ls : all) {
+    Vec3 l = ls.l;
+    double pl = ls.pl, f = ls.f;
+    if (!(pl > 0) || !(f > 0)) continue;
+    pts.push_back({l, f, 1 / (double(n) * n * pl)});
+    z = z + (f / pl) * l;
+    sum += f / pl;
+  }
   if (!(norm > 0)) norm = sum / (double(n) * n);
   for (Point& q : pts) q.f /= norm;
   z.y = 0;
@@ -492,7 +508,17 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   t.minv[1] = mt.inv[6] / s;
   t.minv[2] = mt.inv[2] / s;
   t.minv[3] = mt.inv[8] / s;
-  t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
+  if (opt.errorSamples > 0 && opt.storedError) {
+    // At the float coefficients a table stores, the norm from the measure's own samples: the
+    // lobe's samples are the fit's when the counts agree.
+    const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]),
+                              float(t.minv[3])};
+    LtcMatrix st = LtcMatrix::FromInverse(stored);
+    t.l1 = opt.errorSamples == n ? FitErrorFrom(all, lobe, -1, st, 1, n)
+                                 : LtcFitError(lobe, -1, st, 1, opt.errorSamples);
+  } else {
+    t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
+  }
   return t;
 }
 

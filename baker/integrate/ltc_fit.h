@@ -78,10 +78,14 @@ struct LtcTexel {
 /// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
 /// the LTC, on a stratified n x n grid each: deterministic).
 struct LtcFitOptions {
-  int fitSamples = 16;      ///< n: the lobe's n x n points of the objective (and the frame)
-  int ltcSamples = 8;       ///< m: the LTC's own m x m points of the objective
-  int power = 2;            ///< the objective's norm: 2 or 3 (the paper's)
-  int errorSamples = 16;    ///< n of the declared L1 error; 0: not measured
+  int fitSamples = 16;    ///< n: the lobe's n x n points of the objective (and the frame)
+  int ltcSamples = 8;     ///< m: the LTC's own m x m points of the objective
+  int power = 2;          ///< the objective's norm: 2 or 3 (the paper's)
+  int errorSamples = 16;  ///< n of the declared L1 error; 0: not measured
+  /// The L1 error at the coefficients rounded to float (what a table stores), the norm from the
+  /// measure's own samples (LtcFitError(lobe, -1, ...)); false: at the fit's double coefficients
+  /// with the fit's norm.
+  bool storedError = false;
   int maxIterations = 15;   ///< Nelder-Mead iterations (each of the two runs)
   int frameSteps = 60;      ///< then the free-frame stage's iterations (0: none)
   double step = 0.1;        ///< Nelder-Mead's initial step (in ln m11, ln m22, m13 / m11)

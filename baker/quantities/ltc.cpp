@@ -75,18 +75,18 @@ std::vector<AxisSpec> KilnAxes(const std::string& model) {
   return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
 }
 
-/// The default catalogue: ltc-ggx (its bake and search fit the catalogue's share, README).
+/// The default catalogue: ltc-ggx and ltc-beckmann (their bakes and searches fit the catalogue's
+/// share, README "LTC tables").
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
-  return {MakeSpec("ggx", DefaultAxes("ggx"))};
+  std::vector<TableSpec> out;
+  for (const char* m : {"ggx", "beckmann"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  return out;
 }
 
-/// On request (`kiln bake --only NAME`): the other specular models' tables, each about 2 s of
-/// CPU with its search, over the catalogue's share (README).
+/// On request (`kiln bake --only NAME`): ltc-blinn-phong (with ltc-beckmann, over the share) and
+/// kiln's own layout of the GGX table (16384 texels), README.
 std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
-  std::vector<TableSpec> out;
-  for (const char* m : {"beckmann", "blinn-phong"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
-  out.push_back(MakeSpec("ggx", KilnAxes("ggx")));
-  return out;
+  return {MakeSpec("blinn-phong", DefaultAxes("blinn-phong")), MakeSpec("ggx", KilnAxes("ggx"))};
 }
 
 bool HasRule(const TableSpec& spec) { return FixedRuleModelFor(spec.model.c_str(), nullptr); }
@@ -240,7 +240,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   // The fit, in its fixed order.
   Grid g = GridOf(spec);
   LtcFitOptions fopt;
-  fopt.errorSamples = 0;  // measured below at the stored (float) coefficients
+  fopt.storedError = true;  // the declared L1 at the stored (float) coefficients: StoredFitError
   std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads, fopt);
   const size_t nr = g.rs.size();
   std::vector<double> l1(n, 0);
@@ -257,7 +257,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
           for (size_t k = rg.begin(); k != rg.end(); ++k) {
             size_t i = g.index[k], ir = k % nr, im = k / nr;
             double r = g.rs[ir], mu = g.mus[im];
-            l1[i] = StoredFitError(spec.model, r, mu, &table.data[i * nc]);
+            l1[i] = fit[k].l1;  // StoredFitError's value, from the fit's lobe samples
             // (not the roughness-0 column: its lobe, alpha = kLtcAlphaFloor, is a near-mirror
             // whose direct integration takes seconds)
             bool sub = ((ir % kPolygonStride == 0 && ir > 0) || ir + 1 == nr) &&
