@@ -128,6 +128,10 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 3;
           alpha_ = m.dist.alpha;
         }
+        if constexpr (std::is_same_v<T, CharlieSheen> || std::is_same_v<T, CharlieSmithSheen>) {
+          kind_ = 4;
+          alpha_ = m.alpha;
+        }
         if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
                       std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
                       std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
@@ -159,6 +163,14 @@ double LtcLobe::DCos(Vec3 wm) const {
 
 Vec3 LtcLobe::Sample(double u1, double u2) const {
   if (kind_ == 0) return CosineSample(u1, u2);
+  if (kind_ == 4) {
+    // Half the points from the clamped cosine, half from the Charlie NDF's D cos(theta_h)
+    // (its CDF in theta_h is sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
+    if (u1 < 0.5) return CosineSample(2 * u1, u2);
+    double s = std::pow(2 * u1 - 1, 1 / (1 / alpha_ + 2));
+    Vec3 wm = SphericalDirection(s, SafeSqrt(1 - s * s), 2 * Pi * u2);
+    return Reflect(wo_, wm);
+  }
   PolarParam h = kind_ == 1   ? GGXDistribution{alpha_}.FromV(1 - u1)
                  : kind_ == 2 ? BeckmannDistribution{alpha_}.FromV(1 - u1)
                               : BlinnPhongDistribution{alpha_}.FromV(1 - u1);
@@ -168,6 +180,17 @@ Vec3 LtcLobe::Sample(double u1, double u2) const {
 
 double LtcLobe::Pdf(Vec3 wi) const {
   if (kind_ == 0) return std::max(0.0, wi.z) * kInvPi;
+  if (kind_ == 4) {
+    double p = 0.5 * std::max(0.0, wi.z) * kInvPi;
+    Vec3 h = wo_ + wi;
+    double len = Length(h);
+    if (!(len > 0)) return p;
+    Vec3 wm = (1 / len) * h;
+    double oh = Dot(wo_, wm);
+    if (oh <= 0 || wm.z <= 0) return p;
+    double q = 0.5 * CharlieD(alpha_, wm.x * wm.x + wm.y * wm.y) * wm.z / (4 * oh);
+    return std::isfinite(q) ? p + q : p;
+  }
   Vec3 h = wo_ + wi;
   double len = Length(h);
   if (len <= 0) return 0;

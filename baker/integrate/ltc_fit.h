@@ -20,7 +20,9 @@ namespace kiln {
 
 /// One lobe f(o, l) mu_l of a model at F = 1, with the proposal the fit's error integrals
 /// sample it by: microfacet lobes (MicrofacetBRDF) by their D cos(theta_m) normals reflected
-/// about o, any other model by the clamped cosine.
+/// about o, the Charlie sheens by an even mixture of the clamped cosine and their NDF's normals
+/// reflected about o (a sheen's grazing lobe that the cosine alone misses), any other model by
+/// the clamped cosine.
 class LtcLobe {
  public:
   /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
@@ -36,13 +38,15 @@ class LtcLobe {
   /// its half vector and D, and keeps mu_o + mu_o Lambda(o) of the height-correlated Smith G2).
   void EvalPdf(Vec3 wi, double* f, double* pdf) const;
   Vec3 wo() const { return wo_; }
-  /// The microfacet alpha of a microfacet lobe, 1 for the others.
-  double Alpha() const { return kind_ ? alpha_ : 1; }
+  /// The microfacet alpha of a microfacet lobe, 1 for the others (a sheen lobe's width does not
+  /// follow its alpha).
+  double Alpha() const { return kind_ >= 1 && kind_ <= 3 ? alpha_ : 1; }
 
  private:
   AnyModel model_;
   Vec3 wo_;
-  int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal
+  int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal,
+                  ///< 4 Charlie sheen: cosine + Charlie D cos mixture
   double alpha_ = 1;
   double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
   double DCos(Vec3 wm) const;
