@@ -8,6 +8,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/integrate/ltc_fit.h"
+#include "baker/integrate/quantities.h"
 #include "baker/tables/catalogue.h"
 #include "kiln/ltc.h"
 #include "test_util.h"
@@ -167,4 +168,45 @@ TEST_CASE("kiln's own LTC layout is the dfg's axes, on request", "[ltc]") {
   bool inDefault = false;
   for (const TableSpec& d : DefaultCatalogue()) inDefault |= d.name == "ltc-ggx-kiln";
   CHECK_FALSE(inDefault);
+}
+
+TEST_CASE("A lobe's fused EvalPdf gives the same bits as Eval and Pdf", "[ltc]") {
+  // The fit and its error measure read f and the proposal's density through EvalPdf (one half
+  // vector, one D); the separate calls are the definition.
+  for (const char* model : {"ggx", "beckmann", "blinn-phong"})
+    for (double r : {0.05, 0.4, 1.0})
+      for (double mu : {1.0, 0.5, 0.05}) {
+        LtcLobe lobe(model, r, mu);
+        for (int j = 0; j < 9; ++j)
+          for (int i = 0; i < 9; ++i) {
+            Vec3 wi = lobe.Sample((i + 0.5) / 9, (j + 0.5) / 9);
+            double f = -1, p = -1;
+            lobe.EvalPdf(wi, &f, &p);
+            INFO(model << " r " << r << " mu " << mu << " wi " << wi.x << " " << wi.y << " "
+                       << wi.z);
+            CHECK(f == lobe.Eval(wi));
+            CHECK(p == lobe.Pdf(wi));
+          }
+      }
+}
+
+TEST_CASE("A Charlie sheen lobe's proposal samples its albedo: Sample and Pdf agree", "[ltc]") {
+  // The mixture of the clamped cosine and the Charlie NDF's reflected normals: the estimate
+  // integral f mu_l = mean f / pdf over its stratified samples is the sheen's directional albedo
+  // (the lobe the ltc-charlie fit normalises by).
+  for (double r : {0.2, 0.5, 1.0})
+    for (double mu : {0.9, 0.5, 0.1}) {
+      LtcLobe lobe("charlie", r, mu);
+      double norm = 0;
+      Vec3 dir;
+      LtcLobeMoments(lobe, 128, &norm, &dir);
+      IntegrationOptions opt;
+      opt.tol = 1e-9;
+      IntegrationStats st;
+      ModelParams p;
+      p.roughness = r;
+      double e = DirectionalAlbedo(MakeModel("charlie", p), mu, opt, st).lin;
+      INFO("r " << r << " mu " << mu << " samples " << norm << " albedo " << e);
+      CHECK(std::fabs(norm - e) < 2e-3 * std::max(1.0, e));
+    }
 }

@@ -128,6 +128,16 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 3;
           alpha_ = m.dist.alpha;
         }
+        if constexpr (std::is_same_v<T, CharlieSheen> || std::is_same_v<T, CharlieSmithSheen>) {
+          kind_ = 4;
+          alpha_ = m.alpha;
+        }
+        if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
+                      std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
+                      std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
+          if (m.form == SmithForm::HeightCorrelated && wo_.z > 0)
+            muLambdaO_ = wo_.z + m.dist.MuLambda(wo_.z);
+        }
       },
       model_);
 }
@@ -153,6 +163,14 @@ double LtcLobe::DCos(Vec3 wm) const {
 
 Vec3 LtcLobe::Sample(double u1, double u2) const {
   if (kind_ == 0) return CosineSample(u1, u2);
+  if (kind_ == 4) {
+    // Half the points from the clamped cosine, half from the Charlie NDF's D cos(theta_h)
+    // (its CDF in theta_h is sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
+    if (u1 < 0.5) return CosineSample(2 * u1, u2);
+    double s = std::pow(2 * u1 - 1, 1 / (1 / alpha_ + 2));
+    Vec3 wm = SphericalDirection(s, SafeSqrt(1 - s * s), 2 * Pi * u2);
+    return Reflect(wo_, wm);
+  }
   PolarParam h = kind_ == 1   ? GGXDistribution{alpha_}.FromV(1 - u1)
                  : kind_ == 2 ? BeckmannDistribution{alpha_}.FromV(1 - u1)
                               : BlinnPhongDistribution{alpha_}.FromV(1 - u1);
@@ -162,6 +180,17 @@ Vec3 LtcLobe::Sample(double u1, double u2) const {
 
 double LtcLobe::Pdf(Vec3 wi) const {
   if (kind_ == 0) return std::max(0.0, wi.z) * kInvPi;
+  if (kind_ == 4) {
+    double p = 0.5 * std::max(0.0, wi.z) * kInvPi;
+    Vec3 h = wo_ + wi;
+    double len = Length(h);
+    if (!(len > 0)) return p;
+    Vec3 wm = (1 / len) * h;
+    double oh = Dot(wo_, wm);
+    if (oh <= 0 || wm.z <= 0) return p;
+    double q = 0.5 * CharlieD(alpha_, wm.x * wm.x + wm.y * wm.y) * wm.z / (4 * oh);
+    return std::isfinite(q) ? p + q : p;
+  }
   Vec3 h = wo_ + wi;
   double len = Length(h);
   if (len <= 0) return 0;
@@ -170,6 +199,44 @@ double LtcLobe::Pdf(Vec3 wi) const {
   if (oh <= 0) return 0;
   double p = DCos(wm) / (4 * oh);
   return std::isfinite(p) ? p : 0;
+}
+
+void LtcLobe::EvalPdf(Vec3 wi, double* f, double* pdf) const {
+  bool done = false;
+  if (muLambdaO_ >= 0) {
+    std::visit(
+        [&](const auto& m) {
+          using T = std::decay_t<decltype(m)>;
+          if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
+                        std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
+                        std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
+            // Pdf's and Parts' half vector (Normalize is (1 / len) h), D once; Parts' product
+            // with G = mu_o / (mu_o + mu_o Lambda(o) + mu_o mu_l Lambda(l) / mu_l) as GOverMuO.
+            Vec3 h = wo_ + wi;
+            double len = Length(h);
+            *f = *pdf = 0;
+            done = true;
+            if (len <= 0) return;
+            Vec3 wm = (1 / len) * h;
+            double oh = Dot(wo_, wm), mu_o = wo_.z, mu_l = wi.z;
+            double d = wm.z > 0 ? m.dist.D(wm) : 0;
+            if (oh > 0) {
+              double p = d * wm.z / (4 * oh);
+              *pdf = std::isfinite(p) ? p : 0;
+            }
+            if (mu_l <= 0) return;
+            double g = mu_o * (1 / (muLambdaO_ + mu_o * m.dist.MuLambda(mu_l) / mu_l));
+            double value = d * g * m.fresnel(oh) / (4 * mu_o * mu_l);
+            double v = (std::isfinite(value) ? value : 0) * mu_l;
+            *f = std::isfinite(v) ? v : 0;
+          }
+        },
+        model_);
+  }
+  if (!done) {
+    *f = Eval(wi);
+    *pdf = Pdf(wi);
+  }
 }
 
 // --- The LTC ----------------------------------------------------------------------------------
@@ -286,7 +353,8 @@ void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir) 
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double p = lobe.Pdf(l), f = lobe.Eval(l);
+      double p, f;
+      lobe.EvalPdf(l, &f, &p);
       if (!(p > 0) || f <= 0) continue;
       double w = f / p;
       sum += w;
@@ -297,22 +365,34 @@ void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir) 
   *averageDir = Length(dir) > 0 ? Normalize(dir) : Vec3{0, 0, 1};
 }
 
-double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n) {
-  // The lobe's samples first (their f / p give the norm when it is not given).
-  struct Sample {
-    Vec3 l;
-    double f, pl;
-  };
-  std::vector<Sample> ls;
+namespace {
+
+/// The lobe's n x n stratified proposal samples with f and the proposal's density (zeros kept).
+struct LobeSample {
+  Vec3 l;
+  double f, pl;
+};
+
+std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
+  std::vector<LobeSample> ls;
   ls.reserve(size_t(n) * n);
-  double sum = 0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      Sample s{l, lobe.Eval(l), lobe.Pdf(l)};
-      if (s.pl > 0 && s.f > 0) sum += s.f / s.pl;
+      LobeSample s{l, 0, 0};
+      lobe.EvalPdf(l, &s.f, &s.pl);
       ls.push_back(s);
     }
+  return ls;
+}
+
+/// LtcFitError from the lobe's own n x n samples `ls` (LobeSamples(lobe, n)).
+double FitErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, double norm,
+                    const LtcMatrix& ltc, int p, int n) {
+  // The lobe's samples first (their f / p give the norm when it is not given).
+  double sum = 0;
+  for (const LobeSample& s : ls)
+    if (s.pl > 0 && s.f > 0) sum += s.f / s.pl;
   if (!(norm > 0)) norm = sum / (double(n) * n);
   double err = 0;
   auto add = [&](Vec3 l, double f, double pl) {
@@ -322,13 +402,21 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
     double e = std::fabs(fl - d);
     err += (p == 3 ? e * e * e : e) / den;
   };
-  for (const Sample& s : ls) add(s.l, s.f, s.pl);
+  for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
-      add(l, lobe.Eval(l), lobe.Pdf(l));
+      double f, pl;
+      lobe.EvalPdf(l, &f, &pl);
+      add(l, f, pl);
     }
   return err / (double(n) * n);
+}
+
+}  // namespace
+
+double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n) {
+  return FitErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, p, n);
 }
 
 LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
@@ -344,15 +432,15 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   pts.reserve(size_t(n) * n);
   Vec3 z{0, 0, 0};
   double sum = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double pl = lobe.Pdf(l), f = lobe.Eval(l);
-      if (!(pl > 0) || !(f > 0)) continue;
-      pts.push_back({l, f, 1 / (double(n) * n * pl)});
-      z = z + (f / pl) * l;
-      sum += f / pl;
-    }
+  const std::vector<LobeSample> all = LobeSamples(lobe, n);
+  for (const LobeSample& ls : all) {
+    Vec3 l = ls.l;
+    double pl = ls.pl, f = ls.f;
+    if (!(pl > 0) || !(f > 0)) continue;
+    pts.push_back({l, f, 1 / (double(n) * n * pl)});
+    z = z + (f / pl) * l;
+    sum += f / pl;
+  }
   if (!(norm > 0)) norm = sum / (double(n) * n);
   for (Point& q : pts) q.f /= norm;
   z.y = 0;
@@ -363,23 +451,59 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   cosPts.reserve(size_t(m) * m);
   for (int j = 0; j < m; ++j)
     for (int i = 0; i < m; ++i) cosPts.push_back(CosineSample((i + 0.5) / m, (j + 0.5) / m));
+  std::vector<double> cx, cy, cz;
+  for (Vec3 c : cosPts) {
+    cx.push_back(c.x);
+    cy.push_back(c.y);
+    cz.push_back(c.z);
+  }
   const int p = opt.power;
   auto pw = [p](double v) { return p == 2 ? v * v : v * v * v; };
   // integral |f - D|^p = integral over the lobe's support (|f - D|^p - D^p) + integral D^p, the
   // first by the lobe's points, the second as the LTC's expectation of D^(p-1) by its own points.
   int dim = isotropic ? 1 : 3;
+  // With p = 2 the lobe's term is sum (f^2 - 2 f D) w: a constant and a weighted sum of D at
+  // fixed points, in a lean loop over the points' coordinates (M^-1 keeps y apart: D needs five
+  // products per point).
+  std::vector<double> px, py, pz, pc;
+  double fConst = 0;
+  if (p == 2) {
+    for (const Point& q : pts) {
+      px.push_back(q.l.x);
+      py.push_back(q.l.y);
+      pz.push_back(q.l.z);
+      pc.push_back(2 * q.f * q.w);
+      fConst += q.f * q.f * q.w;
+    }
+  }
+  const size_t np = px.size();
   auto objective = [&](const double* x) {
     LtcMatrix mt = LtcMatrix::From(FromSearch(x, dim, isotropic, z));
     double sum = 0;
-    for (const Point& q : pts) {
-      double d = mt.Eval(q.l);
-      sum += (pw(std::fabs(q.f - d)) - pw(d)) * q.w;
+    if (p == 2) {
+      const double i0 = mt.inv[0], i2 = mt.inv[2], i4 = mt.inv[4], i6 = mt.inv[6], i8 = mt.inv[8];
+      const double scale = kInvPi * mt.detInv;
+      double cross = 0;
+      for (size_t k = 0; k < np; ++k) {
+        double qx = i0 * px[k] + i2 * pz[k], qy = i4 * py[k], qz = i6 * px[k] + i8 * pz[k];
+        double len2 = qx * qx + qy * qy + qz * qz;
+        cross += pc[k] * (std::max(qz, 0.0) * scale / (len2 * len2));
+      }
+      sum = fConst - cross;
+    } else {
+      for (const Point& q : pts) {
+        double d = mt.Eval(q.l);
+        sum += (pw(std::fabs(q.f - d)) - pw(d)) * q.w;
+      }
     }
-    // At l = M c / |M c| (c a cosine direction): D(l) = c.z / pi |det M^-1| |M c|^3.
+    // At l = M c / |M c| (c a cosine direction): D(l) = c.z / pi |det M^-1| |M c|^3 (M keeps y
+    // apart too).
+    const double m0 = mt.m[0], m2 = mt.m[2], m4 = mt.m[4], m6 = mt.m[6], m8 = mt.m[8];
+    const double k = kInvPi * mt.detInv;
     double own = 0;
-    for (Vec3 c : cosPts) {
-      Vec3 mc = Mul(mt.m, c);
-      double len2 = Dot(mc, mc), d = c.z * kInvPi * mt.detInv * len2 * std::sqrt(len2);
+    for (size_t j = 0; j < cx.size(); ++j) {
+      double ax = m0 * cx[j] + m2 * cz[j], ay = m4 * cy[j], az = m6 * cx[j] + m8 * cz[j];
+      double len2 = ax * ax + ay * ay + az * az, d = cz[j] * k * len2 * std::sqrt(len2);
       own += p == 2 ? d : d * d;
     }
     return sum + own / (double(m) * m);
@@ -407,7 +531,17 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   t.minv[1] = mt.inv[6] / s;
   t.minv[2] = mt.inv[2] / s;
   t.minv[3] = mt.inv[8] / s;
-  t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
+  if (opt.errorSamples > 0 && opt.storedError) {
+    // At the float coefficients a table stores, the norm from the measure's own samples: the
+    // lobe's samples are the fit's when the counts agree.
+    const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]),
+                              float(t.minv[3])};
+    LtcMatrix st = LtcMatrix::FromInverse(stored);
+    t.l1 = opt.errorSamples == n ? FitErrorFrom(all, lobe, -1, st, 1, n)
+                                 : LtcFitError(lobe, -1, st, 1, opt.errorSamples);
+  } else {
+    t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
+  }
   return t;
 }
 

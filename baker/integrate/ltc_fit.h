@@ -20,7 +20,9 @@ namespace kiln {
 
 /// One lobe f(o, l) mu_l of a model at F = 1, with the proposal the fit's error integrals
 /// sample it by: microfacet lobes (MicrofacetBRDF) by their D cos(theta_m) normals reflected
-/// about o, any other model by the clamped cosine.
+/// about o, the Charlie sheens by an even mixture of the clamped cosine and their NDF's normals
+/// reflected about o (a sheen's grazing lobe that the cosine alone misses), any other model by
+/// the clamped cosine.
 class LtcLobe {
  public:
   /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
@@ -32,15 +34,21 @@ class LtcLobe {
   Vec3 Sample(double u1, double u2) const;
   /// The proposal's density over solid angle at wi.
   double Pdf(Vec3 wi) const;
+  /// Eval(wi) and Pdf(wi) together, the same bits as the two calls (a microfacet lobe shares
+  /// its half vector and D, and keeps mu_o + mu_o Lambda(o) of the height-correlated Smith G2).
+  void EvalPdf(Vec3 wi, double* f, double* pdf) const;
   Vec3 wo() const { return wo_; }
-  /// The microfacet alpha of a microfacet lobe, 1 for the others.
-  double Alpha() const { return kind_ ? alpha_ : 1; }
+  /// The microfacet alpha of a microfacet lobe, 1 for the others (a sheen lobe's width does not
+  /// follow its alpha).
+  double Alpha() const { return kind_ >= 1 && kind_ <= 3 ? alpha_ : 1; }
 
  private:
   AnyModel model_;
   Vec3 wo_;
-  int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal
+  int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal,
+                  ///< 4 Charlie sheen: cosine + Charlie D cos mixture
   double alpha_ = 1;
+  double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
   double DCos(Vec3 wm) const;
 };
 
@@ -74,11 +82,15 @@ struct LtcTexel {
 /// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
 /// the LTC, on a stratified n x n grid each: deterministic).
 struct LtcFitOptions {
-  int fitSamples = 8;       ///< n: the lobe's n x n points of the objective (and the frame)
-  int ltcSamples = 8;       ///< m: the LTC's own m x m points of the objective
-  int power = 2;            ///< the objective's norm: 2 or 3 (the paper's)
-  int errorSamples = 16;    ///< n of the declared L1 error; 0: not measured
-  int maxIterations = 30;   ///< Nelder-Mead iterations (each of the two runs)
+  int fitSamples = 16;    ///< n: the lobe's n x n points of the objective (and the frame)
+  int ltcSamples = 8;     ///< m: the LTC's own m x m points of the objective
+  int power = 2;          ///< the objective's norm: 2 or 3 (the paper's)
+  int errorSamples = 16;  ///< n of the declared L1 error; 0: not measured
+  /// The L1 error at the coefficients rounded to float (what a table stores), the norm from the
+  /// measure's own samples (LtcFitError(lobe, -1, ...)); false: at the fit's double coefficients
+  /// with the fit's norm.
+  bool storedError = false;
+  int maxIterations = 15;   ///< Nelder-Mead iterations (each of the two runs)
   int frameSteps = 60;      ///< then the free-frame stage's iterations (0: none)
   double step = 0.1;        ///< Nelder-Mead's initial step (in ln m11, ln m22, m13 / m11)
   double tolerance = 1e-7;  ///< stop when the simplex's objective spread is below this (relative)

@@ -13,6 +13,8 @@
 
 #include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/integrate/ltc_fit.h"
+#include "baker/integrate/quantities.h"
+#include "baker/models/sheen.h"
 #include "baker/quantities/common.h"
 #include "kiln/ltc.h"
 
@@ -31,6 +33,13 @@ constexpr double kLtcAlphaFloor = 1e-5;
 constexpr int kPolygonStride = 21;
 /// The absolute tolerance of the direct integration over a test polygon.
 constexpr double kPolygonTol = 1e-4;
+/// Texels whose lobe's albedo (the norm channel) is below this are left out of the declared fit
+/// error: the L1 is relative to the norm, and a vanishing lobe (a Charlie sheen seen along the
+/// normal at small roughness: its microfibres reflect below the horizon, norm 1e-45 at r = 0.045)
+/// has no shape to fit; such a texel's light is below kLtcMinNorm of the polygon's radiance
+/// whatever its coefficients (its polygon error at most 2 kLtcMinNorm). None for the microfacet
+/// tables.
+constexpr double kLtcMinNorm = 1e-3;
 /// kiln verify re-measures the fit error at every this many texels.
 constexpr size_t kVerifyStride = 11;
 
@@ -64,8 +73,10 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
 
 /// The published layout: 64 x 64, roughness (perceptual, alpha = r^2) across, sqrt(1 - mu)
 /// down, nodes i / 63 on both (a shader reads them at texel centres: uv * 63/64 + 0.5/64).
-std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"roughness", 0, 1, kLtcSize, Warp::Linear},
+/// A sheen lobe's table (ltc-charlie) starts at the sheen tables' smallest roughness
+/// (kSheenTableMinRoughness, models/sheen.h: below it the Charlie NDF collapses onto the horizon).
+std::vector<AxisSpec> DefaultAxes(const std::string& model) {
+  return {{"roughness", IsSheen(model) ? kSheenTableMinRoughness : 0, 1, kLtcSize, Warp::Linear},
           {"sqrt_one_minus_mu", 0, 1, kLtcSize, Warp::Linear}};
 }
 
@@ -75,30 +86,56 @@ std::vector<AxisSpec> KilnAxes(const std::string& model) {
   return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
 }
 
-/// The default catalogue: ltc-ggx (its bake and search fit the catalogue's share, README).
+/// The default catalogue: ltc-ggx and ltc-beckmann (their bakes and searches fit the catalogue's
+/// share, README "LTC tables").
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
-  return {MakeSpec("ggx", DefaultAxes("ggx"))};
-}
-
-/// On request (`kiln bake --only NAME`): the other specular models' tables, each about 2 s of
-/// CPU with its search, over the catalogue's share (README).
-std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
   std::vector<TableSpec> out;
-  for (const char* m : {"beckmann", "blinn-phong"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
-  out.push_back(MakeSpec("ggx", KilnAxes("ggx")));
+  for (const char* m : {"ggx", "beckmann"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }
 
-bool HasRule(const TableSpec& spec) { return FixedRuleModelFor(spec.model.c_str(), nullptr); }
+/// On request (`kiln bake --only NAME`): ltc-blinn-phong (with ltc-beckmann, over the share),
+/// kiln's own layout of the GGX table (16384 texels) and the Charlie sheen's table (README).
+std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
+  return {MakeSpec("blinn-phong", DefaultAxes("blinn-phong")), MakeSpec("ggx", KilnAxes("ggx")),
+          MakeSpec("charlie", DefaultAxes("charlie"))};
+}
+
+bool HasRule(const TableSpec& spec) {
+  return FixedRuleModelFor(spec.model.c_str(), nullptr) || IsSheen(spec.model);
+}
 
 std::vector<double> Channels(double a, double b) { return {0, 0, 0, 0, a + b, b}; }
+
+/// A sheen lobe's channels: its albedo E(mu) as the norm (F = 1), no Fresnel term (0; a sheen
+/// is not weighted by one).
+std::vector<double> SheenChannels(double e) { return {0, 0, 0, 0, e, 0}; }
 
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   double r, mu;
   LtcPoint(spec, x, &r, &mu);
   const double xm[2] = {mu, r};
+  if (IsSheen(spec.model)) return SheenChannels(SheenFixedRuleAt(spec, xm, stats)[0]);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, xm, stats);
   return Channels(ab[0], ab[1]);
+}
+
+/// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt: the bake's rule for GGX,
+/// the verification-grade counts with their declared distance for Beckmann and Blinn-Phong).
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  double r, mu;
+  LtcPoint(spec, x, &r, &mu);
+  const double xm[2] = {mu, r};
+  if (IsSheen(spec.model)) return SheenChannels(SheenSearchRuleAt(spec, xm, stats)[0]);
+  std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, xm, stats);
+  return Channels(ab[0], ab[1]);
+}
+
+/// The spec hash's rule version: the fit's and the norm channels' microfacet rule's. "fit3": the
+/// objective takes the lobe's 16 x 16 points (was 8 x 8) and 2 x 15 Nelder-Mead steps before the
+/// free frame (was 2 x 30): every ltc table's coefficients changed.
+const char* RuleVersion(const TableSpec& spec) {
+  return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
 }
 
 std::string FitText() {
@@ -108,6 +145,7 @@ std::string FitText() {
 }
 
 std::string FixedRuleMethod(const TableSpec& spec) {
+  if (IsSheen(spec.model)) return FitText() + "norm (fresnel 0): " + SheenFixedRuleMethod(spec);
   return FitText() + "norm and fresnel: " + MicrofacetFixedRuleMethod(spec);
 }
 
@@ -117,6 +155,8 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   LtcPoint(spec, x, &r, &mu);
   IntegrationOptions opt;
   opt.tol = tol;
+  if (IsSheen(spec.model))
+    return SheenChannels(DirectionalAlbedo(ModelInDomain(spec.model, r), mu, opt, stats).lin);
   std::array<double, 2> ab = SplitSumDFG(ModelAt(spec.model, r), mu, opt, stats);
   return Channels(ab[0], ab[1]);
 }
@@ -223,7 +263,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   // The fit, in its fixed order.
   Grid g = GridOf(spec);
   LtcFitOptions fopt;
-  fopt.errorSamples = 0;  // measured below at the stored (float) coefficients
+  fopt.storedError = true;  // the declared L1 at the stored (float) coefficients: StoredFitError
   std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads, fopt);
   const size_t nr = g.rs.size();
   std::vector<double> l1(n, 0);
@@ -240,7 +280,8 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
           for (size_t k = rg.begin(); k != rg.end(); ++k) {
             size_t i = g.index[k], ir = k % nr, im = k / nr;
             double r = g.rs[ir], mu = g.mus[im];
-            l1[i] = StoredFitError(spec.model, r, mu, &table.data[i * nc]);
+            // StoredFitError's value, from the fit's lobe samples; -1: left out (kLtcMinNorm)
+            l1[i] = table.data[i * nc + 4] >= kLtcMinNorm ? fit[k].l1 : -1;
             // (not the roughness-0 column: its lobe, alpha = kLtcAlphaFloor, is a near-mirror
             // whose direct integration takes seconds)
             bool sub = ((ir % kPolygonStride == 0 && ir > 0) || ir + 1 == nr) &&
@@ -268,10 +309,14 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
         });
   });
   double max = 0, sum = 0, pmax = 0, psum = 0;
+  size_t measured = 0;
   long long pn = 0;
   for (size_t i = 0; i < n; ++i) {
-    max = std::max(max, l1[i]);
-    sum += l1[i] * l1[i];
+    if (l1[i] >= 0) {
+      max = std::max(max, l1[i]);
+      sum += l1[i] * l1[i];
+      ++measured;
+    }
     if (polygon[i] >= 0) {
       pmax = std::max(pmax, polygon[i]);
       psum += polygon[i] * polygon[i];
@@ -279,10 +324,16 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
     }
   }
   table.fitError.max = max;
-  table.fitError.rms = std::sqrt(sum / double(n));
+  table.fitError.rms = measured ? std::sqrt(sum / double(measured)) : 0;
   table.fitError.polygonMax = pmax;
   table.fitError.polygonRms = pn ? std::sqrt(psum / double(pn)) : 0;
   table.fitError.method = FitErrorMethod();
+  if (measured < n) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "; %zu texels whose norm is below %g left out", n - measured,
+                  kLtcMinNorm);
+    table.fitError.method += buf;
+  }
 }
 
 /// kiln verify: the fit error of the stored coefficients at every kVerifyStride-th texel, which
@@ -301,6 +352,7 @@ std::string VerifyTable(const Table& table, int threads, std::string& summary) {
                           double x[3], r, mu;
                           NodeCoordinates(spec, i, x);
                           LtcPoint(spec, x, &r, &mu);
+                          if (table.data[i * nc + 4] < kLtcMinNorm) continue;  // left out
                           l1[i] = StoredFitError(spec.model, r, mu, &table.data[i * nc]);
                         }
                       });
@@ -335,6 +387,8 @@ const QuantityInfo& LtcQuantity() {
     q.onRequest = OnRequest;
     q.usesFixedRule = HasRule;
     q.fixedRule = FixedRule;
+    q.searchRule = SearchRule;
+    q.fixedRuleVersionOf = RuleVersion;
     q.fixedRuleMethod = FixedRuleMethod;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
