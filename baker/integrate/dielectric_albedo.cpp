@@ -41,6 +41,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
 
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -390,9 +394,86 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
   return {sum[0], sum[1]};
 }
 
+namespace {
+
+/// The bake rule's recent results, {E_R, E_T} and the evaluations they took, by the bits of
+/// (mu, alpha, eta): one integration gives both channels, and albedo-r and albedo-t (or their
+/// -exit pair, or two averages) baked in one process read the same nodes, so the second table
+/// finds its values here. A hit returns the bits the rule computes (it is deterministic) and
+/// charges the evaluations the integration took, so files and manifests do not depend on what
+/// else was baked. Sharded by the key's hash (one lock each); at most kMemoPerShard entries per
+/// shard, then new points are not kept (the lookup-error search's scattered points would
+/// otherwise fill it).
+class RuleMemo {
+ public:
+  struct Value {
+    std::array<double, 2> e;
+    long long evals;
+  };
+  bool Find(double mu, double alpha, double eta, Value& out) {
+    const Key k = KeyOf(mu, alpha, eta);
+    Shard& s = shards_[ShardOf(k)];
+    std::lock_guard<std::mutex> lock(s.mutex);
+    auto it = s.map.find(k);
+    if (it == s.map.end()) return false;
+    out = it->second;
+    return true;
+  }
+  void Keep(double mu, double alpha, double eta, const Value& v) {
+    const Key k = KeyOf(mu, alpha, eta);
+    Shard& s = shards_[ShardOf(k)];
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if (s.map.size() < kMemoPerShard) s.map.emplace(k, v);
+  }
+
+ private:
+  struct Key {
+    std::uint64_t mu, alpha, eta;
+    bool operator==(const Key& o) const { return mu == o.mu && alpha == o.alpha && eta == o.eta; }
+  };
+  struct KeyHash {
+    size_t operator()(const Key& k) const {
+      std::uint64_t h = k.mu * 0x9E3779B97F4A7C15ull;
+      h = (h ^ (h >> 29) ^ k.alpha) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 31) ^ k.eta) * 0x94D049BB133111EBull;
+      return static_cast<size_t>(h ^ (h >> 32));
+    }
+  };
+  static constexpr int kShards = 16;
+  static constexpr size_t kMemoPerShard = 16384;  // 262,144 points: about 20 MB at most
+  struct Shard {
+    std::mutex mutex;
+    std::unordered_map<Key, Value, KeyHash> map;
+  };
+  static std::uint64_t Bits(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  }
+  static Key KeyOf(double mu, double alpha, double eta) {
+    return {Bits(mu), Bits(alpha), Bits(eta)};
+  }
+  static int ShardOf(const Key& k) { return static_cast<int>((KeyHash()(k) >> 7) % kShards); }
+  Shard shards_[kShards];
+};
+
+RuleMemo& Memo() {
+  static RuleMemo memo;
+  return memo;
+}
+
+}  // namespace
+
 std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
                                                 long long* evals) {
-  return FixedRuleDielectricAlbedo(mu, alpha, eta, kTuned, evals);
+  RuleMemo::Value v;
+  if (!Memo().Find(mu, alpha, eta, v)) {
+    v.evals = 0;
+    v.e = FixedRuleDielectricAlbedo(mu, alpha, eta, kTuned, &v.evals);
+    Memo().Keep(mu, alpha, eta, v);
+  }
+  if (evals) *evals += v.evals;
+  return v.e;
 }
 
 }  // namespace kiln
