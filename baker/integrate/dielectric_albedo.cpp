@@ -36,7 +36,10 @@
 //    4 or 2 nodes instead of the bulk's 24; an inner panel takes nodes by its width in phi.
 //  - The grazing sweep's panels grow by 16 instead of 4 (the smoothstep of a panel already
 //    grades towards both ends); masking and tail sequences keep ratio 4.
-// Every panel sums its nodes in order and the panels in order: deterministic.
+// Every panel sums its nodes in order and the panels in order: deterministic. Both rules walk
+// the panels with dielectric_walk.h (shared with the BTDF pair's rules, dielectric_btdf.cpp);
+// this file supplies the thresholds and the integrand. The bake's entry point remembers its
+// recent {E_R, E_T} (RuleMemo below): the E_R and E_T tables of one bake integrate each node once.
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
