@@ -86,13 +86,20 @@ TEST_CASE("a coarser glass rule leaves its bound: the grid detects under-resolut
 }
 
 TEST_CASE("the glass rule gives the same bits on every call", "[dielectric][glass-rule]") {
+  // The second call finds the first's result in the rule's memo (albedo-r and albedo-t share
+  // one integration): the same bits and the same evaluations charged as integrating again.
+  const DielectricRuleOptions tunedOptions = TunedDielectricRuleOptions();
   for (double eta : {1.1, 1 / 1.1})
     for (double mu : {0.0, 0.3, 1.0}) {
-      long long e1 = 0, e2 = 0;
+      long long e1 = 0, e2 = 0, e3 = 0;
       const std::array<double, 2> a = FixedRuleDielectricAlbedo(mu, 0.05, eta, &e1);
       const std::array<double, 2> b = FixedRuleDielectricAlbedo(mu, 0.05, eta, &e2);
+      const std::array<double, 2> c = FixedRuleDielectricAlbedo(mu, 0.05, eta, tunedOptions, &e3);
       CHECK(a[0] == b[0]);
       CHECK(a[1] == b[1]);
+      CHECK(a[0] == c[0]);
+      CHECK(a[1] == c[1]);
       CHECK(e1 == e2);
+      CHECK(e1 == e3);
     }
 }

@@ -36,12 +36,20 @@
 //    4 or 2 nodes instead of the bulk's 24; an inner panel takes nodes by its width in phi.
 //  - The grazing sweep's panels grow by 16 instead of 4 (the smoothstep of a panel already
 //    grades towards both ends); masking and tail sequences keep ratio 4.
-// Every panel sums its nodes in order and the panels in order: deterministic.
+// Every panel sums its nodes in order and the panels in order: deterministic. Both rules walk
+// the panels with dielectric_walk.h (shared with the BTDF pair's rules, dielectric_btdf.cpp);
+// this file supplies the thresholds and the integrand. The bake's entry point remembers its
+// recent {E_R, E_T} (RuleMemo below): the E_R and E_T tables of one bake integrate each node once.
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <mutex>
+#include <unordered_map>
 
+#include "baker/integrate/dielectric_walk.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
 #include "baker/models/microfacet.h"
@@ -50,7 +58,7 @@
 namespace kiln {
 namespace {
 
-constexpr int kMaxBreaks = 64;
+constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
 
 /// The view and interface: what every evaluation needs.
 struct View {
@@ -59,6 +67,10 @@ struct View {
   GGXDistribution dist;
   /// Ratios of the geometric panel sequences (DielectricRuleOptions): masking, grazing, tail.
   double maskingRatio = 4, grazingRatio = 4, tailRatio = 4;
+  // The problem dielectric_walk.h walks (defined below).
+  int ThetaBreaks(double* thetas) const;
+  int PhiBreaks(PolarParam h, double* phis) const;
+  Channels<2> Integrand(PolarParam h, double cp) const;
 };
 
 View MakeView(double mu, double alpha, double eta) {
@@ -254,36 +266,9 @@ int ThetaBreaks(const View& v, double* thetas) {
   return n;
 }
 
-/// The smoothstep map of panel [a, b] at t in [0, 1]: the point and its Jacobian.
-inline double Smooth(double a, double b, double t, double* jac) {
-  *jac = (b - a) * 6 * t * (1 - t);
-  return a + (b - a) * t * t * (3 - 2 * t);
-}
-
-/// The adaptive rule's walk: `inner(h, phis, n, weight)` integrates one azimuth circle over its
-/// panels, `outer(f, vs, n)` the circles over v.
-template <class Inner, class Outer>
-Channels<2> Integrate(const View& v, Inner&& inner, Outer&& outer) {
-  double thetas[kMaxBreaks];
-  int nt = ThetaBreaks(v, thetas);
-  double vs[kMaxBreaks];
-  for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : v.dist.VFromTheta(thetas[i]);
-  int panels = nt - 1;
-  // Outer variable x in [0, panels], panel i at [i, i + 1], v decreasing from vs[i] to vs[i+1].
-  auto circle = [&](double x) -> Channels<2> {
-    int i = std::min(static_cast<int>(x), panels - 1);
-    double t = x - i, jac;
-    double vv = Smooth(vs[i], vs[i + 1], t, &jac);
-    jac = -jac;
-    if (!(vv > 0) || !(jac > 0)) return Channels<2>{};
-    PolarParam h = v.dist.FromV(vv);
-    double phis[40];
-    int np = PhiBreaks(v, h, phis);
-    if (np < 2) return Channels<2>{};
-    return (jac / Pi) * inner(h, phis, np, jac);
-  };
-  return outer(circle, panels);
-}
+int View::ThetaBreaks(double* thetas) const { return kiln::ThetaBreaks(*this, thetas); }
+int View::PhiBreaks(PolarParam h, double* phis) const { return kiln::PhiBreaks(*this, h, phis); }
+Channels<2> View::Integrand(PolarParam h, double cp) const { return kiln::Integrand(*this, h, cp); }
 
 /// The bake's node counts and ratios: found by a descent on the evaluations per point over a
 /// grid of 1,716 (mu, r, eta) of the tables' domain, each step kept only while the worst
@@ -293,11 +278,18 @@ Channels<2> Integrate(const View& v, Inner&& inner, Outer&& outer) {
 const DielectricRuleOptions kTuned = {
     {24, 12, 4, 2}, {1e-2, 1e-4, 1e-6}, {12, 10, 6, 6}, {1, 0.1, 0.02}, 4, 16, 4};
 
-/// The node count of a class: counts[k] for the first k with x > bounds[k], else counts[3].
-inline int NodesOf(const int* counts, const double* bounds, double x) {
-  for (int k = 0; k < 3; ++k)
-    if (x > bounds[k]) return counts[k];
-  return counts[3];
+/// The walk's node classes of the options.
+dielectric_walk::NodeClasses ClassesOf(const DielectricRuleOptions& o) {
+  dielectric_walk::NodeClasses c;
+  for (int k = 0; k < 4; ++k) {
+    c.outerNodes[k] = o.outerNodes[k];
+    c.innerNodes[k] = o.innerNodes[k];
+  }
+  for (int k = 0; k < 3; ++k) {
+    c.outerWeight[k] = o.outerWeight[k];
+    c.innerWidth[k] = o.innerWidth[k];
+  }
+  return c;
 }
 
 }  // namespace
@@ -309,33 +301,8 @@ std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {
 
 std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
                                        const IntegrationOptions& opt, IntegrationStats& stats) {
-  View v = MakeView(mu, alpha, eta);
-  double innerTol = opt.tol / 10;
-  int panelsSeen = 1;
-  auto inner = [&](PolarParam h, const double* phis, int np, double jac) {
-    auto f = [&](double x) -> Channels<2> {
-      int i = std::min(static_cast<int>(x), np - 2);
-      double t = x - i, dj;
-      double phi = Smooth(phis[i], phis[i + 1], t, &dj);
-      ++stats.evals;
-      return dj * Integrand(v, h, std::cos(phi));
-    };
-    double xs[40];
-    for (int i = 0; i < np; ++i) xs[i] = i;
-    // The outer rule weighs this by jac / pi: a circle of tiny weight needs less precision.
-    double tolHere = innerTol * Pi / (jac * panelsSeen);
-    return IntegrateAdaptive<2>(f, xs, np, tolHere, opt.maxPanels);
-  };
-  double err = 0;
-  auto outer = [&](auto& circle, int panels) {
-    panelsSeen = panels;
-    double xs[kMaxBreaks];
-    for (int i = 0; i <= panels; ++i) xs[i] = i;
-    return IntegrateAdaptive<2>(circle, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
-  };
-  Channels<2> r = Integrate(v, inner, outer);
-  stats.errorEstimate = err;
-  return r;
+  const Channels<2> r = dielectric_walk::AdaptiveWalk(MakeView(mu, alpha, eta), opt, stats);
+  return {r[0], r[1]};
 }
 
 DielectricRuleOptions TunedDielectricRuleOptions() { return kTuned; }
@@ -347,52 +314,90 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
   v.maskingRatio = opt.maskingRatio;
   v.grazingRatio = opt.grazingRatio;
   v.tailRatio = opt.tailRatio;
-  double thetas[kMaxBreaks];
-  const int nt = ThetaBreaks(v, thetas);
-  double vs[kMaxBreaks];
-  for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : v.dist.VFromTheta(thetas[i]);
-  long long count = 0;
-  Channels<2> sum{0, 0};
-  // Panels in order of v, nodes in order within each: one summation order (deterministic).
-  for (int i = 0; i + 1 < nt; ++i) {
-    // The panel's weight: its share of dv times the integrand's bound at its small-v end,
-    // (mu + sin_o tan theta_m) / gDen (the tail panel, ending at v = 0, is unbounded: top class).
-    const double vb = vs[i + 1];
-    const double weight =
-        vb > 0 ? (vs[i] - vb) * (v.mu + v.st * v.dist.alpha * std::sqrt((1 - vb) / vb)) / v.gDen
-               : INFINITY;
-    const GaussRule01& go = CachedGaussLegendre01(NodesOf(opt.outerNodes, opt.outerWeight, weight));
-    for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      double jac;
-      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
-      jac = -jac;
-      if (!(vv > 0) || !(jac > 0)) continue;
-      const PolarParam h = v.dist.FromV(vv);
-      double phis[40];
-      const int np = PhiBreaks(v, h, phis);
-      Channels<2> circle{0, 0};
-      for (int p = 0; p + 1 < np; ++p) {
-        const double width = phis[p + 1] - phis[p];
-        if (!(width > 0)) continue;
-        const GaussRule01& gi =
-            CachedGaussLegendre01(NodesOf(opt.innerNodes, opt.innerWidth, width));
-        for (size_t k = 0; k < gi.x.size(); ++k) {
-          double dj;
-          const double phi = Smooth(phis[p], phis[p + 1], gi.x[k], &dj);
-          ++count;
-          circle += (gi.w[k] * dj) * Integrand(v, h, std::cos(phi));
-        }
-      }
-      sum += (go.w[ko] * jac / Pi) * circle;
-    }
-  }
-  if (evals) *evals += count;
-  return {sum[0], sum[1]};
+  const Channels<2> r = dielectric_walk::FixedWalk(v, ClassesOf(opt), evals);
+  return {r[0], r[1]};
 }
+
+namespace {
+
+/// The bake rule's recent results, {E_R, E_T} and the evaluations they took, by the bits of
+/// (mu, alpha, eta): one integration gives both channels, and albedo-r and albedo-t (or their
+/// -exit pair, or two averages) baked in one process read the same nodes, so the second table
+/// finds its values here. A hit returns the bits the rule computes (it is deterministic) and
+/// charges the evaluations the integration took, so files and manifests do not depend on what
+/// else was baked. Sharded by the key's hash (one lock each); at most kMemoPerShard entries per
+/// shard, then new points are not kept (the lookup-error search's scattered points would
+/// otherwise fill it).
+class RuleMemo {
+ public:
+  struct Value {
+    std::array<double, 2> e;
+    long long evals;
+  };
+  bool Find(double mu, double alpha, double eta, Value& out) {
+    const Key k = KeyOf(mu, alpha, eta);
+    Shard& s = shards_[ShardOf(k)];
+    std::lock_guard<std::mutex> lock(s.mutex);
+    auto it = s.map.find(k);
+    if (it == s.map.end()) return false;
+    out = it->second;
+    return true;
+  }
+  void Keep(double mu, double alpha, double eta, const Value& v) {
+    const Key k = KeyOf(mu, alpha, eta);
+    Shard& s = shards_[ShardOf(k)];
+    std::lock_guard<std::mutex> lock(s.mutex);
+    if (s.map.size() < kMemoPerShard) s.map.emplace(k, v);
+  }
+
+ private:
+  struct Key {
+    std::uint64_t mu, alpha, eta;
+    bool operator==(const Key& o) const { return mu == o.mu && alpha == o.alpha && eta == o.eta; }
+  };
+  struct KeyHash {
+    size_t operator()(const Key& k) const {
+      std::uint64_t h = k.mu * 0x9E3779B97F4A7C15ull;
+      h = (h ^ (h >> 29) ^ k.alpha) * 0xBF58476D1CE4E5B9ull;
+      h = (h ^ (h >> 31) ^ k.eta) * 0x94D049BB133111EBull;
+      return static_cast<size_t>(h ^ (h >> 32));
+    }
+  };
+  static constexpr int kShards = 16;
+  static constexpr size_t kMemoPerShard = 16384;  // 262,144 points: about 20 MB at most
+  struct Shard {
+    std::mutex mutex;
+    std::unordered_map<Key, Value, KeyHash> map;
+  };
+  static std::uint64_t Bits(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  }
+  static Key KeyOf(double mu, double alpha, double eta) {
+    return {Bits(mu), Bits(alpha), Bits(eta)};
+  }
+  static int ShardOf(const Key& k) { return static_cast<int>((KeyHash()(k) >> 7) % kShards); }
+  Shard shards_[kShards];
+};
+
+RuleMemo& Memo() {
+  static RuleMemo memo;
+  return memo;
+}
+
+}  // namespace
 
 std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
                                                 long long* evals) {
-  return FixedRuleDielectricAlbedo(mu, alpha, eta, kTuned, evals);
+  RuleMemo::Value v;
+  if (!Memo().Find(mu, alpha, eta, v)) {
+    v.evals = 0;
+    v.e = FixedRuleDielectricAlbedo(mu, alpha, eta, kTuned, &v.evals);
+    Memo().Keep(mu, alpha, eta, v);
+  }
+  if (evals) *evals += v.evals;
+  return v.e;
 }
 
 }  // namespace kiln

@@ -38,7 +38,11 @@ struct DielectricRuleOptions {
 DielectricRuleOptions TunedDielectricRuleOptions();
 
 /// {E_R, E_T} as DielectricAlbedo, by the fixed rule: deterministic, the same arguments give the
-/// same bits. evals (optional) accumulates integrand evaluations.
+/// same bits. evals (optional) accumulates integrand evaluations. The overload with the bake's
+/// node counts (no options) remembers its recent results (about 260,000 points, by the bits of
+/// the arguments): albedo-r and albedo-t, or the -exit pair, or the averages, baked in one
+/// process share one integration per node; a remembered point returns the same bits and charges
+/// the evaluations its integration took.
 std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
                                                 const DielectricRuleOptions& opt,
                                                 long long* evals = nullptr);

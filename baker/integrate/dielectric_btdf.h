@@ -25,10 +25,15 @@ namespace kiln {
 std::array<double, 2> DielectricBtdfPair(double mu, double alpha, double eta,
                                          const IntegrationOptions& opt, IntegrationStats& stats);
 
-/// Node counts of the fixed rule: Gauss nodes per outer (v) and inner (phi_m) panel.
+/// Node counts of the fixed rule by panel class, as DielectricRuleOptions (dielectric_walk.h,
+/// NodeClasses): an outer (v) panel takes outerNodes[k] for the first k with its weight bound
+/// W > outerWeight[k] (outerNodes[3] below them all), an inner (phi_m) panel innerNodes[k] by
+/// its width in radians against innerWidth. The defaults: 12 x 12 on every panel.
 struct DielectricBtdfRuleOptions {
-  int outerNodes = 12;
-  int innerNodes = 12;
+  int outerNodes[4] = {12, 12, 12, 12};
+  double outerWeight[3] = {1e-2, 1e-4, 1e-6};
+  int innerNodes[4] = {12, 12, 12, 12};
+  double innerWidth[3] = {1, 0.1, 0.02};
 };
 
 /// The bake's node counts (dielectric_btdf.cpp, kTuned).

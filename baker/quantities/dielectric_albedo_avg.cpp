@@ -84,9 +84,10 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
 }
 
 std::string FixedRuleMethod(const TableSpec&) {
-  return "fixed Gauss rule over mu (8 nodes per panel, panels graded from the GGX layer at mu = "
-         "0 and, eta < 1, in sqrt|mu - mu_c| about the critical cosine) of E by the 3D tables' "
-         "rule (integrate/dielectric_albedo_avg.cpp)";
+  return "fixed Gauss rule over mu (" + std::to_string(kDielectricAverageNodes) +
+         " nodes per panel, panels graded from the GGX layer at mu = 0, in sqrt(1 - mu) towards "
+         "mu = 1 and, eta < 1, in sqrt|mu - mu_c| about the critical cosine and sqrt|mu - eta| "
+         "about mu = eta) of E by the 3D tables' rule (integrate/dielectric_albedo_avg.cpp)";
 }
 
 std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
@@ -125,7 +126,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
-  q.fixedRuleVersion = "3";  // E by the graded rule (integrate/dielectric_albedo.cpp)
+  q.fixedRuleVersion = "4";  // mu panels at mu = eta and towards 1, 10 nodes (integrate/...avg.cpp)
   q.evaluate = Evaluate;
   q.smoothLimit = SmoothLimit;
   q.method = Method;

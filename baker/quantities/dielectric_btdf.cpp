@@ -84,8 +84,10 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
 std::string FixedRuleMethod(const TableSpec&) {
   DielectricBtdfRuleOptions o = TunedDielectricBtdfRuleOptions();
   return "fixed Gauss rule over the visible microfacet normals (v, phi_m), " +
-         std::to_string(o.outerNodes) + " x " + std::to_string(o.innerNodes) +
-         " nodes per panel, panels at the horizon, the Fresnel layer and GGX's tail, "
+         std::to_string(o.outerNodes[0]) + " x " + std::to_string(o.innerNodes[0]) +
+         " nodes per panel at most, fewer by the panel's weight, panels at the horizon, the "
+         "Fresnel "
+         "layer and GGX's tail, "
          "smoothstep-mapped (integrate/dielectric_btdf.cpp)";
 }
 
@@ -130,6 +132,7 @@ const QuantityInfo& DielectricBtdfSplitSumQuantity() {
     q.usesFixedRule = UsesRule;
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
+    q.fixedRuleVersion = "3";  // node counts by panel weight, the shared walk (dielectric_walk.h)
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

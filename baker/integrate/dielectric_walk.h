@@ -1,0 +1,155 @@
+// The walk over the visible microfacet normals of the GGX dielectric (models/dielectric_bsdf.h,
+// Walter et al. 2007) that the glass rules share: the E tables' {E_R, E_T}
+// (dielectric_albedo.cpp) and the split-sum BTDF pair {T_lobe, T_F} (dielectric_btdf.cpp) are the
+// same integral with another integrand,
+//     (1 / pi) int_0^1 dv int_0^pi dphi_m  integrand(theta_m(v), cos phi_m),
+// v = a^2 / (a^2 + tan^2 theta_m) (GGX's complementary CDF of D cos), over panels in v (outer:
+// where the integrand's threshold curves meet phi_m = 0 or pi, grazing sweeps, GGX's tail) and in
+// phi_m (inner: the thresholds on each azimuth circle), every panel smoothstep-mapped (derivations
+// in the two files). The walk is written once here, templated over the problem, which supplies
+//     int ThetaBreaks(double* thetas) const;   outer boundaries in theta_m, 0 .. pi/2 (sorted)
+//     int PhiBreaks(PolarParam h, double* phis) const;  inner boundaries at h (>= 2, or 0)
+//     Channels<2> Integrand(PolarParam h, double cosPhi) const;  (without the 1 / pi)
+// and the members mu, st (sin theta_o), gDen (mu + mu Lambda(o)) and dist (GGX).
+// Two rules walk it: the fixed rule (the bake's: Gauss nodes per panel by the panel's weight
+// class, summed in one order: deterministic) and adaptive Gauss-Kronrod to a tolerance (the
+// reference the tests hold the fixed rule to).
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "baker/integrate/hemisphere.h"
+#include "baker/math/quadrature.h"
+#include "baker/models/microfacet.h"
+
+namespace kiln {
+namespace dielectric_walk {
+
+/// Most outer (theta_m) and inner (phi_m) panel boundaries a problem returns.
+constexpr int kMaxThetaBreaks = 64;
+constexpr int kMaxPhiBreaks = 40;
+
+/// Gauss nodes per panel by class. An outer panel [v_a, v_b] takes outerNodes[k] for the first k
+/// with its weight bound W > outerWeight[k] (outerNodes[3] below them all), W = (v_a - v_b) (mu +
+/// sin_o tan theta_m(v_b)) / gDen (the integrand is at most (c / cos_m) / gDen, c = o.m <= mu
+/// cos_m + sin_o sin_m, for every weight w(c) <= 1); an inner panel by its width in radians
+/// against innerWidth. Equal counts in every class: one Gauss rule for all panels.
+struct NodeClasses {
+  int outerNodes[4];
+  double outerWeight[3];
+  int innerNodes[4];
+  double innerWidth[3];
+};
+
+/// The node count of a class: counts[k] for the first k with x > bounds[k], else counts[3].
+inline int NodesOf(const int* counts, const double* bounds, double x) {
+  for (int k = 0; k < 3; ++k)
+    if (x > bounds[k]) return counts[k];
+  return counts[3];
+}
+
+/// The smoothstep map of panel [a, b] at t in [0, 1]: the point and its Jacobian.
+inline double Smooth(double a, double b, double t, double* jac) {
+  *jac = (b - a) * 6 * t * (1 - t);
+  return a + (b - a) * t * t * (3 - 2 * t);
+}
+
+/// The outer boundaries in v (decreasing from 1) of the problem's theta_m boundaries; returns
+/// their count.
+template <class Problem>
+int VBreaks(const Problem& p, double* vs) {
+  double thetas[kMaxThetaBreaks];
+  const int nt = p.ThetaBreaks(thetas);
+  for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : p.dist.VFromTheta(thetas[i]);
+  return nt;
+}
+
+/// The integral by the fixed rule with node classes `rule`; evals (optional) accumulates the
+/// integrand evaluations. Panels in order of v, nodes in order within each: one summation order.
+template <class Problem>
+Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* evals) {
+  double vs[kMaxThetaBreaks];
+  const int nt = VBreaks(p, vs);
+  long long count = 0;
+  Channels<2> sum{0, 0};
+  for (int i = 0; i + 1 < nt; ++i) {
+    // The panel's weight: its share of dv times the integrand's bound at its small-v end,
+    // (mu + sin_o tan theta_m) / gDen (the tail panel, ending at v = 0, is unbounded: top class).
+    const double vb = vs[i + 1];
+    const double weight =
+        vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
+               : INFINITY;
+    const GaussRule01& go =
+        CachedGaussLegendre01(NodesOf(rule.outerNodes, rule.outerWeight, weight));
+    for (size_t ko = 0; ko < go.x.size(); ++ko) {
+      double jac;
+      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
+      jac = -jac;
+      if (!(vv > 0) || !(jac > 0)) continue;
+      const PolarParam h = p.dist.FromV(vv);
+      double phis[kMaxPhiBreaks];
+      const int np = p.PhiBreaks(h, phis);
+      Channels<2> circle{0, 0};
+      for (int k = 0; k + 1 < np; ++k) {
+        const double width = phis[k + 1] - phis[k];
+        if (!(width > 0)) continue;
+        const GaussRule01& gi =
+            CachedGaussLegendre01(NodesOf(rule.innerNodes, rule.innerWidth, width));
+        for (size_t j = 0; j < gi.x.size(); ++j) {
+          double dj;
+          const double phi = Smooth(phis[k], phis[k + 1], gi.x[j], &dj);
+          ++count;
+          circle += (gi.w[j] * dj) * p.Integrand(h, std::cos(phi));
+        }
+      }
+      sum += (go.w[ko] * jac / Pi) * circle;
+    }
+  }
+  if (evals) *evals += count;
+  return sum;
+}
+
+/// The integral by adaptive Gauss-Kronrod on the same panels: outer to opt.tol / 2, each circle
+/// to a tenth of opt.tol scaled by the circle's weight in the outer rule. stats.evals
+/// accumulates the evaluations, stats.errorEstimate gets the outer rule's estimate.
+template <class Problem>
+Channels<2> AdaptiveWalk(const Problem& p, const IntegrationOptions& opt, IntegrationStats& stats) {
+  double vs[kMaxThetaBreaks];
+  const int nt = VBreaks(p, vs);
+  const int panels = nt - 1;
+  const double innerTol = opt.tol / 10;
+  // Outer variable x in [0, panels], panel i at [i, i + 1], v decreasing from vs[i] to vs[i+1].
+  auto circle = [&](double x) -> Channels<2> {
+    const int i = std::min(static_cast<int>(x), panels - 1);
+    double jac;
+    const double vv = Smooth(vs[i], vs[i + 1], x - i, &jac);
+    jac = -jac;
+    if (!(vv > 0) || !(jac > 0)) return Channels<2>{};
+    const PolarParam h = p.dist.FromV(vv);
+    double phis[kMaxPhiBreaks];
+    const int np = p.PhiBreaks(h, phis);
+    if (np < 2) return Channels<2>{};
+    auto f = [&](double y) -> Channels<2> {
+      const int k = std::min(static_cast<int>(y), np - 2);
+      double dj;
+      const double phi = Smooth(phis[k], phis[k + 1], y - k, &dj);
+      ++stats.evals;
+      return dj * p.Integrand(h, std::cos(phi));
+    };
+    double ys[kMaxPhiBreaks];
+    for (int k = 0; k < np; ++k) ys[k] = k;
+    // The outer rule weighs this by jac / pi: a circle of tiny weight needs less precision.
+    const double tolHere = innerTol * Pi / (jac * panels);
+    return (jac / Pi) * IntegrateAdaptive<2>(f, ys, np, tolHere, opt.maxPanels);
+  };
+  double xs[kMaxThetaBreaks];
+  for (int i = 0; i <= panels; ++i) xs[i] = i;
+  double err = 0;
+  const Channels<2> r =
+      IntegrateAdaptive<2>(circle, xs, panels + 1, opt.tol / 2, opt.maxPanels, &err);
+  stats.errorEstimate = err;
+  return r;
+}
+
+}  // namespace dielectric_walk
+}  // namespace kiln

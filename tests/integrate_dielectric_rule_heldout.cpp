@@ -1,0 +1,112 @@
+// The glass tables' fixed rule (baker/integrate/dielectric_albedo.cpp) on a held-out grid that
+// covers both sides of the interface and every threshold the rule puts panels at: eta in [1/3, 1)
+// and (1, 3], eta = 1 exactly and 1 -+ 1e-3 (the Fresnel layer sqrt|eta^2 - 1| = 0.045 at
+// grazing microfacets), mu = 0, 1e-6 and 1, the critical cosine mu_c = sqrt(1 - eta^2) and its
+// neighbours (the kink of total internal reflection), mu = eta (eta < 1: where the near-vertical
+// microfacets leave total internal reflection), GGX alpha from 1e-6 (roughness 1e-3) to 1. Against
+// the adaptive reference at 1e-10: within kDielectricRuleBound on both channels. And the
+// identities: E_R + E_T <= 1 (single scattering loses energy), with equality and E_R = F(mu) in
+// the smooth limit (alpha -> 0, the rule at alpha = 1e-6 within 1e-4 of it away from mu_c), and
+// the loss 1 - E_R - E_T grows with roughness (for mu >= 0.3: at grazing views the masking layer
+// mu ~ alpha makes the smoothest lobes lose the most).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "baker/integrate/dielectric_albedo.h"
+#include "baker/models/fresnel.h"
+#include "baker/models/roughness.h"
+
+using namespace kiln;
+
+namespace {
+
+const double kEtas[] = {1 / 3.0, 0.5, 0.75, 0.97, 0.999, 1.0, 1.001, 1.02, 1.25, 1.7, 2.4, 3.0};
+const double kRoughness[] = {1e-3, 0.05, 0.2, 0.45, 0.8, 1.0};
+
+/// The mu of the grid at eta: the ends, a spread, and for eta < 1 mu_c, its neighbours and eta.
+std::vector<double> MusAt(double eta) {
+  std::vector<double> mus = {0.0, 1e-6, 0.03, 0.3, 0.6, 0.88, 1.0};
+  if (eta < 1) {
+    const double muC = std::sqrt((1 - eta) * (1 + eta));
+    for (double d : {0.0, -1e-4, 1e-4, -0.01, 0.01}) mus.push_back(std::clamp(muC + d, 0.0, 1.0));
+    mus.push_back(eta);
+  }
+  return mus;
+}
+
+std::array<double, 2> Adaptive(double mu, double alpha, double eta) {
+  IntegrationOptions opt;
+  opt.tol = 1e-10;
+  opt.maxPanels = 2000;
+  IntegrationStats stats;
+  return DielectricAlbedo(mu, alpha, eta, opt, stats);
+}
+
+}  // namespace
+
+TEST_CASE("the glass rule is within its bound of adaptive quadrature on a held-out grid",
+          "[dielectric][glass-rule]") {
+  double worst = 0;
+  long long evals = 0;
+  std::vector<long long> perPoint;
+  for (double eta : kEtas)
+    for (double mu : MusAt(eta))
+      for (double r : kRoughness) {
+        const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+        long long e = 0;
+        const std::array<double, 2> f =
+            FixedRuleDielectricAlbedo(mu, alpha, eta, TunedDielectricRuleOptions(), &e);
+        const std::array<double, 2> a = Adaptive(mu, alpha, eta);
+        evals += e;
+        perPoint.push_back(e);
+        for (int c = 0; c < 2; ++c) {
+          INFO("mu " << mu << " r " << r << " eta " << eta << " channel " << c);
+          CHECK(std::abs(f[c] - a[c]) < kDielectricRuleBound);
+          worst = std::max(worst, std::abs(f[c] - a[c]));
+        }
+      }
+  std::sort(perPoint.begin(), perPoint.end());
+  std::printf(
+      "glass rule, held-out grid: worst %.3g over %zu points; evaluations median %lld, "
+      "max %lld\n",
+      worst, perPoint.size(), perPoint[perPoint.size() / 2], perPoint.back());
+}
+
+TEST_CASE(
+    "glass energy: E_R + E_T <= 1, the smooth limit F and 1 - F, the loss grows with "
+    "roughness",
+    "[dielectric][glass-rule]") {
+  for (double eta : kEtas)
+    for (double mu : MusAt(eta)) {
+      INFO("mu " << mu << " eta " << eta);
+      // The smooth interface exactly, and the rule approaching it.
+      const std::array<double, 2> s = SmoothDielectricAlbedo(mu, eta);
+      CHECK(s[0] == FrDielectric(mu, eta));
+      CHECK(s[0] + s[1] == 1.0);
+      if (mu >= 0.03) {  // below, the GGX masking layer of width alpha is still there
+        // Within 1e-4, or at the kink of total internal reflection (F's infinite slope at mu_c,
+        // smoothed over ~alpha in the microfacet cosine) within 20 sqrt(alpha).
+        const double muC = eta < 1 ? std::sqrt((1 - eta) * (1 + eta)) : -1;
+        const double tol = std::abs(mu - muC) > 5e-3 ? 1e-4 : 2e-2;
+        const std::array<double, 2> nearSmooth = FixedRuleDielectricAlbedo(mu, 1e-6, eta);
+        CHECK(std::abs(nearSmooth[0] - s[0]) < tol);
+        CHECK(std::abs(nearSmooth[1] - s[1]) < tol);
+      }
+      double lastLoss = -1;
+      for (double r : kRoughness) {
+        const std::array<double, 2> e =
+            FixedRuleDielectricAlbedo(mu, std::max(AlphaFromPerceptual(r), MinAlpha), eta);
+        const double loss = 1 - e[0] - e[1];
+        INFO("r " << r);
+        CHECK(loss >= -kDielectricRuleBound);
+        // Away from grazing views (at mu ~ alpha the masking layer of the smoothest lobes loses
+        // the most: there the loss first falls with roughness).
+        if (mu >= 0.3) CHECK(loss >= lastLoss - 2 * kDielectricRuleBound);
+        lastLoss = loss;
+      }
+    }
+}
