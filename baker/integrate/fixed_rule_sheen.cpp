@@ -117,7 +117,8 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
     if (mu_l > 0 && mu_l < 1) tBreaks.push_back(T(mu_l));
   };
   addMu(mu_o);
-  const int mirror = opt.mirrorPanels;
+  if (opt.lobeBreak > 0) addMu(opt.lobeBreak * std::sqrt(m.alpha));
+  const int mirror = m.alpha > opt.mirrorMinAlpha ? opt.mirrorPanels : 0;
   for (int k = 1; k <= mirror; ++k) {
     double d = std::pow(0.25, k);
     addMu(mu_o * (1 - d));
@@ -164,6 +165,12 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
 }
 
 }  // namespace
+
+SheenRuleOptions SheenRuleOptionsFor(const std::string& model, bool search) {
+  if (model == "charlie-smith")
+    return search ? kCharlieSmithSearchRuleOptions : kCharlieSmithRuleOptions;
+  return search ? kSearchSheenRuleOptions : SheenRuleOptions{};
+}
 
 bool IsSheenModel(const AnyModel& model) {
   return std::visit([](const auto& m) { return kIsSheen<std::decay_t<decltype(m)>>; }, model);

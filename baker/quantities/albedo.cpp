@@ -112,6 +112,10 @@ bool DerivedFrom(const TableSpec& spec, TableSpec& source) {
   return source.channels.size() == (sheen ? 1u : 2u);
 }
 
+/// A sheen albedo has its cloth DFG's texels, axes and search reference (SheenSearchRuleAt at
+/// every point): the same lookup-error report (QuantityInfo::sharesSourceLookupError).
+bool SharesSourceLookupError(const TableSpec& spec) { return SheenFixedRuleApplies(spec); }
+
 void Derive(const TableSpec& spec, const double* source, double* out) {
   out[0] = IsSheen(spec.model) ? source[0] : source[0] + source[1];
 }
@@ -169,6 +173,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.derivedFrom = DerivedFrom;
     q.derive = Derive;
+    q.sharesSourceLookupError = SharesSourceLookupError;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

@@ -56,8 +56,15 @@ const std::vector<std::string>& CatalogueSheenModels() {
 }
 
 bool SheenTableInDefaultCatalogue(const std::string& name) {
-  static const char* const kDefault[] = {"charlie-dfg", "charlie-albedo", "ashikhmin-velvet-dfg",
-                                         "ashikhmin-velvet-albedo", "ashikhmin-velvet-albedo-avg"};
+  static const char* const kDefault[] = {"charlie-dfg",
+                                         "charlie-albedo",
+                                         "ashikhmin-velvet-dfg",
+                                         "ashikhmin-velvet-albedo",
+                                         "ashikhmin-velvet-albedo-avg",
+                                         "charlie-albedo-avg",
+                                         "charlie-smith-dfg",
+                                         "charlie-smith-albedo",
+                                         "charlie-smith-albedo-avg"};
   for (const char* n : kDefault)
     if (name == n) return true;
   return false;
