@@ -44,7 +44,7 @@
 // grading is kept only for alpha > 0.3; item 3's layer gets a boundary of its own at
 // mu_l = r / 2; and 10 x 6 nodes per panel suffice. Measured
 // (tests/integrate_fixed_rule_charlie_smith.cpp, adaptive at 1e-10, 25 mu from 1e-4 with
-// 1/2 +- 1e-9, 15 r with sqrt(0.3) +- 1e-9): worst 3.6e-7 at 1,246 evaluations per texel on
+// 1/2 +- 1e-9, 15 r with sqrt(0.3) +- 1e-9): worst 3.6e-7 at 1,250 evaluations per texel on
 // average over its tables (was 3,161). Below mu_o = 1e-4 it does not hold (4e-5 at mu_o = 0).
 // Also checked against the closed forms at mu_o = 0 (E(0) = 2 int D sin^2(theta) dtheta: a
 // Wallis integral for Charlie, 1/2 + 4 alpha/sqrt(pi) over (1 + 4 alpha^2) for the velvet),
