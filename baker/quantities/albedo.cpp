@@ -48,8 +48,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
-/// catalogue's budget today (SheenTableInDefaultCatalogue), and the Unity / Lafortune ones
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables that
+/// SheenTableInDefaultCatalogue leaves out (none today), and the Unity / Lafortune ones
 /// (unity_tables.h).
 std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
   std::vector<TableSpec> out = OnRequestAlbedoTables(opt);
