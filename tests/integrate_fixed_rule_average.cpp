@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "baker/integrate/fixed_rule_average.h"
+#include "baker/integrate/fixed_rule_sheen.h"
 #include "baker/integrate/quantities.h"
 #include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
@@ -61,7 +62,9 @@ TEST_CASE(
     std::printf("average fixed rule %-36s worst %.3g at %s\n", spec.name.c_str(), worst,
                 where.c_str());
     INFO(spec.name << ": worst " << worst << " at " << where);
-    CHECK(worst <= 1e-7);
+    // charlie-smith's E rule errs up to 3.6e-7 itself (its declared kSheenRuleBound 5e-7,
+    // tests/integrate_fixed_rule_charlie_smith.cpp): its average is held to the bound it declares.
+    CHECK(worst <= (spec.model == "charlie-smith" ? kSheenRuleBound + kCosineAverageBound : 1e-7));
   }
 }
 

@@ -1,7 +1,6 @@
 // The sheen tables (charlie, charlie-smith, ashikhmin-velvet x dfg, albedo, albedo-avg): in the
 // catalogue over each model's table domain (roughness from 0.045; charlie-smith's mu from 1e-4),
-// charlie-dfg, charlie-albedo and the velvet's three in the default catalogue, the rest on request
-// (their cost), baked by the sheen fixed rule
+// all nine in the default catalogue, baked by the sheen fixed rule
 // within 1e-6 of adaptive quadrature; the cloth DFG holds the albedo's bits; the search rule
 // within kSearchRuleBound of the bake rule; byte-identical for -j 1 and -j 2.
 #include <catch2/catch.hpp>
@@ -45,11 +44,9 @@ TEST_CASE("dfg, albedo and albedo-avg of each sheen model: in the catalogue on i
       CHECK(r.hi == 1);
       CHECK(UsesFixedRule(s));
       if (s.axes.size() == 2) CHECK(s.axes[0].lo == (m == std::string("charlie-smith") ? 1e-4 : 0));
-      // In the default catalogue: charlie's dfg (Filament's cloth DFG) and albedo, the velvet's
-      // three; the rest on request (the catalogue's time budget, README "Tables on request").
-      // Each in exactly one of the two lists.
-      const bool inDefault =
-          name == "charlie-dfg" || name == "charlie-albedo" || std::string(m) == "ashikhmin-velvet";
+      // All nine in the default catalogue (README "Sheen"), none on request; each in exactly
+      // one of the two lists.
+      const bool inDefault = true;
       CHECK(SheenTableInDefaultCatalogue(name) == inDefault);
       CHECK(Listed(def, name) == inDefault);
       CHECK(Listed(onRequest, name) == !inDefault);
@@ -129,6 +126,27 @@ TEST_CASE("The charlie-smith tables start at mu = 1e-4 (Filament's MIN_N_DOT_V)"
   TableSpec spec = CatalogueTable("charlie-smith-albedo");
   CHECK(spec.axes[0].lo == kCharlieSmithMinMu);
   CHECK(kCharlieSmithMinMu == 1e-4);
+}
+
+TEST_CASE(
+    "A sheen albedo baked after its cloth DFG takes the DFG's texels and lookup-error "
+    "report: the bytes of a bake of the albedo alone",
+    "[sheen][tables][cli][derived]") {
+  std::string dir = TempDir("sheen-shared");
+  auto both = RunKiln("bake --out " + dir +
+                      "/both --only charlie-smith-dfg,charlie-smith-albedo "
+                      "--size 6 -j 2");
+  auto alone = RunKiln("bake --out " + dir + "/alone --only charlie-smith-albedo --size 6 -j 2");
+  REQUIRE(both.exitCode == 0);
+  REQUIRE(alone.exitCode == 0);
+  CHECK(both.err.find("texels from charlie-smith-dfg") != std::string::npos);
+  CHECK(alone.err.find("texels from") == std::string::npos);
+  std::string a = ReadFile(dir + "/both/charlie-smith-albedo.exr");
+  REQUIRE(!a.empty());
+  CHECK(a == ReadFile(dir + "/alone/charlie-smith-albedo.exr"));
+  // The albedo's report is the dfg's (the same search), and kiln verify repeats it.
+  auto verify = RunKiln("verify " + dir + "/both -j 2");
+  CHECK(verify.exitCode == 0);
 }
 
 TEST_CASE("Sheen tables bake to the same bytes with -j 1 and -j 2", "[sheen][tables][cli]") {

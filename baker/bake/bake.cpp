@@ -221,7 +221,19 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     t.bakeError = estimate + 0x1p-24;
   else
     t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
-  if (opt.measureLookupError) MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
+  if (opt.measureLookupError) {
+    // A derived table with its source's texels and search reference: the source's report
+    // (QuantityInfo::sharesSourceLookupError), else its own search.
+    const auto shares = Describe(spec.quantity).sharesSourceLookupError;
+    if (from && from->hasLookupError && shares && shares(spec))
+      t.lookupError = from->lookupError;
+    else
+      MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
+    if (keep) {
+      keep->hasLookupError = true;
+      keep->lookupError = t.lookupError;
+    }
+  }
   auto t2 = std::chrono::steady_clock::now();
   if (stats) {
     stats->evals = 0;

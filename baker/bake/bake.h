@@ -32,6 +32,11 @@ struct NodeValues {
   size_t channels = 0;
   std::vector<double> values;  ///< texel after texel, `channels` values each
   std::vector<double> errors;  ///< per texel
+  /// The table's lookup-error report, when the bake measured it (hasLookupError): a table
+  /// derived from this one with the same texels and the same search reference takes it
+  /// (QuantityInfo::sharesSourceLookupError) instead of repeating the search.
+  bool hasLookupError = false;
+  LookupError lookupError;
 };
 
 /// The node values a run of bakes keeps for the tables derived from them: built from the run's

@@ -42,11 +42,16 @@ constexpr int kSearchAverageNodes = 6;
 /// include the factor 2 mu: E_avg = sum of weight e(mu). `layer` is the width of e's layer at
 /// mu = 0 (alpha for a microfacet albedo); `nodes` per panel.
 template <class V>
-void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes) {
+void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes,
+                             double kink = -1) {
   const GaussRule01& rule = CachedGaussLegendre01(nodes);
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 1e-2); b < 1; b *= 4) breaks.push_back(b);
   breaks.push_back(1);
+  if (kink > 0 && kink < 1) {  // a panel boundary at e's kink (charlie-smith's mu = 1/2)
+    breaks.push_back(kink);
+    std::sort(breaks.begin(), breaks.end());
+  }
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
     for (int i = 0; i < nodes; ++i) {
@@ -67,17 +72,18 @@ double FixedCosineAverage(E&& e, double layer) {
 }
 
 /// The channel-valued form of FixedCosineAverage: e(mu) -> std::vector<double> (the same size at
-/// every node), averaged channel by channel with the same nodes and weights.
+/// every node), averaged channel by channel with the same nodes and weights; `kink` (when in
+/// (0, 1)) adds a panel boundary there.
 template <class E>
-std::vector<double> FixedCosineAverageChannels(E&& e, double layer,
-                                               int nodes = kCosineAverageNodes) {
+std::vector<double> FixedCosineAverageChannels(E&& e, double layer, int nodes = kCosineAverageNodes,
+                                               double kink = -1) {
   std::vector<double> sum;
   auto one = [&](double mu, double weight) {
     std::vector<double> v = e(mu);
     sum.resize(v.size(), 0.0);
     for (size_t c = 0; c < v.size(); ++c) sum[c] += weight * v[c];
   };
-  FixedCosineAverageNodes(layer, one, nodes);
+  FixedCosineAverageNodes(layer, one, nodes, kink);
   return sum;
 }
 

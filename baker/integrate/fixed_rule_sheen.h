@@ -6,6 +6,8 @@
 // its kinks. Derivation and measured accuracy: fixed_rule_sheen.cpp.
 #pragma once
 
+#include <string>
+
 #include "baker/models/registry.h"
 
 namespace kiln {
@@ -19,6 +21,12 @@ struct SheenRuleOptions {
   double sPanel = 4;     ///< the longest panel in s
   int mirrorPanels = 3;  ///< geometric panels (ratio 4) towards mu_l = mu_o from both sides
   int psiPanels = 2;     ///< geometric panels (ratio 4) towards pi - phi = 0
+  /// The mirror grading (mirrorPanels) only where alpha exceeds this: the mirror singularity
+  /// |theta_h|^(1/alpha) is smooth enough for the plain panels at 1/alpha < 1/this.
+  double mirrorMinAlpha = 0;
+  /// When > 0, a panel boundary at mu_l = lobeBreak * r (r = sqrt(alpha)), the scale of the
+  /// lobe's layer at the horizon (item 3 of the derivation).
+  double lobeBreak = 0;
 };
 
 /// True for the sheen models (CharlieSheen, CharlieSmithSheen, AshikhminVelvet).
@@ -41,6 +49,24 @@ constexpr double kSheenRuleBound = 5e-7;
 /// the bake's rule over the three models' table domains (61 root4 mu x 31 log r, mu = 0 and r =
 /// 0.045 included) at 1/1.27 of its evaluations (measured in the commit that set them).
 constexpr SheenRuleOptions kSearchSheenRuleOptions = {10, 6, 4, 4, 3, 3};
+
+/// charlie-smith's bake rule (fixed_rule_sheen.cpp, "charlie-smith's nodes"): 10 x 6 nodes per
+/// panel, the mirror grading only for alpha > 0.3, a boundary at mu_l = r / 2; within 5e-7 of
+/// adaptive quadrature on the test's grid at 0.4 of the shared rule's evaluations.
+constexpr SheenRuleOptions kCharlieSmithRuleOptions = {10, 6, 4, 4, 3, 2, 0.3, 0.5};
+
+/// charlie-smith's lookup-error search rule: the same panels at 8 x 6 nodes per panel, within
+/// kSearchRuleBound of kCharlieSmithRuleOptions (tests/lookup_search_reference.cpp).
+constexpr SheenRuleOptions kCharlieSmithSearchRuleOptions = {8, 6, 4, 4, 3, 2, 0.3, 0.5};
+
+/// charlie-smith's bake-rule evaluations per search-rule evaluation: the same panels and nodes
+/// in s, 10 / 8 nodes per panel in t, so exactly 1.25 at every point
+/// (tests/tables_sheen_catalogue.cpp, tests/integrate_fixed_rule_charlie_smith.cpp).
+constexpr double kCharlieSmithSearchCharge = 1.25;
+
+/// The options of the bake rule (search = false) or the search's rule (search = true) for a
+/// sheen model id ("charlie-smith" takes its own; the others the shared defaults).
+SheenRuleOptions SheenRuleOptionsFor(const std::string& model, bool search);
 
 /// The bake rule's evaluations per search-rule evaluation, rounded down from the measured 1.22
 /// (charlie-smith) to 1.27 so that the charge never overstates the saving

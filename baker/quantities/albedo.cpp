@@ -48,8 +48,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
-/// catalogue's budget today (SheenTableInDefaultCatalogue), and the Unity / Lafortune ones
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables that
+/// SheenTableInDefaultCatalogue leaves out (none today), and the Unity / Lafortune ones
 /// (unity_tables.h).
 std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
   std::vector<TableSpec> out = OnRequestAlbedoTables(opt);
@@ -112,6 +112,10 @@ bool DerivedFrom(const TableSpec& spec, TableSpec& source) {
   return source.channels.size() == (sheen ? 1u : 2u);
 }
 
+/// A sheen albedo has its cloth DFG's texels, axes and search reference (SheenSearchRuleAt at
+/// every point): the same lookup-error report (QuantityInfo::sharesSourceLookupError).
+bool SharesSourceLookupError(const TableSpec& spec) { return SheenFixedRuleApplies(spec); }
+
 void Derive(const TableSpec& spec, const double* source, double* out) {
   out[0] = IsSheen(spec.model) ? source[0] : source[0] + source[1];
 }
@@ -169,6 +173,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
     q.derivedFrom = DerivedFrom;
     q.derive = Derive;
+    q.sharesSourceLookupError = SharesSourceLookupError;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

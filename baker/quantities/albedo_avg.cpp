@@ -44,8 +44,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
-/// catalogue's budget today (SheenTableInDefaultCatalogue), and the Unity / Lafortune ones
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables that
+/// SheenTableInDefaultCatalogue leaves out (none today), and the Unity / Lafortune ones
 /// (unity_tables.h).
 std::vector<TableSpec> OnRequest(const CatalogueOptions& opt) {
   std::vector<TableSpec> out = OnRequestAlbedoAvgTables(opt);
@@ -90,6 +90,13 @@ std::string FixedRuleMethod(const TableSpec& spec) {
   return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
 
+/// The rule's version: the Charlie pair's averages take their own mu panels (AverageFixedRule):
+/// "3"; the others as their E's (MicrofacetFixedRuleVersion).
+const char* AvgFixedRuleVersion(const TableSpec& spec) {
+  if (spec.model == "charlie" || spec.model == "charlie-smith") return "3";
+  return MicrofacetFixedRuleVersion(spec);
+}
+
 std::string Method(const TableSpec& spec) {
   return AdaptiveMethod(IsSpecular(spec.model), true, spec.tol);
 }
@@ -129,7 +136,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
     q.fixedRuleMethod = FixedRuleMethod;
-    q.fixedRuleVersionOf = MicrofacetFixedRuleVersion;
+    q.fixedRuleVersionOf = AvgFixedRuleVersion;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

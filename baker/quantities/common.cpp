@@ -142,9 +142,11 @@ std::string GgxFixedRuleMethod(const TableSpec&) {
 }
 
 const char* MicrofacetFixedRuleVersion(const TableSpec& spec) {
-  // 3: ggx-separable by the GGX kernel; beckmann, beckmann-separable, blinn-phong at fewer nodes.
+  // 3: ggx-separable by the GGX kernel; beckmann, beckmann-separable, blinn-phong at fewer nodes;
+  // charlie-smith by its own node counts (kCharlieSmithRuleOptions).
   return spec.model == "ggx-separable" || spec.model == "beckmann" ||
-                 spec.model == "beckmann-separable" || spec.model == "blinn-phong"
+                 spec.model == "beckmann-separable" || spec.model == "blinn-phong" ||
+                 spec.model == "charlie-smith"
              ? "3"
              : "2";
 }
@@ -320,7 +322,8 @@ bool SheenFixedRuleApplies(const TableSpec& spec) {
 
 std::vector<double> SheenFixedRuleAt(const TableSpec& spec, const double* x,
                                      IntegrationStats& stats) {
-  double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0], {}, &stats.evals);
+  double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0],
+                                  SheenRuleOptionsFor(spec.model, false), &stats.evals);
   stats.errorEstimate = kSheenRuleBound;
   return {e};
 }
@@ -328,21 +331,25 @@ std::vector<double> SheenFixedRuleAt(const TableSpec& spec, const double* x,
 std::vector<double> SheenSearchRuleAt(const TableSpec& spec, const double* x,
                                       IntegrationStats& stats) {
   long long evals = 0;
-  double e =
-      FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0], kSearchSheenRuleOptions, &evals);
-  stats.evals += std::llround(static_cast<double>(evals) * kSearchSheenCharge);
+  double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0],
+                                  SheenRuleOptionsFor(spec.model, true), &evals);
+  const double charge =
+      spec.model == "charlie-smith" ? kCharlieSmithSearchCharge : kSearchSheenCharge;
+  stats.evals += std::llround(static_cast<double>(evals) * charge);
   stats.errorEstimate = kSearchRuleBound;
   return {e};
 }
 
-std::string SheenFixedRuleMethod(const TableSpec&) {
-  SheenRuleOptions opt;
+std::string SheenFixedRuleMethod(const TableSpec& spec) {
+  SheenRuleOptions opt = SheenRuleOptionsFor(spec.model, false);
   return "light space: fixed tensor Gauss-Legendre rule over ln(mu_l + c) x ln(pi - phi + c), "
          "c = max(mu_o, 1e-7) (" +
          std::to_string(opt.tNodes) + " x " + std::to_string(opt.sNodes) +
-         " nodes per panel), panels graded towards the mirror direction and split at the model's "
-         "kinks; declared error " +
-         Short(kSheenRuleBound) + " abs";
+         " nodes per panel), panels graded towards the mirror direction" +
+         (opt.mirrorMinAlpha > 0 ? " where alpha > " + Short(opt.mirrorMinAlpha) : std::string()) +
+         " and split at the model's kinks" +
+         (opt.lobeBreak > 0 ? " and at mu_l = " + Short(opt.lobeBreak) + " r" : std::string()) +
+         "; declared error " + Short(kSheenRuleBound) + " abs";
 }
 
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
@@ -372,12 +379,17 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
     return v;
   };
   // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the Charlie lobe at grazing): the mu rule
-  // graded from its finest layer.
+  // graded from its finest layer (the velvet's); the Charlie pair's layer is no narrower than
+  // r = 0.045, so their panels start at 1e-2 (40 nodes instead of 64, within 1e-9 for charlie,
+  // 2.5e-7 for charlie-smith, of 20 nodes per panel from 1e-4), and charlie-smith's E has
+  // Lambda(mu)'s C1 switch at mu = 1/2: a panel boundary there (SheenAverageKink).
   const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
-  std::vector<double> r = IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer, nodes)
-                          : IsSheen(albedo.model)
-                              ? FixedCosineAverageChannels(e, 1e-4, nodes)
-                              : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
+  std::vector<double> r =
+      IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer, nodes)
+      : IsSheen(albedo.model)
+          ? FixedCosineAverageChannels(e, albedo.model == "ashikhmin-velvet" ? 1e-4 : 1e-2, nodes,
+                                       albedo.model == "charlie-smith" ? 0.5 : -1)
+          : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;
 }

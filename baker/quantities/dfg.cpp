@@ -45,8 +45,8 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables over the default
-/// catalogue's budget today (SheenTableInDefaultCatalogue; README "Tables on request").
+/// On request (`kiln bake --only NAME`, scenes): the sheen lobes' tables that
+/// SheenTableInDefaultCatalogue leaves out (none today: all nine are in the catalogue).
 std::vector<TableSpec> OnRequest(const CatalogueOptions&) { return SheenSpecs(false); }
 
 /// The microfacet fixed rules, and the sheen rule for a sheen lobe's one channel: the same

@@ -157,6 +157,12 @@ struct QuantityInfo {
   /// (null: fixedRuleVersion for every spec): those models' tables re-bake, the others keep their
   /// hashes.
   const char* (*fixedRuleVersionOf)(const TableSpec& spec) = nullptr;
+  /// A derived kind (derivedFrom) whose table `spec` has at every node the float32 texels of its
+  /// source, the same axes and the same lookup-error search reference at every point (a sheen
+  /// albedo and its cloth DFG: one integral, one rule): true lets a bake that has just searched
+  /// the source copy its lookup-error report instead of repeating the same search (the
+  /// deterministic search gives the same report; `kiln verify` repeats it). Null: never.
+  bool (*sharesSourceLookupError)(const TableSpec& spec) = nullptr;
 };
 
 /// The descriptor of `q`.

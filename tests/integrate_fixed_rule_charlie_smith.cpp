@@ -1,0 +1,124 @@
+// charlie-smith's own node counts of the sheen fixed rule (kCharlieSmithRuleOptions: 10 x 6 per
+// panel, the mirror grading only for alpha > 0.3, a boundary at mu_l = r / 2) against adaptive
+// quadrature at 1e-10 on a dense grid of its tables' domain: mu from 1e-4 (the domain's start)
+// to 1 with Lambda's switch at mu = 1/2 on both sides, r from 0.045 to 1 with the mirror
+// grading's switch (r = sqrt(0.3)) on both sides; the clamp V <= 1 and mu_l = 1/2 are panel
+// boundaries of every texel's rule. The Charlie pair's averages (their own mu panels, a
+// boundary at mu = 1/2 for charlie-smith) against the adaptive average. Fewer panels fail.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <vector>
+
+#include "baker/integrate/fixed_rule_sheen.h"
+#include "baker/integrate/quantities.h"
+#include "baker/models/sheen.h"
+#include "baker/tables/catalogue.h"
+#include "baker/tables/spec.h"
+
+using namespace kiln;
+
+namespace {
+
+AnyModel CharlieSmith(double r) {
+  ModelParams p;
+  p.roughness = r;
+  return MakeModel("charlie-smith", p);
+}
+
+double Adaptive(const AnyModel& m, double mu) {
+  IntegrationOptions opt;
+  opt.tol = 1e-10;
+  IntegrationStats stats;
+  return DirectionalAlbedo(m, mu, opt, stats).lin;
+}
+
+/// mu: the domain's start 1e-4, a root4 grid (the tables' warp), 1/2 and its neighbours.
+std::vector<double> Mus() {
+  std::vector<double> mus = {kCharlieSmithMinMu, 2e-4, 5e-4, 0.5 - 1e-9, 0.5, 0.5 + 1e-9};
+  for (int i = 2; i <= 20; ++i) mus.push_back(std::pow(i / 20.0, 4));
+  return mus;
+}
+
+/// r: a log grid from 0.045 to 1 (the tables' warp) and the mirror grading's switch.
+std::vector<double> Roughnesses() {
+  std::vector<double> rs = {std::sqrt(0.3) - 1e-9, std::sqrt(0.3) + 1e-9};
+  for (int j = 0; j <= 12; ++j)
+    rs.push_back(kCharlieMinRoughness * std::pow(1 / kCharlieMinRoughness, j / 12.0));
+  rs.back() = 1;
+  return rs;
+}
+
+}  // namespace
+
+TEST_CASE("charlie-smith's rule is within the declared bound of adaptive quadrature",
+          "[sheen][fixed-rule][charlie-smith]") {
+  const SheenRuleOptions opt = SheenRuleOptionsFor("charlie-smith", false);
+  double worst = 0, worstMu = 0, worstR = 0;
+  long long evals = 0, count = 0;
+  for (double r : Roughnesses())
+    for (double mu : Mus()) {
+      AnyModel m = CharlieSmith(r);
+      double err = std::abs(FixedRuleSheenAlbedo(m, mu, opt, &evals) - Adaptive(m, mu));
+      ++count;
+      if (err > worst) {
+        worst = err;
+        worstMu = mu;
+        worstR = r;
+      }
+    }
+  WARN("charlie-smith: worst |fixed - adaptive| = " << worst << " at mu = " << worstMu
+                                                    << ", r = " << worstR << "; " << evals / count
+                                                    << " evaluations per point");
+  CHECK(worst < kSheenRuleBound);
+}
+
+TEST_CASE("charlie-smith's rule without the mirror grading misses the bound at r = 1",
+          "[sheen][fixed-rule][charlie-smith]") {
+  SheenRuleOptions coarse = SheenRuleOptionsFor("charlie-smith", false);
+  coarse.mirrorMinAlpha = 1;
+  AnyModel m = CharlieSmith(1.0);
+  CHECK(std::abs(FixedRuleSheenAlbedo(m, 1.0, coarse) - Adaptive(m, 1.0)) > kSheenRuleBound);
+}
+
+TEST_CASE("charlie-smith takes its own rule; charlie and the velvet keep the shared one",
+          "[sheen][fixed-rule][charlie-smith]") {
+  SheenRuleOptions shared;
+  for (const char* id : {"charlie", "ashikhmin-velvet"}) {
+    SheenRuleOptions o = SheenRuleOptionsFor(id, false);
+    CHECK(o.tNodes == shared.tNodes);
+    CHECK(o.mirrorMinAlpha == 0);
+    CHECK(o.lobeBreak == 0);
+  }
+  SheenRuleOptions cs = SheenRuleOptionsFor("charlie-smith", false);
+  CHECK(cs.tNodes == 10);
+  CHECK(cs.sNodes == 6);
+  // Its search rule differs only in the nodes per panel in t: the charge is their ratio.
+  SheenRuleOptions search = SheenRuleOptionsFor("charlie-smith", true);
+  CHECK(search.sNodes == cs.sNodes);
+  CHECK(kCharlieSmithSearchCharge <= static_cast<double>(cs.tNodes) / search.tNodes);
+}
+
+TEST_CASE("The Charlie pair's average tables are within 1e-6 of the adaptive average",
+          "[sheen][fixed-rule][charlie-smith]") {
+  struct Case {
+    const char* model;
+    double r;
+  };
+  for (Case c : {Case{"charlie-smith", kCharlieMinRoughness}, Case{"charlie-smith", 0.55},
+                 Case{"charlie-smith", 0.85}, Case{"charlie-smith", 1.0}, Case{"charlie", 1.0}}) {
+    TableSpec spec = CatalogueTable(std::string(c.model) + "-albedo-avg");
+    REQUIRE(UsesFixedRule(spec));
+    double x[1] = {c.r};
+    IntegrationStats fixed, exact;
+    double got = EvaluateSpec(spec, x, fixed)[0];
+    ModelParams p;
+    p.roughness = c.r;
+    IntegrationOptions opt;
+    opt.tol = 1e-9;
+    double want = AverageAlbedo(MakeModel(c.model, p), opt, exact).lin;
+    WARN(c.model << "-albedo-avg at r = " << c.r
+                 << ": |fixed - adaptive| = " << std::abs(got - want));
+    CHECK(std::abs(got - want) < 1e-6);
+    CHECK(fixed.errorEstimate < 1e-6);
+  }
+}
