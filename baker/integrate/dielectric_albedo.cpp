@@ -278,20 +278,6 @@ Channels<2> View::Integrand(PolarParam h, double cp) const { return kiln::Integr
 const DielectricRuleOptions kTuned = {
     {24, 12, 4, 2}, {1e-2, 1e-4, 1e-6}, {12, 10, 6, 6}, {1, 0.1, 0.02}, 4, 16, 4};
 
-/// The walk's node classes of the options.
-dielectric_walk::NodeClasses ClassesOf(const DielectricRuleOptions& o) {
-  dielectric_walk::NodeClasses c;
-  for (int k = 0; k < 4; ++k) {
-    c.outerNodes[k] = o.outerNodes[k];
-    c.innerNodes[k] = o.innerNodes[k];
-  }
-  for (int k = 0; k < 3; ++k) {
-    c.outerWeight[k] = o.outerWeight[k];
-    c.innerWidth[k] = o.innerWidth[k];
-  }
-  return c;
-}
-
 }  // namespace
 
 std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {
@@ -314,7 +300,7 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
   v.maskingRatio = opt.maskingRatio;
   v.grazingRatio = opt.grazingRatio;
   v.tailRatio = opt.tailRatio;
-  const Channels<2> r = dielectric_walk::FixedWalk(v, ClassesOf(opt), evals);
+  const Channels<2> r = dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};
 }
 

@@ -145,20 +145,6 @@ Channels<2> BtdfView::Integrand(PolarParam h, double cp) const {
   return BtdfIntegrand(*this, h, cp);
 }
 
-/// The walk's node classes of the options.
-dielectric_walk::NodeClasses ClassesOf(const DielectricBtdfRuleOptions& o) {
-  dielectric_walk::NodeClasses c;
-  for (int k = 0; k < 4; ++k) {
-    c.outerNodes[k] = o.outerNodes[k];
-    c.innerNodes[k] = o.innerNodes[k];
-  }
-  for (int k = 0; k < 3; ++k) {
-    c.outerWeight[k] = o.outerWeight[k];
-    c.innerWidth[k] = o.innerWidth[k];
-  }
-  return c;
-}
-
 /// The bake's node counts: the E tables' weight classes (dielectric_walk.h) with 12, 8, 4, 2
 /// outer and 12, 10, 6, 6 inner nodes, against 12 x 12 on every panel before: a quarter to a
 /// third fewer evaluations, the worst |fixed - adaptive at 1e-10| unchanged on two grids (the
@@ -184,8 +170,8 @@ DielectricBtdfRuleOptions TunedDielectricBtdfRuleOptions() { return kTuned; }
 std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,
                                                   const DielectricBtdfRuleOptions& opt,
                                                   long long* evals) {
-  const Channels<2> r =
-      dielectric_walk::FixedWalk(MakeBtdfView(mu, alpha, eta), ClassesOf(opt), evals);
+  const Channels<2> r = dielectric_walk::FixedWalk(MakeBtdfView(mu, alpha, eta),
+                                                   dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};
 }
 

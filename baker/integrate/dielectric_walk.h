@@ -41,6 +41,22 @@ struct NodeClasses {
   double innerWidth[3];
 };
 
+/// The node classes of a rule's options (DielectricRuleOptions, DielectricBtdfRuleOptions: the
+/// same four fields by name).
+template <class Options>
+NodeClasses ClassesOf(const Options& o) {
+  NodeClasses c;
+  for (int k = 0; k < 4; ++k) {
+    c.outerNodes[k] = o.outerNodes[k];
+    c.innerNodes[k] = o.innerNodes[k];
+  }
+  for (int k = 0; k < 3; ++k) {
+    c.outerWeight[k] = o.outerWeight[k];
+    c.innerWidth[k] = o.innerWidth[k];
+  }
+  return c;
+}
+
 /// The node count of a class: counts[k] for the first k with x > bounds[k], else counts[3].
 inline int NodesOf(const int* counts, const double* bounds, double x) {
   for (int k = 0; k < 3; ++k)
