@@ -86,19 +86,18 @@ std::vector<AxisSpec> KilnAxes(const std::string& model) {
   return {{"mu", 0, 1, 128, Warp::Root4Layer}, DefaultRoughnessAxis(model)};
 }
 
-/// The default catalogue: ltc-ggx and ltc-beckmann (their bakes and searches fit the catalogue's
-/// share, README "LTC tables").
+/// The default catalogue: ltc-ggx, ltc-beckmann and ltc-blinn-phong, the specular models' tables
+/// in the published layout (README "LTC tables").
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
-  for (const char* m : {"ggx", "beckmann"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  for (const char* m : {"ggx", "beckmann", "blinn-phong"}) out.push_back(MakeSpec(m, DefaultAxes(m)));
   return out;
 }
 
-/// On request (`kiln bake --only NAME`): ltc-blinn-phong (with ltc-beckmann, over the share),
-/// kiln's own layout of the GGX table (16384 texels) and the Charlie sheen's table (README).
+/// On request (`kiln bake --only NAME`): kiln's own layout of the GGX table (16384 texels) and the
+/// Charlie sheen's table (README).
 std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
-  return {MakeSpec("blinn-phong", DefaultAxes("blinn-phong")), MakeSpec("ggx", KilnAxes("ggx")),
-          MakeSpec("charlie", DefaultAxes("charlie"))};
+  return {MakeSpec("ggx", KilnAxes("ggx")), MakeSpec("charlie", DefaultAxes("charlie"))};
 }
 
 bool HasRule(const TableSpec& spec) {
