@@ -54,6 +54,11 @@ TEST_CASE(
     "[integrate][fixed-rule-average]") {
   for (const TableSpec& spec : TablesOf(Quantity::AlbedoAvg)) {
     if (FindModel(spec.model)->specular()) continue;
+    // The Charlie pair's averages have their own test
+    // (tests/integrate_fixed_rule_charlie_smith.cpp, the contract's 1e-6 at four roughnesses):
+    // their nested adaptive reference at 1e-10 costs ~7 s a point, most of this test's time (225 s
+    // under load) when they joined the catalogue.
+    if (spec.model == "charlie" || spec.model == "charlie-smith") continue;
     const AxisSpec& r = spec.axes[0];
     std::vector<std::vector<double>> xs = {{r.lo}, {r.hi}};
     if (r.size > 2) xs.push_back({(r.lo + r.hi) / 2});
@@ -62,9 +67,7 @@ TEST_CASE(
     std::printf("average fixed rule %-36s worst %.3g at %s\n", spec.name.c_str(), worst,
                 where.c_str());
     INFO(spec.name << ": worst " << worst << " at " << where);
-    // charlie-smith's E rule errs up to 3.6e-7 itself (its declared kSheenRuleBound 5e-7,
-    // tests/integrate_fixed_rule_charlie_smith.cpp): its average is held to the bound it declares.
-    CHECK(worst <= (spec.model == "charlie-smith" ? kSheenRuleBound + kCosineAverageBound : 1e-7));
+    CHECK(worst <= 1e-7);
   }
 }
 

@@ -104,8 +104,10 @@ TEST_CASE("The Charlie pair's average tables are within 1e-6 of the adaptive ave
     const char* model;
     double r;
   };
-  for (Case c : {Case{"charlie-smith", kCharlieMinRoughness}, Case{"charlie-smith", 0.55},
-                 Case{"charlie-smith", 0.85}, Case{"charlie-smith", 1.0}, Case{"charlie", 1.0}}) {
+  for (Case c :
+       {Case{"charlie-smith", kCharlieMinRoughness}, Case{"charlie-smith", 0.55},
+        Case{"charlie-smith", 0.85}, Case{"charlie-smith", 1.0},
+        Case{"charlie", kCharlieMinRoughness}, Case{"charlie", 0.5225}, Case{"charlie", 1.0}}) {
     TableSpec spec = CatalogueTable(std::string(c.model) + "-albedo-avg");
     REQUIRE(UsesFixedRule(spec));
     double x[1] = {c.r};
