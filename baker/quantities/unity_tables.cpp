@@ -46,14 +46,26 @@ AxisSpec RoughnessAxis(const std::string& model, int size) {
 /// outer half (64 root4 nodes at r = 0) follows to 1.4e-3 near mu = 1 with 128 nodes.
 int MuNodes(const std::string& model) { return model == "ward" ? 192 : 128; }
 
+/// The mu axis of `model`'s albedo table: root4-layer, except unity-brdf2's, root4-layer-split
+/// at the constant mu = sqrt(0.1) (Axis::split): Unity's max(0.1, LdotH^2) puts a kink in E(mu)
+/// there, smeared over a width ~alpha = r^2, which the split warp's nodes crowd on both sides at
+/// every roughness (129 nodes: (N - 1) % 8 == 0).
+AxisSpec MuAxis(const std::string& model) {
+  if (model == "unity-brdf2") {
+    AxisSpec mu{"mu", 0, 1, 257, Warp::Root4LayerSplit};
+    mu.split = kUnityBRDF2MuKink;
+    return mu;
+  }
+  return {"mu", 0, 1, MuNodes(model), Warp::Root4Layer};
+}
+
 }  // namespace
 
 std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions&) {
   const QuantityInfo& q = Describe(Quantity::Albedo);
   std::vector<TableSpec> out;
   for (const std::string& m : OnRequestAlbedoModels())
-    out.push_back(
-        q.makeSpec(m, {{"mu", 0, 1, MuNodes(m), Warp::Root4Layer}, RoughnessAxis(m, 256)}));
+    out.push_back(q.makeSpec(m, {MuAxis(m), RoughnessAxis(m, 256)}));
   return out;
 }
 
