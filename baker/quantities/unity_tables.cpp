@@ -73,7 +73,9 @@ std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions&) {
   const QuantityInfo& q = Describe(Quantity::AlbedoAvg);
   std::vector<TableSpec> out;
   for (const std::string& m : OnRequestAlbedoModels()) {
-    out.push_back(q.makeSpec(m, {RoughnessAxis(m, 256)}));
+    // unity-brdf2: E_avg climbs from 0.14 at r = 0.03 to 1.69 at r = 0.1 (where 1.00001 stops
+    // capping D): 512 sqrt nodes.
+    out.push_back(q.makeSpec(m, {RoughnessAxis(m, m == "unity-brdf2" ? 512 : 256)}));
   }
   return out;
 }
