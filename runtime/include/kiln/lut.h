@@ -54,11 +54,12 @@ namespace kiln {
 ///   Angle:  t = 1 - (2 / pi) acos(y)  (nodes uniform in the angle theta = acos(y):
 ///                         a function of theta_o, smooth in the angle, has a square-root
 ///                         point at y = 1 (mu = cos theta) that this resolves)
-///   Root4LayerSplit: a mu axis split at a point s that moves with axis 2, here the critical
-///           cosine s = sqrt(1 - eta^2) of total internal reflection, eta the value of axis 2
-///           (clamped to that axis; s is clamped into [lo + (hi - lo) / 64, hi - (hi - lo) / 64],
-///           so for eta >= 1 it sits near lo). Only on axis 0 of a 3-axis table (mu,
-///           roughness, eta); c is the Root4Layer scale of axis 1. With y = (x - lo) / (hi - lo),
+///   Root4LayerSplit: a mu axis split at a point s: a constant (Axis::split, see below) or,
+///           by default, the critical cosine s = sqrt(1 - eta^2) of total internal reflection,
+///           eta the value of axis 2 (clamped to that axis; s is clamped into
+///           [lo + (hi - lo) / 64, hi - (hi - lo) / 64], so for eta >= 1 it sits near lo). Only
+///           on axis 0 of a 3-axis table (mu, roughness, eta), or of 2 or 3 axes with a
+///           constant split; c is the Root4Layer scale of axis 1. With y = (x - lo) / (hi - lo),
 ///           y_s = (s - lo) / (hi - lo) and m = y_s / 2, three pieces, each a Root4Layer warp
 ///           L(d, c') of the distance d from a layer end (L at c' = 0: the collapsed form):
 ///             y <= m:       t = L(y / m, c / m) / 4                       (the grazing layer)
@@ -155,7 +156,8 @@ inline double etaLayerScale(double lo, double hi, double eta) noexcept {
 }
 
 /// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit): only on
-/// axis 0 of a table of two or more axes (three for Root4LayerSplit), coupled to axis 1.
+/// axis 0 of a table of two or more axes (three for Root4LayerSplit without a constant split),
+/// coupled to axis 1.
 inline bool isLayerWarp(Warp warp) noexcept {
   return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit;
 }
