@@ -107,8 +107,10 @@ void RegisterInspect(CLI::App& app) {
     std::printf("params          %s\n", t.params.empty() ? "(none)" : t.params.c_str());
     for (int d = 0; d < t.dims(); ++d) {
       const TableAxis& a = t.axes[d];
-      std::printf("axis %d          %s [%.17g, %.17g] %d nodes, %s warp\n", d, a.name.c_str(),
+      std::printf("axis %d          %s [%.17g, %.17g] %d nodes, %s warp", d, a.name.c_str(),
                   a.axis.lo, a.axis.hi, a.axis.size, warpName(a.axis.warp));
+      if (a.axis.hasConstantSplit()) std::printf(", split at %.17g", a.axis.split);
+      std::printf("\n");
     }
     std::printf("method          %s\n", t.method.c_str());
     std::printf("tolerance       %.3g\n", t.tolerance);

@@ -40,16 +40,24 @@ constexpr int kSearchAverageNodes = 6;
 
 /// Calls visit(mu, weight) at every node of the rule above, in ascending mu, with weights that
 /// include the factor 2 mu: E_avg = sum of weight e(mu). `layer` is the width of e's layer at
-/// mu = 0 (alpha for a microfacet albedo); `nodes` per panel.
+/// mu = 0 (alpha for a microfacet albedo); `nodes` per panel. `kink` (in (0, 1)) adds a panel
+/// boundary there; `kinkLayer` > 0 grades panels on both sides of it as at mu = 0 (boundaries at
+/// kink -+ b, b = clamp(kinkLayer, 1e-4, 1e-2) 4^k inside (0, 1)): a kink smoothed over a width
+/// ~kinkLayer (unity-brdf2's E at mu = sqrt(0.1), over ~alpha).
 template <class V>
 void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes,
-                             double kink = -1) {
+                             double kink = -1, double kinkLayer = 0) {
   const GaussRule01& rule = CachedGaussLegendre01(nodes);
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 1e-2); b < 1; b *= 4) breaks.push_back(b);
   breaks.push_back(1);
   if (kink > 0 && kink < 1) {  // a panel boundary at e's kink (charlie-smith's mu = 1/2)
     breaks.push_back(kink);
+    if (kinkLayer > 0)
+      for (double b = std::clamp(kinkLayer, 1e-4, 1e-2); kink - b > 0 || kink + b < 1; b *= 4) {
+        if (kink - b > 0) breaks.push_back(kink - b);
+        if (kink + b < 1) breaks.push_back(kink + b);
+      }
     std::sort(breaks.begin(), breaks.end());
   }
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
@@ -76,14 +84,14 @@ double FixedCosineAverage(E&& e, double layer) {
 /// (0, 1)) adds a panel boundary there.
 template <class E>
 std::vector<double> FixedCosineAverageChannels(E&& e, double layer, int nodes = kCosineAverageNodes,
-                                               double kink = -1) {
+                                               double kink = -1, double kinkLayer = 0) {
   std::vector<double> sum;
   auto one = [&](double mu, double weight) {
     std::vector<double> v = e(mu);
     sum.resize(v.size(), 0.0);
     for (size_t c = 0; c < v.size(); ++c) sum[c] += weight * v[c];
   };
-  FixedCosineAverageNodes(layer, one, nodes, kink);
+  FixedCosineAverageNodes(layer, one, nodes, kink, kinkLayer);
   return sum;
 }
 

@@ -212,7 +212,8 @@ std::string cppHeaderText(const Table& table) {
     Axis a;  // unused axes: a single node
     if (d < dims) a = table.axes[static_cast<std::size_t>(d)].axis;
     h += "    {" + doubleLiteral(a.lo) + ", " + doubleLiteral(a.hi) + ", " +
-         std::to_string(a.size) + ", " + warpEnumerator(a.warp) + "}," +
+         std::to_string(a.size) + ", " + warpEnumerator(a.warp) +
+         (a.hasConstantSplit() ? ", " + doubleLiteral(a.split) : std::string()) + "}," +
          (d < dims ? "  // " + commentSafe(table.axes[static_cast<std::size_t>(d)].name)
                    : "  // unused") +
          "\n";

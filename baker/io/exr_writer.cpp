@@ -94,6 +94,8 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
     setDouble(h, prefix + "hi", a.axis.hi);
     setInt(h, prefix + "size", a.axis.size);
     setString(h, prefix + "warp", warpName(a.axis.warp));
+    // Only a constant split is written: files without it keep the critical cosine.
+    if (a.axis.hasConstantSplit()) setDouble(h, prefix + "split", a.axis.split);
   }
   setString(h, "kiln.params", t.params);
   setString(h, "kiln.method", t.method);

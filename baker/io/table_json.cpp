@@ -4,12 +4,15 @@ namespace kiln {
 
 nlohmann::ordered_json AxesJson(const std::vector<TableAxis>& axes) {
   nlohmann::ordered_json out = nlohmann::ordered_json::array();
-  for (const TableAxis& a : axes)
+  for (const TableAxis& a : axes) {
     out.push_back({{"name", a.name},
                    {"lo", a.axis.lo},
                    {"hi", a.axis.hi},
                    {"size", a.axis.size},
                    {"warp", warpName(a.axis.warp)}});
+    // A constant split point of a root4-layer-split axis (absent: the critical cosine).
+    if (a.axis.hasConstantSplit()) out.back()["split"] = a.axis.split;
+  }
   return out;
 }
 

@@ -149,6 +149,7 @@ Table TableFromDescription(const ordered_json& j) {
     ta.axis.size = Get<int>(a, "size");
     std::string warp = Get<std::string>(a, "warp");
     if (!warpFromName(warp.c_str(), ta.axis.warp)) Bad("unknown warp '" + warp + "'");
+    if (a.contains("split")) ta.axis.split = Get<double>(a, "split");
     std::string problem = axisProblem(ta.axis);
     if (!problem.empty()) Bad("axis '" + ta.name + "': " + problem);
     t.axes.push_back(ta);

@@ -94,6 +94,8 @@ std::string FixedRuleMethod(const TableSpec& spec) {
 /// "3"; the others as their E's (MicrofacetFixedRuleVersion).
 const char* AvgFixedRuleVersion(const TableSpec& spec) {
   if (spec.model == "charlie" || spec.model == "charlie-smith") return "3";
+  // unity-brdf2: panels graded about E's kink at mu = sqrt(0.1) (AverageFixedRule).
+  if (spec.model == "unity-brdf2") return "unity-brdf2-kink-1";
   return MicrofacetFixedRuleVersion(spec);
 }
 

@@ -384,8 +384,13 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   // 2.5e-7 for charlie-smith, of 20 nodes per panel from 1e-4), and charlie-smith's E has
   // Lambda(mu)'s C1 switch at mu = 1/2: a panel boundary there (SheenAverageKink).
   const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
+  // unity-brdf2: E's kink at mu = sqrt(0.1) (max(0.1, LdotH^2)), smoothed over ~alpha: panels
+  // graded on both sides of it from alpha.
+  const bool unity2 = albedo.model == "unity-brdf2";
   std::vector<double> r =
-      IsSpecular(albedo.model) ? FixedCosineAverageChannels(e, layer, nodes)
+      IsSpecular(albedo.model)
+          ? FixedCosineAverageChannels(e, layer, nodes, unity2 ? std::sqrt(0.1) : -1,
+                                       unity2 ? layer : 0)
       : IsSheen(albedo.model)
           ? FixedCosineAverageChannels(e, albedo.model == "ashikhmin-velvet" ? 1e-4 : 1e-2, nodes,
                                        albedo.model == "charlie-smith" ? 0.5 : -1)

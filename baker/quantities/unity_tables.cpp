@@ -46,14 +46,28 @@ AxisSpec RoughnessAxis(const std::string& model, int size) {
 /// outer half (64 root4 nodes at r = 0) follows to 1.4e-3 near mu = 1 with 128 nodes.
 int MuNodes(const std::string& model) { return model == "ward" ? 192 : 128; }
 
+/// The mu axis of `model`'s albedo table: root4-layer, except unity-brdf2's, root4-layer-split
+/// at the constant mu = sqrt(0.1) (Axis::split): Unity's max(0.1, LdotH^2) puts a kink in E(mu)
+/// there, smeared over a width ~alpha = r^2, which the split warp's nodes crowd on both sides at
+/// every roughness. 513 nodes ((N - 1) % 8 == 0): below the kink E ~ 10 mu^2 / (r + 0.5) is
+/// curved and the split spends its lower half on the two layers; declared lookup error 1.1e-2
+/// at 129 nodes, 3.1e-3 at 257, 8.1e-4 at 513.
+AxisSpec MuAxis(const std::string& model) {
+  if (model == "unity-brdf2") {
+    AxisSpec mu{"mu", 0, 1, 513, Warp::Root4LayerSplit};
+    mu.split = kUnityBRDF2MuKink;
+    return mu;
+  }
+  return {"mu", 0, 1, MuNodes(model), Warp::Root4Layer};
+}
+
 }  // namespace
 
 std::vector<TableSpec> OnRequestAlbedoTables(const CatalogueOptions&) {
   const QuantityInfo& q = Describe(Quantity::Albedo);
   std::vector<TableSpec> out;
   for (const std::string& m : OnRequestAlbedoModels())
-    out.push_back(
-        q.makeSpec(m, {{"mu", 0, 1, MuNodes(m), Warp::Root4Layer}, RoughnessAxis(m, 256)}));
+    out.push_back(q.makeSpec(m, {MuAxis(m), RoughnessAxis(m, 256)}));
   return out;
 }
 
@@ -61,7 +75,9 @@ std::vector<TableSpec> OnRequestAlbedoAvgTables(const CatalogueOptions&) {
   const QuantityInfo& q = Describe(Quantity::AlbedoAvg);
   std::vector<TableSpec> out;
   for (const std::string& m : OnRequestAlbedoModels()) {
-    out.push_back(q.makeSpec(m, {RoughnessAxis(m, 256)}));
+    // unity-brdf2: E_avg climbs from 0.14 at r = 0.03 to 1.69 at r = 0.1 (where 1.00001 stops
+    // capping D): 512 sqrt nodes.
+    out.push_back(q.makeSpec(m, {RoughnessAxis(m, m == "unity-brdf2" ? 512 : 256)}));
   }
   return out;
 }

@@ -1,6 +1,8 @@
 #include "baker/scene/axis_narrowing.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace kiln {
@@ -40,12 +42,18 @@ AxisSpec NarrowAxis(const AxisSpec& full, double lo, double hi) {
   best.hi = hi;
   best.size = cap;
   best.warp = Warp::Linear;
+  best.split = std::numeric_limits<double>::quiet_NaN();
   for (Warp warp : {full.warp, Warp::Linear}) {
     if (warp == Warp::Log && lo <= 0) continue;
+    // A constant split point outside the narrowed range: the warp cannot keep it.
+    if (warp == Warp::Root4LayerSplit && std::isfinite(full.split) &&
+        !(lo < full.split && full.split < hi))
+      continue;
     AxisSpec a = full;
     a.lo = lo;
     a.hi = hi;
     a.warp = warp;
+    if (warp != Warp::Root4LayerSplit) a.split = std::numeric_limits<double>::quiet_NaN();
     for (a.size = 2; a.size < best.size; ++a.size)
       if (AsFine(a, ref)) {
         best = a;
@@ -62,6 +70,7 @@ AxisSpec SliceAxis(const AxisSpec& full, double v) {
   AxisSpec a = full;
   a.size = 2;
   a.warp = Warp::Linear;
+  a.split = std::numeric_limits<double>::quiet_NaN();
   if (v < full.lo) {
     a.lo = v, a.hi = v + w;
   } else if (v >= full.hi) {

@@ -1,6 +1,7 @@
 #include "baker/scene/plan.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "baker/models/registry.h"
@@ -71,12 +72,12 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
       std::any_of(cuts.begin(), cuts.end(), [](const Cut& c) { return c.axis == 1 && c.drop; });
   if (axis1Dropped && !axes.empty() && isLayerWarp(spec.axes[0].warp) &&
       axes[0].name == spec.axes[0].name)
-    axes[0].warp = Warp::Root4;
+    axes[0].warp = Warp::Root4, axes[0].split = std::nan("");
   // root4-layer-split reads axis 2 too: without it (a single eta), mu takes root4-layer.
   const bool axis2Dropped =
       std::any_of(cuts.begin(), cuts.end(), [](const Cut& c) { return c.axis == 2 && c.drop; });
   if (!axis1Dropped && axis2Dropped && spec.axes[0].warp == Warp::Root4LayerSplit &&
-      !axes.empty() && axes[0].name == spec.axes[0].name)
+      !std::isfinite(spec.axes[0].split) && !axes.empty() && axes[0].name == spec.axes[0].name)
     axes[0].warp = Warp::Root4Layer;
   spec.axes = axes;
   for (const Cut& c : cuts) spec.name += "-" + c.tag;

@@ -56,7 +56,7 @@ std::string TableSpec::HashText() const {
   for (const std::string& c : channels) text += "|c:" + c;
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
-            "," + warpName(a.warp);
+            "," + warpName(a.warp) + (std::isfinite(a.split) ? ",split=" + G17(a.split) : "");
   return text;
 }
 
@@ -111,7 +111,7 @@ TableSpec SpecFromTable(const Table& table) {
   s.channels = table.channels;
   s.meanings = table.channelMeanings;
   for (const TableAxis& a : table.axes)
-    s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp});
+    s.axes.push_back({a.name, a.axis.lo, a.axis.hi, a.axis.size, a.axis.warp, a.axis.split});
   try {
     for (const std::string& kv : splitList(table.params, ';')) {
       size_t eq = kv.find('=');
@@ -133,7 +133,9 @@ double LayerScaleOf(const TableSpec& spec, const double* x) {
 }
 
 double SplitOf(const TableSpec& spec, const double* x) {
-  if (spec.axes.size() != 3 || spec.axes[0].warp != Warp::Root4LayerSplit) return 0.5;
+  if (spec.axes.size() < 2 || spec.axes[0].warp != Warp::Root4LayerSplit) return 0.5;
+  if (std::isfinite(spec.axes[0].split)) return spec.axes[0].split;
+  if (spec.axes.size() != 3) return 0.5;
   return criticalSplit(spec.axes[0].lo, spec.axes[0].hi, spec.axes[2].lo, spec.axes[2].hi, x[2]);
 }
 

@@ -1,6 +1,7 @@
 // A table spec: which integral of which model, over which axes, into which channels. A spec
 // fully determines a table's texels; its hash is what makes a baked file up to date.
 #pragma once
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -17,7 +18,10 @@ struct AxisSpec {
   double lo = 0, hi = 1;
   int size = 2;
   Warp warp = Warp::Linear;
-  Axis ToAxis() const { return Axis{lo, hi, size, warp}; }
+  /// A constant split point of a root4-layer-split axis (Axis::split); NaN: the critical cosine
+  /// of axis 2's eta, or no split (other warps).
+  double split = std::numeric_limits<double>::quiet_NaN();
+  Axis ToAxis() const { return Axis{lo, hi, size, warp, split}; }
 };
 
 /// What a table holds: one table kind (quantity; baker/quantities/ describes each, with its
@@ -64,8 +68,9 @@ Table TableShell(const TableSpec& spec, const std::string& generator, const std:
 /// eta = 1 exactly; 1e-12 for any other warp).
 double LayerScaleOf(const TableSpec& spec, const double* x);
 
-/// The split point of a root4-layer-split axis 0 at the point x (kiln::criticalSplit of axis 2's
-/// value, the critical cosine sqrt(1 - eta^2)); 0.5 (ignored) for any other axis 0.
+/// The split point of a root4-layer-split axis 0 at the point x: its constant split, or
+/// kiln::criticalSplit of axis 2's value (the critical cosine sqrt(1 - eta^2)) when it has none;
+/// 0.5 (ignored) for any other axis 0.
 double SplitOf(const TableSpec& spec, const double* x);
 
 /// The point x (axis units, one coordinate per axis) at warped coordinates t in [0, 1] per axis:

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <set>
@@ -147,7 +148,10 @@ void readAttributes(const Imf::Header& h, Table& table) {
     if (!warpFromName(warp.c_str(), a.axis.warp))
       throw Refusal(
           prefix + "warp is '" + warp +
-          "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta");
+          "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta, "
+          "root4-layer-split");
+    // A constant split point of a root4-layer-split axis; absent: NaN, the critical cosine.
+    a.axis.split = optionalDouble(h, prefix + "split", std::numeric_limits<double>::quiet_NaN());
     std::string axisIssue = axisProblem(a.axis);
     if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
     if (!axisIssue.empty())

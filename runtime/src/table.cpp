@@ -31,6 +31,13 @@ std::string axisProblem(const Axis& axis) {
   if (axis.warp == Warp::Root4LayerSplit && !axis.valid())
     return "size " + std::to_string(axis.size) +
            " with the root4-layer-split warp: needs size >= 9 and (size - 1) % 8 == 0";
+  if (axis.hasConstantSplit() && axis.warp != Warp::Root4LayerSplit)
+    return std::string("a split point ") + number(axis.split) + " on the " + warpName(axis.warp) +
+           " warp (only root4-layer-split takes one)";
+  if (std::isinf(axis.split) ||
+      (axis.hasConstantSplit() && !(axis.lo < axis.split && axis.split < axis.hi)))
+    return "split point " + number(axis.split) + " is not inside (lo " + number(axis.lo) + ", hi " +
+           number(axis.hi) + ")";
   Warp parsed;
   if (!warpFromName(warpName(axis.warp), parsed)) return "unknown warp";
   return std::string();
@@ -85,10 +92,10 @@ bool validateTable(const Table& table, std::string& problem) {
                 "only on axis 0 of a table with two or more axes";
       return false;
     }
-    if (a.axis.warp == Warp::Root4LayerSplit && dims != 3) {
+    if (a.axis.warp == Warp::Root4LayerSplit && dims != 3 && !a.axis.hasConstantSplit()) {
       problem = label +
-                ": the root4-layer-split warp reads axes 1 and 2; it is allowed only on "
-                "axis 0 of a table with three axes";
+                ": the root4-layer-split warp without a constant split reads axes 1 and 2; it "
+                "is allowed only on axis 0 of a table with three axes";
       return false;
     }
     nodes *= static_cast<std::uint64_t>(a.axis.size);

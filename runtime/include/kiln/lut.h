@@ -54,11 +54,12 @@ namespace kiln {
 ///   Angle:  t = 1 - (2 / pi) acos(y)  (nodes uniform in the angle theta = acos(y):
 ///                         a function of theta_o, smooth in the angle, has a square-root
 ///                         point at y = 1 (mu = cos theta) that this resolves)
-///   Root4LayerSplit: a mu axis split at a point s that moves with axis 2, here the critical
-///           cosine s = sqrt(1 - eta^2) of total internal reflection, eta the value of axis 2
-///           (clamped to that axis; s is clamped into [lo + (hi - lo) / 64, hi - (hi - lo) / 64],
-///           so for eta >= 1 it sits near lo). Only on axis 0 of a 3-axis table (mu,
-///           roughness, eta); c is the Root4Layer scale of axis 1. With y = (x - lo) / (hi - lo),
+///   Root4LayerSplit: a mu axis split at a point s: a constant (Axis::split, see below) or,
+///           by default, the critical cosine s = sqrt(1 - eta^2) of total internal reflection,
+///           eta the value of axis 2 (clamped to that axis; s is clamped into
+///           [lo + (hi - lo) / 64, hi - (hi - lo) / 64], so for eta >= 1 it sits near lo). Only
+///           on axis 0 of a 3-axis table (mu, roughness, eta), or of 2 or 3 axes with a
+///           constant split; c is the Root4Layer scale of axis 1. With y = (x - lo) / (hi - lo),
 ///           y_s = (s - lo) / (hi - lo) and m = y_s / 2, three pieces, each a Root4Layer warp
 ///           L(d, c') of the distance d from a layer end (L at c' = 0: the collapsed form):
 ///             y <= m:       t = L(y / m, c / m) / 4                       (the grazing layer)
@@ -70,8 +71,12 @@ namespace kiln {
 ///           satisfy (N - 1) % 8 == 0 (t = 1/8, 3/8, 1/2, 3/4 are nodes). At r = 0 (c = 0) each
 ///           piece collapses as Root4Layer does: the nodes t < 1/8 and 3/8 < t < 3/4 of that
 ///           row hold the layers' limit r -> 0+, read only by 0 < r < r_1 (holdsLayerLimit).
-///           The split is a function of another axis's value; a constant split point would be
-///           the special case of a 2D table (not implemented).
+///           Where the split comes from is data of the axis (Axis::split): NaN (the default,
+///           and every file without the attribute kiln.axis<i>.split) is the critical cosine of
+///           axis 2's eta as above (a 3-axis table); a finite value lo < split < hi is a
+///           constant split point, the same in every layer, and then axis 2 is not read (a
+///           table of two or three axes): a kink at a fixed x = split (e.g. a max() of the
+///           model) is a grid line at every value of axis 1.
 enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle, LayerEta, Root4LayerSplit };
 
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log", "root4", "root4-layer",
@@ -151,7 +156,8 @@ inline double etaLayerScale(double lo, double hi, double eta) noexcept {
 }
 
 /// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit): only on
-/// axis 0 of a table of two or more axes (three for Root4LayerSplit), coupled to axis 1.
+/// axis 0 of a table of two or more axes (three for Root4LayerSplit without a constant split),
+/// coupled to axis 1.
 inline bool isLayerWarp(Warp warp) noexcept {
   return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit;
 }
@@ -186,13 +192,22 @@ struct Axis {
   double hi = 1.0;
   int size = 1;
   Warp warp = Warp::Linear;
+  /// The split point of a Root4LayerSplit axis: NaN (default) for the critical cosine of axis
+  /// 2's eta (criticalSplit), a finite lo < split < hi for a constant one. Ignored (and NaN)
+  /// on any other warp.
+  double split = std::numeric_limits<double>::quiet_NaN();
 
-  /// True when the axis satisfies the conditions above (and (size - 1) % 8 == 0 for
-  /// Root4LayerSplit).
+  /// True when split holds a constant split point (a finite value).
+  bool hasConstantSplit() const noexcept { return std::isfinite(split); }
+
+  /// True when the axis satisfies the conditions above ((size - 1) % 8 == 0 for
+  /// Root4LayerSplit, a constant split only on Root4LayerSplit and strictly inside (lo, hi)).
   bool valid() const noexcept {
     return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
            (warp != Warp::Log || lo > 0.0) &&
-           (warp != Warp::Root4LayerSplit || (size >= 9 && (size - 1) % 8 == 0));
+           (warp != Warp::Root4LayerSplit || (size >= 9 && (size - 1) % 8 == 0)) &&
+           (!hasConstantSplit() || (warp == Warp::Root4LayerSplit && lo < split && split < hi)) &&
+           !std::isinf(split);
   }
 
   /// Position of node i: lo + (hi - lo) * w^-1(i / (N - 1)) (for the log warp
@@ -438,15 +453,18 @@ struct LutView {
     for (int d = 0; d < dims; ++d) {
       if (!axis[d].valid()) return false;
       if (isLayerWarp(axis[d].warp) && (d != 0 || dims < 2)) return false;
-      if (axis[d].warp == Warp::Root4LayerSplit && dims != 3) return false;
+      if (axis[d].warp == Warp::Root4LayerSplit && dims != 3 && !axis[d].hasConstantSplit())
+        return false;
     }
     return true;
   }
 
-  /// The split point of axis 0 at the point x (criticalSplit of axis 2's value for a
-  /// Root4LayerSplit axis 0; 0.5, ignored, otherwise).
+  /// The split point of axis 0 at the point x: for a Root4LayerSplit axis 0 its constant
+  /// split, or criticalSplit of axis 2's value when the split is NaN; 0.5, ignored, otherwise.
   double splitAt(const double* x) const noexcept {
-    if (dims != 3 || axis[0].warp != Warp::Root4LayerSplit) return 0.5;
+    if (dims < 2 || axis[0].warp != Warp::Root4LayerSplit) return 0.5;
+    if (axis[0].hasConstantSplit()) return axis[0].split;
+    if (dims != 3) return 0.5;
     return criticalSplit(axis[0].lo, axis[0].hi, axis[2].lo, axis[2].hi, x[2]);
   }
 
