@@ -28,6 +28,17 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
                                                        long long* evals);
 
+/// {E_avg_R, E_avg_T} at n etas at once (1 <= n <= kMaxDielectricColumn, every eta >=
+/// kDielectricTableEtaMin: the entering side, where the mu panels do not depend on eta), into
+/// out: one E column (FixedRuleDielectricAlbedoColumn) per mu node. Each out[e] has the bits
+/// FixedRuleDielectricAlbedoAverage(alpha, etas[e], nodes) gives; evals: one eta's.
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
+                                            std::array<double, 2>* out, long long* evals);
+/// The same at kDielectricAverageNodes, remembering recent columns (the bake's: r-avg and t-avg
+/// baked in one process compute each column once).
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
+                                            std::array<double, 2>* out, long long* evals);
+
 /// The same averages by adaptive quadrature over mu (Gauss-Kronrod on the same panels) of the
 /// adaptive E (DielectricAlbedo to tol / 10): the reference, to about tol (absolute).
 std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double tol,

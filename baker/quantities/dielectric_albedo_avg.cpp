@@ -7,6 +7,7 @@
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
 #include "baker/quantities/common.h"
+#include "baker/quantities/dielectric_columns.h"
 
 namespace kiln {
 namespace {
@@ -83,6 +84,30 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
 }
 
+/// The entering side's texels by columns of eta (quantities/dielectric_columns.h): the mu
+/// panels and E's walks are shared by the whole eta axis; each texel the bits FixedRule gives.
+void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
+               std::vector<double>& errors) {
+  CheckModel(spec);
+  const int c = KindOf(spec.quantity).transmit ? 1 : 0;
+  DielectricColumnBake how;
+  how.columnOf = [&](const double* x, double* a, double* b, double* eta) {
+    const auto [r, e] = PointOf(spec, x);
+    if (r == 0 || !(e >= kDielectricTableEtaMin)) return false;
+    *a = std::max(AlphaFromPerceptual(r), MinAlpha);
+    *b = 0;
+    *eta = e;
+    return true;
+  };
+  how.column = [](double alpha, double, const double* etas, int n, std::array<double, 2>* out,
+                  long long* evals) {
+    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, out, evals);
+  };
+  how.store = [c](const double*, std::array<double, 2> e) { return std::vector<double>{e[c]}; };
+  how.bound = kDielectricRuleBound + kDielectricAverageBound;
+  BakeDielectricColumns(spec, threads, how, table, evals, errors);
+}
+
 std::string FixedRuleMethod(const TableSpec&) {
   return "fixed Gauss rule over mu (" + std::to_string(kDielectricAverageNodes) +
          " nodes per panel, panels graded from the GGX layer at mu = 0, in sqrt(1 - mu) towards "
@@ -126,7 +151,10 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
-  q.fixedRuleVersion = "4";  // mu panels at mu = eta and towards 1, 10 nodes (integrate/...avg.cpp)
+  // 4: mu panels at mu = eta and towards 1, 10 nodes (integrate/dielectric_albedo_avg.cpp); 5,
+  // entering: E by the eta columns' rule (integrate/dielectric_albedo.cpp).
+  q.fixedRuleVersion = KindOf(Q).exit ? "4" : "5";
+  if (!KindOf(Q).exit) q.bakeTable = BakeTable;
   q.evaluate = Evaluate;
   q.smoothLimit = SmoothLimit;
   q.method = Method;
