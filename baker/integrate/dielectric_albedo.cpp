@@ -75,6 +75,8 @@ struct View {
   /// The constant threshold cosines of the Fresnel layer (eps, 4 eps, or a column's fixed set).
   int ncs = 0;
   double cs[2] = {0, 0};
+  /// E_R alone (the exit averages' rule): no panels at the refracted ray's structures.
+  bool reflectOnly = false;
   /// Ratios of the geometric panel sequences (DielectricRuleOptions): masking, grazing, tail.
   double maskingRatio = 4, grazingRatio = 4, tailRatio = 4;
   // The problem dielectric_walk.h walks (defined below).
@@ -153,7 +155,7 @@ struct FastView : View {
     };
     const double muR = 2 * c * h.cosTheta - mu;
     if (muR > 0 && F > 0) out[0] = weigh(muR, F);
-    if (F < 1) {
+    if (F < 1 && !reflectOnly) {
       const double muT = (mu - (cc - g) * h.cosTheta) / eta;
       if (muT > 0) out[1] = weigh(muT, 1 - F);
     }
@@ -173,7 +175,7 @@ int Thresholds(const View& v, PolarParam h, double* c0) {
   if (v.eta < 1) {
     c0[n++] = v.cCrit;
     // mu_t = -m for m = 0 (the horizon) and the masking layer's geometric m below mu.
-    for (double m = 0; n < 30; m = m == 0 ? scale / 4 : v.maskingRatio * m) {
+    for (double m = 0; n < 30 && !v.reflectOnly; m = m == 0 ? scale / 4 : v.maskingRatio * m) {
       double k = (v.mu / v.eta - m) / h.cosTheta;
       if (!(k > 0)) break;
       double c = (k * k * v.eta * v.eta - v.eta * v.eta + 1) / (2 * k * v.eta);
@@ -242,10 +244,10 @@ int ThetaBreaks(const View& v, double* thetas) {
     if (v.mu < 2 * cs[i]) add(std::acos(v.mu / (2 * cs[i])));
   }
   // The refracted horizon appears where it crosses c_crit: cos_m = mu / c_crit.
-  if (v.eta < 1 && v.mu < v.cCrit) add(std::acos(v.mu / v.cCrit));
+  if (v.eta < 1 && v.mu < v.cCrit && !v.reflectOnly) add(std::acos(v.mu / v.cCrit));
   // The refracted horizon meets phi = 0 or pi: sign changes of mu_t along theta_m, by a scan and
   // bisection (a fixed number of steps: deterministic).
-  if (v.eta < 1) {
+  if (v.eta < 1 && !v.reflectOnly) {
     for (int side = 0; side < 2; ++side) {
       auto muT = [&](double t, bool* ok) {
         double c = std::cos(side == 0 ? t - to : t + to);
@@ -529,6 +531,19 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
   v.eta2 = eta * eta;
   const Channels<2> r = dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};
+}
+
+double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
+                                      const DielectricRuleOptions& opt, long long* evals) {
+  FastView v;
+  static_cast<View&>(v) = MakeView(mu, alpha, eta);
+  v.maskingRatio = opt.maskingRatio;
+  v.grazingRatio = opt.grazingRatio;
+  v.tailRatio = opt.tailRatio;
+  v.a2 = Sqr(v.dist.alpha);
+  v.eta2 = eta * eta;
+  v.reflectOnly = true;
+  return dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals)[0];
 }
 
 namespace {

@@ -66,6 +66,13 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
 void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
                                      std::array<double, 2>* out, long long* evals = nullptr);
 
+/// E_R alone by the fixed rule's node counts on the panels of the reflected ray's structures
+/// only (the horizon, its masking layer, the critical cosine and the Fresnel layer: none at the
+/// refracted ray's): the exit averages' E_R (integrate/dielectric_albedo_avg.cpp), whose E_T
+/// follows from the entering side by reciprocity. evals (optional) accumulates.
+double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
+                                      const DielectricRuleOptions& opt, long long* evals = nullptr);
+
 /// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
 constexpr double kDielectricRuleBound = 6e-7;
 

@@ -165,6 +165,26 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
   if (evals) *evals += v.evals;
 }
 
+double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals) {
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  double sum = 0;
+  for (const Panel& p : Panels(alpha, eta))
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      double dmu;
+      const double mu = PanelPoint(p, g.x[k], &dmu);
+      sum += 2 * g.w[k] * dmu * mu * FixedRuleDielectricReflectance(mu, alpha, eta, opt, evals);
+    }
+  return sum;
+}
+
+double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals) {
+  const double etaIn = 1 / eta;
+  std::array<double, 2> e;
+  FixedRuleDielectricAlbedoAverageColumn(alpha, &etaIn, 1, nodes, &e, evals);
+  return eta * eta * e[1];
+}
+
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
                                                        long long* evals) {
   if (eta >= kDielectricTableEtaMin) {  // the entering tables' rule: a column of one
@@ -172,6 +192,9 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
     FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, nodes, &e, evals);
     return e;
   }
+  if (1 / eta >= kDielectricTableEtaMin)  // the exit tables' rule
+    return {FixedRuleDielectricExitAverageR(alpha, eta, nodes, evals),
+            FixedRuleDielectricExitAverageT(alpha, eta, nodes, evals)};
   const GaussRule01& g = CachedGaussLegendre01(nodes);
   std::array<double, 2> sum{0, 0};
   for (const Panel& p : Panels(alpha, eta))
