@@ -251,7 +251,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.defaultAxes = DefaultAxes<Q>;
   q.catalogue = Catalogue<Q>;
   q.inDefaultCatalogue =
-      false;  // 92 s of CPU for the eight glass tables; bounds above 1e-3 (README)
+      false;  // 33-37 s of CPU for the nine glass tables; bounds above 1e-3 (README)
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
