@@ -49,6 +49,30 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
 std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
                                                 long long* evals = nullptr);
 
+/// Most etas of one column (FixedRuleDielectricAlbedoColumn).
+constexpr int kMaxDielectricColumn = 64;
+
+/// {E_R, E_T} by the fixed rule at (mu, alpha) for n etas at once (1 <= n <=
+/// kMaxDielectricColumn, every eta >= kDielectricTableEtaMin: the entering side), into out[0 ..
+/// n-1]: one walk of the microfacet normals (its panels do not depend on eta there), the
+/// geometry shared, per eta only F and the refracted ray (dielectric_albedo.cpp, "Columns"). Each
+/// out[e] has the bits FixedRuleDielectricAlbedo(mu, alpha, etas[e], opt) gives. evals
+/// (optional) accumulates one eta's evaluations (every eta takes the same nodes).
+void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
+                                     const DielectricRuleOptions& opt, std::array<double, 2>* out,
+                                     long long* evals = nullptr);
+/// The same with the bake's node counts, remembering its recent columns (by the bits of the
+/// arguments): the E_R and E_T tables baked in one process walk each column once.
+void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
+                                     std::array<double, 2>* out, long long* evals = nullptr);
+
+/// E_R alone by the fixed rule's node counts on the panels of the reflected ray's structures
+/// only (the horizon, its masking layer, the critical cosine and the Fresnel layer: none at the
+/// refracted ray's): the exit averages' E_R (integrate/dielectric_albedo_avg.cpp), whose E_T
+/// follows from the entering side by reciprocity. evals (optional) accumulates.
+double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
+                                      const DielectricRuleOptions& opt, long long* evals = nullptr);
+
 /// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
 constexpr double kDielectricRuleBound = 6e-7;
 

@@ -28,9 +28,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "baker/integrate/dielectric_albedo.h"
+#include "baker/integrate/dielectric_column_memo.h"
 #include "baker/integrate/fixed_rule_average.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -126,8 +129,72 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
   return FixedRuleDielectricAlbedoAverage(alpha, eta, kDielectricAverageNodes, evals);
 }
 
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
+                                            std::array<double, 2>* out, long long* evals) {
+  if (n < 1 || n > kMaxDielectricColumn)
+    throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  for (int e = 0; e < n; ++e) out[e] = {0, 0};
+  std::array<double, 2> col[kMaxDielectricColumn];
+  // Entering (every eta >= kDielectricTableEtaMin, which the E column checks): the mu panels do
+  // not depend on eta.
+  for (const Panel& p : Panels(alpha, etas[0]))
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      double dmu;
+      const double mu = PanelPoint(p, g.x[k], &dmu);
+      FixedRuleDielectricAlbedoColumn(mu, alpha, etas, n, opt, col, evals);
+      for (int e = 0; e < n; ++e)
+        for (int c = 0; c < 2; ++c) out[e][c] += 2 * g.w[k] * dmu * mu * col[e][c];
+    }
+}
+
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
+                                            std::array<double, 2>* out, long long* evals) {
+  static DielectricColumnMemo memo;
+  const DielectricColumnMemo::Key key =
+      DielectricColumnMemo::KeyOf(alpha, kDielectricAverageNodes, etas, n);
+  DielectricColumnMemo::Value v;
+  if (!memo.Find(key, v)) {
+    v.e.resize(n);
+    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, kDielectricAverageNodes, v.e.data(),
+                                           &v.evals);
+    memo.Keep(key, v);
+  }
+  std::copy(v.e.begin(), v.e.end(), out);
+  if (evals) *evals += v.evals;
+}
+
+double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals) {
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  double sum = 0;
+  for (const Panel& p : Panels(alpha, eta))
+    for (size_t k = 0; k < g.x.size(); ++k) {
+      double dmu;
+      const double mu = PanelPoint(p, g.x[k], &dmu);
+      sum += 2 * g.w[k] * dmu * mu * FixedRuleDielectricReflectance(mu, alpha, eta, opt, evals);
+    }
+  return sum;
+}
+
+double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals) {
+  const double etaIn = 1 / eta;
+  std::array<double, 2> e;
+  FixedRuleDielectricAlbedoAverageColumn(alpha, &etaIn, 1, nodes, &e, evals);
+  return eta * eta * e[1];
+}
+
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
                                                        long long* evals) {
+  if (eta >= kDielectricTableEtaMin) {  // the entering tables' rule: a column of one
+    std::array<double, 2> e;
+    FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, nodes, &e, evals);
+    return e;
+  }
+  if (1 / eta >= kDielectricTableEtaMin)  // the exit tables' rule
+    return {FixedRuleDielectricExitAverageR(alpha, eta, nodes, evals),
+            FixedRuleDielectricExitAverageT(alpha, eta, nodes, evals)};
   const GaussRule01& g = CachedGaussLegendre01(nodes);
   std::array<double, 2> sum{0, 0};
   for (const Panel& p : Panels(alpha, eta))

@@ -28,6 +28,25 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
                                                        long long* evals);
 
+/// {E_avg_R, E_avg_T} at n etas at once (1 <= n <= kMaxDielectricColumn, every eta >=
+/// kDielectricTableEtaMin: the entering side, where the mu panels do not depend on eta), into
+/// out: one E column (FixedRuleDielectricAlbedoColumn) per mu node. Each out[e] has the bits
+/// FixedRuleDielectricAlbedoAverage(alpha, etas[e], nodes) gives; evals: one eta's.
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
+                                            std::array<double, 2>* out, long long* evals);
+/// The same at kDielectricAverageNodes, remembering recent columns (the bake's: r-avg and t-avg
+/// baked in one process compute each column once).
+void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
+                                            std::array<double, 2>* out, long long* evals);
+
+/// The exit side (1 / eta >= kDielectricTableEtaMin): E_avg_R by the mu rule of E_R alone
+/// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures), and E_avg_T by
+/// reciprocity from the entering side, E_avg_T(eta) = eta^2 E_avg_T(1 / eta) (the importance
+/// form's transpose, models/dielectric_bsdf.h: fhat_t(wi, wo) = fhat_t(wo, wi) / e^2), the
+/// entering column's rule at 1 / eta. FixedRuleDielectricAlbedoAverage gives both there.
+double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals);
+double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals);
+
 /// The same averages by adaptive quadrature over mu (Gauss-Kronrod on the same panels) of the
 /// adaptive E (DielectricAlbedo to tol / 10): the reference, to about tol (absolute).
 std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double tol,

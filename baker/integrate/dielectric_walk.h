@@ -64,6 +64,27 @@ inline int NodesOf(const int* counts, const double* bounds, double x) {
   return counts[3];
 }
 
+/// cos(phi) for phi in [0, pi] (every azimuth the walks visit): -sin(x), x = phi - pi/2 in
+/// [-pi/2, pi/2], by sin's Taylor series to x^21 in Horner form (truncation below 2e-18;
+/// rounding within 4e-16 absolute of std::cos over [0, pi], tests/integrate_dielectric_column.cpp).
+/// The fixed rules' walks take it for libm's cos, a third of their time before: the same bits for
+/// every C library.
+inline double CosHalfTurn(double phi) {
+  const double x = phi - Pi / 2, x2 = x * x;
+  double p = 1.9572941063391263e-20;
+  p = p * x2 - 8.2206352466243295e-18;
+  p = p * x2 + 2.8114572543455206e-15;
+  p = p * x2 - 7.6471637318198164e-13;
+  p = p * x2 + 1.6059043836821613e-10;
+  p = p * x2 - 2.505210838544172e-08;
+  p = p * x2 + 2.7557319223985893e-06;
+  p = p * x2 - 0.00019841269841269841;
+  p = p * x2 + 0.0083333333333333332;
+  p = p * x2 - 0.16666666666666666;
+  p = p * x2 + 1;
+  return -x * p;
+}
+
 /// The smoothstep map of panel [a, b] at t in [0, 1]: the point and its Jacobian.
 inline double Smooth(double a, double b, double t, double* jac) {
   *jac = (b - a) * 6 * t * (1 - t);
@@ -115,7 +136,7 @@ Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* eval
           double dj;
           const double phi = Smooth(phis[k], phis[k + 1], gi.x[j], &dj);
           ++count;
-          circle += (gi.w[j] * dj) * p.Integrand(h, std::cos(phi));
+          circle += (gi.w[j] * dj) * p.Integrand(h, CosHalfTurn(phi));
         }
       }
       sum += (go.w[ko] * jac / Pi) * circle;

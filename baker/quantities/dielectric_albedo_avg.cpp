@@ -7,6 +7,7 @@
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
 #include "baker/quantities/common.h"
+#include "baker/quantities/dielectric_columns.h"
 
 namespace kiln {
 namespace {
@@ -77,10 +78,47 @@ bool UsesRule(const TableSpec& spec) { return spec.model == kModel; }
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   CheckModel(spec);
   const auto [r, eta] = PointOf(spec, x);
-  std::array<double, 2> e = FixedRuleDielectricAlbedoAverage(
-      std::max(AlphaFromPerceptual(r), MinAlpha), eta, &stats.evals);
+  const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
   stats.errorEstimate = kDielectricRuleBound + kDielectricAverageBound;
-  return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
+  const bool transmit = KindOf(spec.quantity).transmit;
+  // The exit side, one channel each: E_avg_R by its own rule, E_avg_T by reciprocity.
+  if (1 / eta >= kDielectricTableEtaMin && eta < 1)
+    return {
+        transmit
+            ? FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, &stats.evals)
+            : FixedRuleDielectricExitAverageR(alpha, eta, kDielectricAverageNodes, &stats.evals)};
+  std::array<double, 2> e = FixedRuleDielectricAlbedoAverage(alpha, eta, &stats.evals);
+  return {e[transmit ? 1 : 0]};
+}
+
+/// The entering side's texels by columns of eta (quantities/dielectric_columns.h): the mu
+/// panels and E's walks are shared by the whole eta axis; each texel the bits FixedRule gives.
+void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
+               std::vector<double>& errors) {
+  CheckModel(spec);
+  const int c = KindOf(spec.quantity).transmit ? 1 : 0;
+  DielectricColumnBake how;
+  // The exit side's E_avg_T by reciprocity: the entering column at 1 / eta, times eta^2.
+  const bool exitT = KindOf(spec.quantity).exit && c == 1;
+  how.columnOf = [&](const double* x, double* a, double* b, double* eta) {
+    const auto [r, e] = PointOf(spec, x);
+    const double etaIn = exitT && e < 1 ? 1 / e : e;
+    if (r == 0 || !(etaIn >= kDielectricTableEtaMin)) return false;
+    *a = std::max(AlphaFromPerceptual(r), MinAlpha);
+    *b = 0;
+    *eta = etaIn;
+    return true;
+  };
+  how.column = [](double alpha, double, const double* etas, int n, std::array<double, 2>* out,
+                  long long* evals) {
+    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, out, evals);
+  };
+  how.store = [&, c](const double* x, std::array<double, 2> e) {
+    const double eta = PointOf(spec, x)[1];
+    return std::vector<double>{exitT ? eta * eta * e[1] : e[c]};
+  };
+  how.bound = kDielectricRuleBound + kDielectricAverageBound;
+  BakeDielectricColumns(spec, threads, how, table, evals, errors);
 }
 
 std::string FixedRuleMethod(const TableSpec&) {
@@ -126,7 +164,11 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
-  q.fixedRuleVersion = "4";  // mu panels at mu = eta and towards 1, 10 nodes (integrate/...avg.cpp)
+  // 4: mu panels at mu = eta and towards 1, 10 nodes (integrate/dielectric_albedo_avg.cpp); 5,
+  // entering: E by the eta columns' rule (integrate/dielectric_albedo.cpp).
+  // 6, exit: E_avg_R by E_R's own panels, E_avg_T by reciprocity from the entering side.
+  q.fixedRuleVersion = KindOf(Q).exit ? "6" : "5";
+  if (!KindOf(Q).exit || KindOf(Q).transmit) q.bakeTable = BakeTable;
   q.evaluate = Evaluate;
   q.smoothLimit = SmoothLimit;
   q.method = Method;
