@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 
+#include "baker/bake/axis_budget.h"
 #include "baker/cli/commands.h"
 #include "baker/io/table_json.h"
 #include "baker/io/texture_readers.h"
@@ -82,6 +83,7 @@ void RegisterInspect(CLI::App& app) {
   struct Args {
     std::string file, png;
     bool json = false;
+    bool axes = false;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("file", args->file,
@@ -90,6 +92,10 @@ void RegisterInspect(CLI::App& app) {
   sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
   sub->add_flag("--json", args->json,
                 "print the attributes as one JSON object on stdout (keys: README, Command line)");
+  sub->add_flag("--axes", args->axes,
+                "also print each channel's linear-interpolation error budget per axis: the max "
+                "of h^2 f''/8 from the node values (warped coordinates), where, and its profile "
+                "along the axis");
   sub->callback([args] {
     // A device, FIFO, link or folder at --png is refused before anything is printed.
     if (!args->png.empty()) CheckWritableTarget(args->png);
@@ -137,6 +143,18 @@ void RegisterInspect(CLI::App& app) {
       std::printf("channel %s = %-8s [%.9g, %.9g]  %s\n", exrNames[c].c_str(),
                   t.channels[c].c_str(), lo, hi,
                   c < t.channelMeanings.size() ? t.channelMeanings[c].c_str() : "");
+    }
+    if (args->axes) {
+      for (const AxisBudget& b : AxisErrorBudget(t.view())) {
+        std::printf(
+            "budget %s along %s: max %.3g at node (%d, %d, %d) =", t.channels[b.channel].c_str(),
+            t.axes[b.axis].name.c_str(), b.max, b.node[0], b.node[1], b.node[2]);
+        for (int d = 0; d < t.dims(); ++d)
+          std::printf(" %s=%.6g", t.axes[d].name.c_str(), b.where[d]);
+        std::printf("\n  profile:");
+        for (double p : b.profile) std::printf(" %.2g", p);
+        std::printf("\n");
+      }
     }
     if (!args->png.empty()) {
       writeFalseColourPng(args->png, t);
