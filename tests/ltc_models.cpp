@@ -67,13 +67,15 @@ TEST_CASE("Each new lobe's proposal is a density its sampler draws", "[ltc][ltc-
         std::vector<double> cell(nzBins * nphiBins, 0), hist(nzBins * nphiBins, 0);
         double total = 0;
         const double dA = (2.0 / nz) * (2 * Pi / nphi);
+        // z = t^3 (dz = 3 t^2 dt) resolves the horizon density's mu_l^(-3/4) (charlie-smith).
         for (int i = 0; i < nz; ++i)
           for (int j = 0; j < nphi; ++j) {
-            double z = -1 + (i + 0.5) * 2 / nz, phi = (j + 0.5) * 2 * Pi / nphi;
+            double t = -1 + (i + 0.5) * 2 / nz, z = t * t * t, phi = (j + 0.5) * 2 * Pi / nphi;
             double s = SafeSqrt(1 - z * z);
-            double p = lobe.Pdf({s * std::cos(phi), s * std::sin(phi), z}) * dA;
+            double p = lobe.Pdf({s * std::cos(phi), s * std::sin(phi), z}) * dA * 3 * t * t;
             total += p;
-            cell[(i * nzBins / nz) * nphiBins + j * nphiBins / nphi] += p;
+            int bz = std::min(nzBins - 1, int((z + 1) / 2 * nzBins));
+            cell[bz * nphiBins + j * nphiBins / nphi] += p;
           }
         for (int j = 0; j < ns; ++j)
           for (int i = 0; i < ns; ++i) {

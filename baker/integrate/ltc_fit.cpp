@@ -218,6 +218,12 @@ double PhongPdf(Vec3 a, double n, Vec3 l) {
   return c > 0 ? (n + 1) / (2 * Pi) * std::pow(c, n) : 0;
 }
 
+/// The horizon density: mu_l = u^3, the azimuth uniform, i.e. mu_l^(-2/3) / (6 pi) over solid
+/// angle (upper hemisphere; density 1/3 mu^(-2/3) in mu, 1 / (2 pi) in the azimuth): a sheen's lobe
+/// at small roughness is a sliver along the horizon (mu_l below ~0.05 at alpha = 0.002), which
+/// neither the cosine nor the reflected NDF reaches.
+double HorizonPdf(double mu) { return mu > 0 ? std::pow(mu, -2.0 / 3) / (6 * Pi) : 0; }
+
 /// Velvet's inverted-Gaussian term (Ashikhmin & Premoze 2007) as a density of normals:
 /// 4 exp(-cot^2 / alpha^2) / sin^4 times cos(theta_m), normalised (its integral is 4 pi alpha^2):
 /// in x = cot(theta_m) it is the Rayleigh density 2 x / alpha^2 exp(-x^2 / alpha^2), so over
@@ -249,9 +255,14 @@ Vec3 LtcLobe::Sample(double u1, double u2) const {
     return Reflect(wo_, wm);
   }
   if (kind_ == 4) {
-    // Half the points from the clamped cosine, half from the Charlie NDF's D cos(theta_h)
-    // (its CDF in theta_h is sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
-    if (u1 < 0.5) return CosineSample(2 * u1, u2);
+    // A quarter of the points from the clamped cosine, a quarter from the horizon density
+    // (mu_l = u^3), half from the Charlie NDF's D cos(theta_h) (its CDF in theta_h is
+    // sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
+    if (u1 < 0.25) return CosineSample(4 * u1, u2);
+    if (u1 < 0.5) {
+      double u = 4 * u1 - 1, mu = u * u * u;
+      return SphericalDirection(SafeSqrt(1 - mu * mu), mu, 2 * Pi * u2);
+    }
     double s = std::pow(2 * u1 - 1, 1 / (1 / alpha_ + 2));
     Vec3 wm = SphericalDirection(s, SafeSqrt(1 - s * s), 2 * Pi * u2);
     return Reflect(wo_, wm);
@@ -285,7 +296,7 @@ double LtcLobe::Pdf(Vec3 wi) const {
     return std::isfinite(q) ? p + q : p;
   }
   if (kind_ == 4) {
-    double p = 0.5 * std::max(0.0, wi.z) * kInvPi;
+    double p = 0.25 * std::max(0.0, wi.z) * kInvPi + 0.25 * HorizonPdf(wi.z);
     Vec3 h = wo_ + wi;
     double len = Length(h);
     if (!(len > 0)) return p;
@@ -639,6 +650,7 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   // Nelder-Mead, then once more from its result (a restart frees a collapsed simplex).
   NelderMead(objective, dim, x, opt.step, opt.maxIterations, opt.tolerance);
   t.l3 = NelderMead(objective, dim, x, opt.step / 2, opt.maxIterations, opt.tolerance);
+  t.lobeL2 = fConst;
   t.params = FromSearch(x, dim, isotropic, z);
   t.chain = t.params;
   // Then the frame's rotation about y as a fourth parameter, from that result (whose objective
@@ -683,7 +695,16 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
     return LtcLobe(model, std::max(rs[ir], std::sqrt(alphaFloor)), LtcFitMu(mus[im]));
   };
   auto fitOne = [&](size_t ir, size_t im, const LtcFrameParams& start) {
-    return FitLtc(lobeAt(ir, im), -1, start, mus[im] >= 1, opt);
+    LtcLobe lobe = lobeAt(ir, im);
+    LtcTexel t = FitLtc(lobe, -1, start, mus[im] >= 1, opt);
+    if (opt.retryMisses && opt.power == 2 && im > 0 && t.l3 > 0.5 * t.lobeL2) {
+      // A miss: again from the column's first texel and from the clamped cosine.
+      for (const LtcFrameParams& s : {out[ir].chain, LtcFrameParams{}}) {
+        LtcTexel u = FitLtc(lobe, -1, s, mus[im] >= 1, opt);
+        if (u.l3 < t.l3) t = u;
+      }
+    }
+    return t;
   };
   // The first view row, from the largest roughness down, sequentially; each start is the
   // previous solution scaled by the ratio of the alphas (an LTC's width follows alpha), so that

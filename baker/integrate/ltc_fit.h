@@ -23,8 +23,9 @@ namespace kiln {
 /// - microfacet lobes (MicrofacetBRDF, unity-brdf1/2: GGX at Unity's a, capped where Unity's
 ///   epsilons flatten the peak) by their D cos(theta_m) normals reflected about o; Ward's lobes
 ///   by Beckmann's (the same exp(-tan^2 theta_m / alpha^2));
-/// - the Charlie sheens by an even mixture of the clamped cosine and their NDF's normals
-///   reflected about o (a sheen's grazing lobe that the cosine alone misses);
+/// - the Charlie sheens by a mixture of the clamped cosine (1/4), the horizon density
+///   mu_l = u^3 (1/4: a small-roughness sheen lobe is a sliver along the horizon) and their
+///   NDF's normals reflected about o (1/2: a sheen's grazing lobe that the cosine alone misses);
 /// - ashikhmin-velvet by an even mixture of the clamped cosine and the normals of its NDF's
 ///   inverted-Gaussian term (cot(theta_m) Rayleigh-distributed: exact) reflected about o;
 /// - the mirror-direction Phong lobes (lafortune, unity-brdf3) by a mixture of the clamped
@@ -57,8 +58,8 @@ class LtcLobe {
   AnyModel model_;
   Vec3 wo_;
   int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal,
-                  ///< 4 Charlie sheen: cosine + Charlie D cos mixture, 5 cosine + mirror Phong
-                  ///< lobe(s), 6 velvet: cosine + inverted-Gaussian D cos mixture
+                  ///< 4 Charlie sheen: cosine + horizon + Charlie D cos mixture, 5 cosine + mirror
+                  ///< Phong lobe(s), 6 velvet: cosine + inverted-Gaussian D cos mixture
   double alpha_ = 1;
   double phongN_ = 0, phongAlpha_ = 1;  ///< kind 5: the Phong exponent n and its alpha
   bool phongTwin_ = false;              ///< kind 5: a twin lobe about -m (unity-brdf3)
@@ -93,6 +94,7 @@ struct LtcTexel {
   double minv[4] = {1, 0, 0, 1};  ///< M^-1 / (M^-1)_11 as (a, b, c, d): [[a,0,c],[0,1,0],[b,0,d]]
   double l3 = 0;                  ///< the minimised objective, integral |f mu_l / norm - D|^p
   double l1 = 0;                  ///< the fit error: integral over the sphere |f mu_l / norm - D|
+  double lobeL2 = 0;  ///< integral f^2 of the normalised lobe (the objective at D = 0; p = 2)
 };
 
 /// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
@@ -110,6 +112,11 @@ struct LtcFitOptions {
   int frameSteps = 60;      ///< then the free-frame stage's iterations (0: none)
   double step = 0.1;        ///< Nelder-Mead's initial step (in ln m11, ln m22, m13 / m11)
   double tolerance = 1e-7;  ///< stop when the simplex's objective spread is below this (relative)
+  /// FitLtcGrid: a texel whose fit from its neighbour keeps more than half of integral f^2 (the
+  /// objective of an LTC that misses the lobe) is fitted again from its column's first texel and
+  /// from the clamped cosine, the lowest objective kept (deterministic; p = 2). Off for the
+  /// catalogue's ltc-ggx, ltc-beckmann, ltc-blinn-phong (their bytes unchanged).
+  bool retryMisses = false;
 };
 
 /// The lobe's norm integral f mu_l dl (F = 1) and average direction (unit) by the proposal's

@@ -215,9 +215,10 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 /// objective takes the lobe's 16 x 16 points (was 8 x 8) and 2 x 15 Nelder-Mead steps before the
 /// free frame (was 2 x 30): every ltc table's coefficients changed.
 const char* RuleVersion(const TableSpec& spec) {
-  // "o": the declared fit error in the overlap form (DeclaresOverlapError).
+  // "fit4o": the declared fit error in the overlap form (DeclaresOverlapError), misses refitted
+  // (LtcFitOptions::retryMisses), the sheens' proposal with its horizon density.
   if (DeclaresOverlapError(spec.model))
-    return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3o-rule3" : "fit3o-rule2";
+    return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit4o-rule3" : "fit4o-rule2";
   return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
 }
 
@@ -368,7 +369,10 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   LtcFitOptions fopt;
   fopt.storedError = true;  // the declared L1 at the stored (float) coefficients: StoredFitError
   const bool overlap = DeclaresOverlapError(spec.model);
-  if (overlap) fopt.errorSamples = 0;  // measured below, with the lobe's exact norm
+  if (overlap) {
+    fopt.errorSamples = 0;    // measured below, with the lobe's exact norm
+    fopt.retryMisses = true;  // (LtcFitOptions::retryMisses)
+  }
   std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads, fopt);
   const size_t nr = g.rs.size();
   std::vector<double> l1(n, 0);
