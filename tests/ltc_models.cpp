@@ -1,5 +1,5 @@
 // LTC tables for the other specular and sheen models (issue #18, baker/quantities/ltc.cpp:
-// OnRequestModels and the catalogue's ltc-charlie-smith, ltc-ggx-separable): each lobe's fit
+// OnRequestModels and the catalogue's ltc-charlie-smith): each lobe's fit
 // proposal is a density its sampler draws, each table's norm and Fresnel channels are the model's
 // albedo and split sum, its stored coefficients reproduce the lobe within the fit error it declares
 // (a measurement at most 2), and its bytes do not depend on the thread count.
@@ -201,7 +201,7 @@ TEST_CASE("The new ltc tables are bit-identical for 1 and 2 threads", "[ltc][ltc
   }
 }
 
-TEST_CASE("The new ltc tables are in the published layout; two join the catalogue",
+TEST_CASE("The new ltc tables are in the published layout; one joins the catalogue",
           "[ltc][ltc-models]") {
   std::vector<std::string> inDefault;
   for (const TableSpec& d : DefaultCatalogue())
@@ -212,9 +212,9 @@ TEST_CASE("The new ltc tables are in the published layout; two join the catalogu
     CHECK(s.axes[0].name == "roughness");
     CHECK(s.axes[1].name == "sqrt_one_minus_mu");
     CHECK(s.axes[0].size == 64);
-    // The sheen LTC of glTF's KHR_materials_sheen and the separable GGX (whose dfg tables ship)
-    // are in the default catalogue (within issue #18's share of its time); the rest on request.
-    const bool shipped = model == "charlie-smith" || model == "ggx-separable";
+    // The sheen LTC of glTF's KHR_materials_sheen is in the default catalogue (within issue
+    // #18's share of its time); the rest on request.
+    const bool shipped = model == "charlie-smith";
     INFO(model);
     CHECK((std::find(inDefault.begin(), inDefault.end(), "ltc-" + model) != inDefault.end()) ==
           shipped);
