@@ -41,8 +41,8 @@ constexpr double kPolygonTol = 1e-4;
 /// error: the L1 is relative to the norm, and a vanishing lobe (a Charlie sheen seen along the
 /// normal at small roughness: its microfibres reflect below the horizon, norm 1e-45 at r = 0.045)
 /// has no shape to fit; such a texel's light is below kLtcMinNorm of the polygon's radiance
-/// whatever its coefficients (its polygon error at most 2 kLtcMinNorm). None for the microfacet
-/// tables.
+/// whatever its coefficients (its polygon error at most 2 kLtcMinNorm). None for ltc-ggx,
+/// ltc-beckmann, ltc-blinn-phong; the other tables' counts are in README "LTC tables".
 constexpr double kLtcMinNorm = 1e-3;
 /// kiln verify re-measures the fit error at every this many texels.
 constexpr size_t kVerifyStride = 11;
