@@ -132,6 +132,37 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 4;
           alpha_ = m.alpha;
         }
+        // Unity's GGX lobes: the D of Unity's a, no narrower than where the epsilons of its
+        // formulas flatten the peak (fixed_rule_microfacet.h: alpha_q).
+        if constexpr (std::is_same_v<T, UnityBRDF1>) {
+          kind_ = 1;
+          alpha_ = std::max(m.a, std::pow(1e-7, 0.25));
+        }
+        if constexpr (std::is_same_v<T, UnityBRDF2>) {
+          kind_ = 1;
+          alpha_ = std::max(m.a, std::sqrt(1e-5));
+        }
+        if constexpr (std::is_same_v<T, WardBRDF>) {  // exp(-tan^2 / alpha^2): Beckmann's
+          kind_ = 2;
+          alpha_ = m.alpha;
+        }
+        if constexpr (std::is_same_v<T, LafortuneBRDF> || std::is_same_v<T, UnityBRDF3>) {
+          kind_ = 5;
+          if constexpr (std::is_same_v<T, LafortuneBRDF>) {
+            phongN_ = m.lobe.n;
+            wCos_ = wMirror_ = 0.5;
+          } else {
+            phongN_ = UnitySpecPower(m.r) / 4;
+            phongTwin_ = true;
+            wCos_ = wTwin_ = 0.25;
+            wMirror_ = 0.5;
+          }
+          phongAlpha_ = std::sqrt(2 / (4 * phongN_ + 2));
+        }
+        if constexpr (std::is_same_v<T, AshikhminVelvet>) {
+          kind_ = 6;
+          alpha_ = m.alpha;
+        }
         if constexpr (std::is_same_v<T, MicrofacetBRDF<GGXDistribution>> ||
                       std::is_same_v<T, MicrofacetBRDF<BeckmannDistribution>> ||
                       std::is_same_v<T, MicrofacetBRDF<BlinnPhongDistribution>>) {
@@ -161,12 +192,77 @@ double LtcLobe::DCos(Vec3 wm) const {
   return 0;
 }
 
+namespace {
+
+/// The normal m of the upper hemisphere with Reflect(o, m) = wi, from h = o + wi (len = |h| > 0):
+/// h / len or -h / len (Reflect(o, m) = Reflect(o, -m) = 2 (o.m) m - o). A sampler that reflects
+/// o about its normals m (z > 0) also draws normals with o.m < 0, whose wi has o + wi = 2 (o.m) m
+/// pointing down; the map m -> wi is one-to-one from the upper hemisphere with Jacobian
+/// 4 |o.m|, so the sampler's density at wi is D cos(theta_m) / (4 |o.m|) with this m.
+Vec3 HalfOfReflection(Vec3 h, double len) {
+  Vec3 wm = (1 / len) * h;
+  return wm.z >= 0 ? wm : -1 * wm;
+}
+
+/// The direction at (u1, u2) of the Phong lobe (n + 1) / (2 pi) max(0, a.l)^n about the unit
+/// axis a (in the xz plane): cos = u1^(1 / (n + 1)).
+Vec3 PhongSample(Vec3 a, double n, double u1, double u2) {
+  double c = std::pow(u1, 1 / (n + 1)), s = SafeSqrt(1 - c * c), phi = 2 * Pi * u2;
+  Vec3 t1{a.z, 0, -a.x}, t2{0, 1, 0};
+  return (s * std::cos(phi)) * t1 + (s * std::sin(phi)) * t2 + c * a;
+}
+
+/// Its density over solid angle at l.
+double PhongPdf(Vec3 a, double n, Vec3 l) {
+  double c = Dot(a, l);
+  return c > 0 ? (n + 1) / (2 * Pi) * std::pow(c, n) : 0;
+}
+
+/// The horizon density: mu_l = u^3, the azimuth uniform, i.e. mu_l^(-2/3) / (6 pi) over solid
+/// angle (upper hemisphere; density 1/3 mu^(-2/3) in mu, 1 / (2 pi) in the azimuth): a sheen's lobe
+/// at small roughness is a sliver along the horizon (mu_l below ~0.05 at alpha = 0.002), which
+/// neither the cosine nor the reflected NDF reaches.
+double HorizonPdf(double mu) { return mu > 0 ? std::pow(mu, -2.0 / 3) / (6 * Pi) : 0; }
+
+/// Velvet's inverted-Gaussian term (Ashikhmin & Premoze 2007) as a density of normals:
+/// 4 exp(-cot^2 / alpha^2) / sin^4 times cos(theta_m), normalised (its integral is 4 pi alpha^2):
+/// in x = cot(theta_m) it is the Rayleigh density 2 x / alpha^2 exp(-x^2 / alpha^2), so over
+/// solid angle x exp(-x^2 / alpha^2) / (pi alpha^2 sin^3 theta_m).
+double VelvetNormalPdf(double alpha, Vec3 wm) {
+  double c = wm.z, s2 = 1 - c * c;
+  if (!(c > 0) || !(s2 > 0) || !(alpha > 0)) return 0;
+  double s = std::sqrt(s2), x = c / s;
+  return x * std::exp(-x * x / (alpha * alpha)) / (Pi * alpha * alpha * s2 * s);
+}
+
+}  // namespace
+
 Vec3 LtcLobe::Sample(double u1, double u2) const {
   if (kind_ == 0) return CosineSample(u1, u2);
+  if (kind_ == 5) {
+    const Vec3 m{-wo_.x, 0, wo_.z};
+    if (u1 < wCos_) return CosineSample(u1 / wCos_, u2);
+    if (u1 < wCos_ + wMirror_) return PhongSample(m, phongN_, (u1 - wCos_) / wMirror_, u2);
+    return PhongSample(-1 * m, phongN_, (u1 - wCos_ - wMirror_) / wTwin_, u2);
+  }
+  if (kind_ == 6) {
+    // Half the points from the clamped cosine, half from the inverted-Gaussian normals
+    // (x = cot(theta_m) = alpha sqrt(-ln(1 - u))) reflected about o.
+    if (u1 < 0.5 || !(alpha_ > 0)) return CosineSample(alpha_ > 0 ? 2 * u1 : u1, u2);
+    double x = alpha_ * std::sqrt(-std::log(1 - (2 * u1 - 1)));
+    double s = 1 / std::sqrt(1 + x * x);
+    Vec3 wm = SphericalDirection(s, x * s, 2 * Pi * u2);
+    return Reflect(wo_, wm);
+  }
   if (kind_ == 4) {
-    // Half the points from the clamped cosine, half from the Charlie NDF's D cos(theta_h)
-    // (its CDF in theta_h is sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
-    if (u1 < 0.5) return CosineSample(2 * u1, u2);
+    // A quarter of the points from the clamped cosine, a quarter from the horizon density
+    // (mu_l = u^3), half from the Charlie NDF's D cos(theta_h) (its CDF in theta_h is
+    // sin^(1/alpha + 2): sin = u^(1 / (1/alpha + 2))) reflected about o.
+    if (u1 < 0.25) return CosineSample(4 * u1, u2);
+    if (u1 < 0.5) {
+      double u = 4 * u1 - 1, mu = u * u * u;
+      return SphericalDirection(SafeSqrt(1 - mu * mu), mu, 2 * Pi * u2);
+    }
     double s = std::pow(2 * u1 - 1, 1 / (1 / alpha_ + 2));
     Vec3 wm = SphericalDirection(s, SafeSqrt(1 - s * s), 2 * Pi * u2);
     return Reflect(wo_, wm);
@@ -180,13 +276,32 @@ Vec3 LtcLobe::Sample(double u1, double u2) const {
 
 double LtcLobe::Pdf(Vec3 wi) const {
   if (kind_ == 0) return std::max(0.0, wi.z) * kInvPi;
-  if (kind_ == 4) {
-    double p = 0.5 * std::max(0.0, wi.z) * kInvPi;
+  if (kind_ == 5) {
+    const Vec3 m{-wo_.x, 0, wo_.z};
+    double p = wCos_ * std::max(0.0, wi.z) * kInvPi + wMirror_ * PhongPdf(m, phongN_, wi);
+    if (wTwin_ > 0) p += wTwin_ * PhongPdf(-1 * m, phongN_, wi);
+    return std::isfinite(p) ? p : 0;
+  }
+  if (kind_ == 6) {
+    double w = alpha_ > 0 ? 0.5 : 1;
+    double p = w * std::max(0.0, wi.z) * kInvPi;
+    if (!(alpha_ > 0)) return p;
     Vec3 h = wo_ + wi;
     double len = Length(h);
     if (!(len > 0)) return p;
-    Vec3 wm = (1 / len) * h;
-    double oh = Dot(wo_, wm);
+    Vec3 wm = HalfOfReflection(h, len);
+    double oh = std::fabs(Dot(wo_, wm));
+    if (oh <= 0) return p;
+    double q = 0.5 * VelvetNormalPdf(alpha_, wm) / (4 * oh);
+    return std::isfinite(q) ? p + q : p;
+  }
+  if (kind_ == 4) {
+    double p = 0.25 * std::max(0.0, wi.z) * kInvPi + 0.25 * HorizonPdf(wi.z);
+    Vec3 h = wo_ + wi;
+    double len = Length(h);
+    if (!(len > 0)) return p;
+    Vec3 wm = HalfOfReflection(h, len);
+    double oh = std::fabs(Dot(wo_, wm));
     if (oh <= 0 || wm.z <= 0) return p;
     double q = 0.5 * CharlieD(alpha_, wm.x * wm.x + wm.y * wm.y) * wm.z / (4 * oh);
     return std::isfinite(q) ? p + q : p;
@@ -194,8 +309,11 @@ double LtcLobe::Pdf(Vec3 wi) const {
   Vec3 h = wo_ + wi;
   double len = Length(h);
   if (len <= 0) return 0;
-  Vec3 wm = (1 / len) * h;
-  double oh = Dot(wo_, wm);
+  // The height-correlated microfacet lobes (ggx, beckmann, blinn-phong: the catalogue's tables,
+  // whose bytes this keeps) count only the normals facing o; the others the sampler's full
+  // density (either sign of o + wi).
+  Vec3 wm = muLambdaO_ >= 0 ? (1 / len) * h : HalfOfReflection(h, len);
+  double oh = muLambdaO_ >= 0 ? Dot(wo_, wm) : std::fabs(Dot(wo_, wm));
   if (oh <= 0) return 0;
   double p = DCos(wm) / (4 * oh);
   return std::isfinite(p) ? p : 0;
@@ -419,6 +537,24 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
   return FitErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, p, n);
 }
 
+double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n) {
+  if (!(norm > 0)) throw std::invalid_argument("ltc: the overlap error needs the lobe's norm");
+  double overlap = 0;
+  auto add = [&](Vec3 l, double f, double pl) {
+    double d = ltc.Eval(l), den = pl + d;
+    if (den > 0) overlap += std::min(f / norm, d) / den;
+  };
+  for (const LobeSample& s : LobeSamples(lobe, n)) add(s.l, s.f, s.pl);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
+      double f, pl;
+      lobe.EvalPdf(l, &f, &pl);
+      add(l, f, pl);
+    }
+  return 2 - 2 * overlap / (double(n) * n);
+}
+
 LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
                 const LtcFitOptions& opt) {
   // The lobe's fixed points: n x n stratified samples of its proposal, with the normalised lobe
@@ -514,6 +650,7 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   // Nelder-Mead, then once more from its result (a restart frees a collapsed simplex).
   NelderMead(objective, dim, x, opt.step, opt.maxIterations, opt.tolerance);
   t.l3 = NelderMead(objective, dim, x, opt.step / 2, opt.maxIterations, opt.tolerance);
+  t.lobeL2 = fConst;
   t.params = FromSearch(x, dim, isotropic, z);
   t.chain = t.params;
   // Then the frame's rotation about y as a fourth parameter, from that result (whose objective
@@ -558,7 +695,16 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
     return LtcLobe(model, std::max(rs[ir], std::sqrt(alphaFloor)), LtcFitMu(mus[im]));
   };
   auto fitOne = [&](size_t ir, size_t im, const LtcFrameParams& start) {
-    return FitLtc(lobeAt(ir, im), -1, start, mus[im] >= 1, opt);
+    LtcLobe lobe = lobeAt(ir, im);
+    LtcTexel t = FitLtc(lobe, -1, start, mus[im] >= 1, opt);
+    if (opt.retryMisses && opt.power == 2 && im > 0 && t.l3 > 0.5 * t.lobeL2) {
+      // A miss: again from the column's first texel and from the clamped cosine.
+      for (const LtcFrameParams& s : {out[ir].chain, LtcFrameParams{}}) {
+        LtcTexel u = FitLtc(lobe, -1, s, mus[im] >= 1, opt);
+        if (u.l3 < t.l3) t = u;
+      }
+    }
+    return t;
   };
   // The first view row, from the largest roughness down, sequentially; each start is the
   // previous solution scaled by the ratio of the alphas (an LTC's width follows alpha), so that

@@ -19,10 +19,19 @@
 namespace kiln {
 
 /// One lobe f(o, l) mu_l of a model at F = 1, with the proposal the fit's error integrals
-/// sample it by: microfacet lobes (MicrofacetBRDF) by their D cos(theta_m) normals reflected
-/// about o, the Charlie sheens by an even mixture of the clamped cosine and their NDF's normals
-/// reflected about o (a sheen's grazing lobe that the cosine alone misses), any other model by
-/// the clamped cosine.
+/// sample it by (docs/models.md "LTC", "The fit's proposals"):
+/// - microfacet lobes (MicrofacetBRDF, unity-brdf1/2: GGX at Unity's a, capped where Unity's
+///   epsilons flatten the peak) by their D cos(theta_m) normals reflected about o; Ward's lobes
+///   by Beckmann's (the same exp(-tan^2 theta_m / alpha^2));
+/// - the Charlie sheens by a mixture of the clamped cosine (1/4), the horizon density
+///   mu_l = u^3 (1/4: a small-roughness sheen lobe is a sliver along the horizon) and their
+///   NDF's normals reflected about o (1/2: a sheen's grazing lobe that the cosine alone misses);
+/// - ashikhmin-velvet by an even mixture of the clamped cosine and the normals of its NDF's
+///   inverted-Gaussian term (cot(theta_m) Rayleigh-distributed: exact) reflected about o;
+/// - the mirror-direction Phong lobes (lafortune, unity-brdf3) by a mixture of the clamped
+///   cosine and (n + 1) / (2 pi) max(0, m.l)^n about the mirror direction m (and, for
+///   unity-brdf3's even (R.L)^4, about -m: its twin at grazing views);
+/// - any other model by the clamped cosine.
 class LtcLobe {
  public:
   /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
@@ -40,14 +49,22 @@ class LtcLobe {
   Vec3 wo() const { return wo_; }
   /// The microfacet alpha of a microfacet lobe, 1 for the others (a sheen lobe's width does not
   /// follow its alpha).
-  double Alpha() const { return kind_ >= 1 && kind_ <= 3 ? alpha_ : 1; }
+  /// A mirror-direction Phong lobe: the alpha of the Blinn-Phong exponent 4 n, sqrt(2 / (4 n + 2)).
+  double Alpha() const { return kind_ >= 1 && kind_ <= 3 ? alpha_ : kind_ == 5 ? phongAlpha_ : 1; }
+  /// The proposal's kind (the comment on kind_).
+  int Kind() const { return kind_; }
 
  private:
   AnyModel model_;
   Vec3 wo_;
   int kind_ = 0;  ///< 0 cosine proposal, 1 GGX, 2 Beckmann, 3 Blinn-Phong D cos proposal,
-                  ///< 4 Charlie sheen: cosine + Charlie D cos mixture
+                  ///< 4 Charlie sheen: cosine + horizon + Charlie D cos mixture, 5 cosine + mirror
+                  ///< Phong lobe(s), 6 velvet: cosine + inverted-Gaussian D cos mixture
   double alpha_ = 1;
+  double phongN_ = 0, phongAlpha_ = 1;  ///< kind 5: the Phong exponent n and its alpha
+  bool phongTwin_ = false;              ///< kind 5: a twin lobe about -m (unity-brdf3)
+  /// Kind 5: the weights of the cosine, the lobe about m and its twin about -m (sum 1).
+  double wCos_ = 1, wMirror_ = 0, wTwin_ = 0;
   double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
   double DCos(Vec3 wm) const;
 };
@@ -77,6 +94,7 @@ struct LtcTexel {
   double minv[4] = {1, 0, 0, 1};  ///< M^-1 / (M^-1)_11 as (a, b, c, d): [[a,0,c],[0,1,0],[b,0,d]]
   double l3 = 0;                  ///< the minimised objective, integral |f mu_l / norm - D|^p
   double l1 = 0;                  ///< the fit error: integral over the sphere |f mu_l / norm - D|
+  double lobeL2 = 0;  ///< integral f^2 of the normalised lobe (the objective at D = 0; p = 2)
 };
 
 /// How the fit samples the error integrals (MIS, balance heuristic, of the lobe's proposal and
@@ -94,6 +112,11 @@ struct LtcFitOptions {
   int frameSteps = 60;      ///< then the free-frame stage's iterations (0: none)
   double step = 0.1;        ///< Nelder-Mead's initial step (in ln m11, ln m22, m13 / m11)
   double tolerance = 1e-7;  ///< stop when the simplex's objective spread is below this (relative)
+  /// FitLtcGrid: a texel whose fit from its neighbour keeps more than half of integral f^2 (the
+  /// objective of an LTC that misses the lobe) is fitted again from its column's first texel and
+  /// from the clamped cosine, the lowest objective kept (deterministic; p = 2). Off for the
+  /// catalogue's ltc-ggx, ltc-beckmann, ltc-blinn-phong (their bytes unchanged).
+  bool retryMisses = false;
 };
 
 /// The lobe's norm integral f mu_l dl (F = 1) and average direction (unit) by the proposal's
@@ -112,6 +135,14 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
 /// the lobe's and the LTC's n x n stratified samples; norm <= 0: the norm estimated from the
 /// same lobe samples (the lobe normalised to 1 by the measurement's own quadrature).
 double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p, int n);
+
+/// The L1 distance integral |lobe / norm - D_ltc| over the sphere in its overlap form,
+/// 2 - 2 integral min(lobe / norm, D_ltc) (both densities of mass 1: exact when norm is the
+/// lobe's exact integral, norm > 0), the overlap by MIS (balance heuristic) of the lobe's and the
+/// LTC's n x n stratified samples. Each sample's term min(f, D) / (p_lobe + D) lies in [0, 1], so
+/// the estimate is at most 2 (the quantity's bound) whatever the lobe's proposal misses, and a
+/// narrow lobe's spikes cannot inflate it (unlike integral |f - D| / (p_lobe + D)).
+double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n);
 
 /// Nelder-Mead minimisation (Nelder & Mead 1965, standard coefficients 1, 2, 1/2, 1/2) of f
 /// over `dim` <= 4 parameters from x (in/out) with initial step `step`; stops after maxIter
