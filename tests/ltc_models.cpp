@@ -213,6 +213,11 @@ TEST_CASE("The new ltc tables are in the published layout; one joins the catalog
     CHECK(s.axes[0].name == "roughness");
     CHECK(s.axes[1].name == "sqrt_one_minus_mu");
     CHECK(s.axes[0].size == 64);
+    // kiln's own node-centred layout on request too: (mu, roughness), the dfg tables' axes.
+    TableSpec k = CatalogueTable("ltc-" + model + "-kiln");
+    REQUIRE(k.axes.size() == 2);
+    CHECK(k.axes[0].name == "mu");
+    CHECK(k.axes[1].name == "roughness");
     // The sheen LTC of glTF's KHR_materials_sheen is in the default catalogue (within issue
     // #18's share of its time); the rest on request.
     const bool shipped = model == "charlie-smith";

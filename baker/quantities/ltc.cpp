@@ -146,9 +146,12 @@ const std::vector<std::string>& OnRequestModels() {
 /// On request (`kiln bake --only NAME`): kiln's own layout of the GGX table (16384 texels), the
 /// Charlie sheen's table and OnRequestModels' (README).
 std::vector<TableSpec> OnRequest(const CatalogueOptions&) {
-  std::vector<TableSpec> out = {MakeSpec("ggx", KilnAxes("ggx")),
-                                MakeSpec("charlie", DefaultAxes("charlie"))};
+  std::vector<TableSpec> out = {MakeSpec("charlie", DefaultAxes("charlie"))};
   for (const std::string& m : OnRequestModels()) out.push_back(MakeSpec(m, DefaultAxes(m)));
+  // kiln's own layout (`ltc-M-kiln`) of every model above and of the catalogue's.
+  std::vector<std::string> models = {"ggx", "beckmann", "blinn-phong", "charlie-smith", "charlie"};
+  models.insert(models.end(), OnRequestModels().begin(), OnRequestModels().end());
+  for (const std::string& m : models) out.push_back(MakeSpec(m, KilnAxes(m)));
   return out;
 }
 
