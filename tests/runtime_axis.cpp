@@ -52,6 +52,7 @@ double inverseWarp(const Axis& a, double t) {
     case Warp::Root4Layer:
     case Warp::LayerEta:
     case Warp::Root4LayerSplit:
+    case Warp::Root4LayerAngle:
       break;  // read another axis: tested on their own (below, runtime_layer_warps.cpp)
     case Warp::Angle:
       return a.lo + (a.hi - a.lo) * std::sin(t * M_PI / 2);

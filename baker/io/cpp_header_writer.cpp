@@ -120,6 +120,8 @@ std::string warpEnumerator(Warp warp) {
       return "kiln::Warp::LayerEta";
     case Warp::Root4LayerSplit:
       return "kiln::Warp::Root4LayerSplit";
+    case Warp::Root4LayerAngle:
+      return "kiln::Warp::Root4LayerAngle";
     case Warp::Log:
       return "kiln::Warp::Log";
   }

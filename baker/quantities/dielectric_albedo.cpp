@@ -44,11 +44,12 @@ const Kind& KindOf(Quantity q) {
 /// an ior outside (sceneDomain).
 constexpr double kEtaMin = kDielectricTableEtaMin;
 
-/// The eta axis of a side: entering [1.1, 3] with nodes denser near its start (sqrt warp: the
-/// Fresnel layer of width sqrt(eta^2 - 1) at grazing), exit [1/3, 1/1.1] linear.
+/// The eta axis of a side: entering [1.1, 3], 40 nodes denser near its start (sqrt warp: the
+/// Fresnel layer of width sqrt(eta^2 - 1) at grazing; eta nodes are the cheap ones, the
+/// (mu, roughness) pairs are what a bake costs), exit [1/3, 1/1.1] linear, 24 nodes.
 AxisSpec EtaAxis(bool exit) {
   return exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 24, Warp::Linear}
-              : AxisSpec{"eta", kEtaMin, 3, 24, Warp::Sqrt};
+              : AxisSpec{"eta", kEtaMin, 3, 40, Warp::Sqrt};
 }
 
 template <Quantity Q>
@@ -64,17 +65,24 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
                {meaning}, std::move(axes));
 }
 
-/// The mu axis of a side: entering, root4-layer (48 nodes); exit, root4-layer-split (49 nodes:
-/// the critical cosine sqrt(1 - eta'^2), where E has the kink of total internal reflection, is
-/// the grid line t = 1/2 in every eta' layer, with nodes crowded on both sides over ~alpha).
-AxisSpec MuAxis(bool exit) {
-  return exit ? AxisSpec{"mu", 0, 1, 49, Warp::Root4LayerSplit}
-              : AxisSpec{"mu", 0, 1, 48, Warp::Root4Layer};
+/// The mu axis of a kind: entering, root4-layer-angle (the grazing layer graded as by
+/// root4-layer, and mu -> 1 graded in the angle, where E_T has a (1 - mu)^(3/2) point at high
+/// roughness), 80 nodes for both E_R and E_T (E_T's grazing slope C(eta) alpha mu ln(1 / mu)
+/// needs them; one walk over the microfacets gives both at a (mu, roughness) pair, so the
+/// pair shares its grid: docs/models.md section 16); exit, root4-layer-split (49 nodes: the
+/// critical cosine sqrt(1 - eta'^2), where E has the kink of total internal reflection, is the grid
+/// line t = 1/2 in every eta' layer, with nodes crowded on both sides over ~alpha).
+AxisSpec MuAxis(const Kind& k) {
+  if (k.exit) return AxisSpec{"mu", 0, 1, 49, Warp::Root4LayerSplit};
+  return AxisSpec{"mu", 0, 1, 80, Warp::Root4LayerAngle};
 }
+
+/// The roughness axis of a kind, sqrt-warped: entering 50 nodes, exit 40.
+AxisSpec RoughnessAxis(const Kind& k) { return {"roughness", 0, 1, k.exit ? 40 : 50, Warp::Sqrt}; }
 
 template <Quantity Q>
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {MuAxis(KindOf(Q).exit), {"roughness", 0, 1, 40, Warp::Sqrt}, EtaAxis(KindOf(Q).exit)};
+  return {MuAxis(KindOf(Q)), RoughnessAxis(KindOf(Q)), EtaAxis(KindOf(Q).exit)};
 }
 
 /// The catalogue's table stores E - dielectricAlbedoClosedForm (kiln/stored.h,

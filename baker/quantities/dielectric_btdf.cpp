@@ -30,13 +30,15 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
                std::move(axes));
 }
 
-/// mu: Root4Layer as the glass E tables (the Fresnel layer at grazing, the masking layer
-/// mu ~ alpha); roughness: sqrt (alpha = r^2 moves fastest near 0); eta: the E tables' entering
-/// domain [kDielectricTableEtaMin, 3], sqrt-warped (the Fresnel layer's width sqrt(eta^2 - 1)).
+/// mu: root4-layer-angle as the entering glass E tables (the Fresnel layer at grazing, the
+/// masking layer mu ~ alpha, T_lobe's grazing slope C(eta) alpha mu ln(1 / mu), and mu -> 1
+/// graded in the angle), 80 nodes; roughness: sqrt (alpha = r^2 moves fastest near 0), 50
+/// nodes; eta: the E tables' entering domain [kDielectricTableEtaMin, 3], sqrt-warped (the
+/// Fresnel layer's width sqrt(eta^2 - 1)), 40 nodes (docs/models.md section 16).
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  return {{"mu", 0, 1, 40, Warp::Root4Layer},
-          {"roughness", 0, 1, 24, Warp::Sqrt},
-          {"eta", kDielectricTableEtaMin, 3, 24, Warp::Sqrt}};
+  return {{"mu", 0, 1, 80, Warp::Root4LayerAngle},
+          {"roughness", 0, 1, 50, Warp::Sqrt},
+          {"eta", kDielectricTableEtaMin, 3, 40, Warp::Sqrt}};
 }
 
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {

@@ -157,7 +157,7 @@ bool LayerLimitPointAtWarped(const TableSpec& spec, const double* t, double* x) 
   // (c = alpha = 1e-12, the floor every r in (0, 1e-6] shares), or the double next to eta = 1
   // (c = 2.1e-8; F there is the layer's limit G(mu / c) to ~1e-8, FrDielectric has no
   // cancellation).
-  if (spec.axes[0].warp == Warp::Root4Layer || spec.axes[0].warp == Warp::Root4LayerSplit)
+  if (isRoughnessLayerWarp(spec.axes[0].warp))
     x[1] = 1e-6;
   else
     x[1] = std::nextafter(x[1], x[1] < spec.axes[1].hi ? spec.axes[1].hi : spec.axes[1].lo);

@@ -12,6 +12,7 @@
 // Mapping (the same as kiln::Axis::gpuCoord in kiln/lut.h):
 //     t = warp((x - lo) / (hi - lo))   (log: t = ln(x / lo) / ln(hi / lo)), x clamped to [lo, hi]
 //                                      (root4-layer: also of c = max(x1^2, 1e-12), c = 0 at x1 = 0;
+//                                       root4-layer-angle: the same after y -> (2/pi) asin(y);
 //                                       layer-eta: of c = sqrt(|x1^2 - 1|), c = 0 at x1 = 1;
 //                                       x1 axis 1's value, kilnLayerScale)
 //     s = t * (size - 1)               continuous node index
@@ -37,6 +38,8 @@
 #define KILN_WARP_ROOT4_LAYER 5  // axis 0 only: follows the value of axis 1 (kiln/lut.h)
 #define KILN_WARP_ANGLE 6
 #define KILN_WARP_LAYER_ETA 7  // axis 0 only: follows the index of axis 1 (kiln/lut.h)
+// 8 is root4-layer-split (CPU runtime only, kiln/lut.h)
+#define KILN_WARP_ROOT4_LAYER_ANGLE 9  // axis 0 only: root4-layer after u = (2/pi) asin(y)
 
 struct KilnAxis {
     float lo;    // kiln.axis<i>.lo
@@ -56,7 +59,8 @@ float kilnLayerScale(float r, KilnAxis a1) {
 // root4-layer; c = max(sqrt(|x1^2 - 1|), 1e-12), 0 at x1 = 1 exactly, for
 // layer-eta; ignored (1e-12) for the other warps.
 float kilnLayerScale(float x1, KilnAxis a0, KilnAxis a1) {
-    if (a0.warp == KILN_WARP_ROOT4_LAYER) return kilnLayerScale(x1, a1);
+    if (a0.warp == KILN_WARP_ROOT4_LAYER || a0.warp == KILN_WARP_ROOT4_LAYER_ANGLE)
+        return kilnLayerScale(x1, a1);
     if (a0.warp != KILN_WARP_LAYER_ETA) return 1e-12;
     float ec = clamp(x1, a1.lo, a1.hi);
     float c = sqrt(abs((ec - 1.0) * (ec + 1.0)));
@@ -73,6 +77,11 @@ float kilnWarped(float x, KilnAxis a, float c) {
     if (a.warp == KILN_WARP_SQUARE) return y * y;
     if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
     if (a.warp == KILN_WARP_ANGLE) return 1.0 - acos(y) * 0.63661977236758134;  // 2 / pi
+    if (a.warp == KILN_WARP_ROOT4_LAYER_ANGLE) {
+        y = asin(y) * 0.63661977236758134;  // u = (2 / pi) asin(y), then root4-layer
+        if (c > 0.0) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
+        return 0.5 * (sqrt(sqrt(y)) + 1.0);
+    }
     if (a.warp == KILN_WARP_ROOT4_LAYER) {
         if (c > 0.0) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
         return 0.5 * (sqrt(sqrt(y)) + 1.0);  // collapsed (r = 0): the outer half

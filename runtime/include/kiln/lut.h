@@ -77,10 +77,28 @@ namespace kiln {
 ///           constant split point, the same in every layer, and then axis 2 is not read (a
 ///           table of two or three axes): a kink at a fixed x = split (e.g. a max() of the
 ///           model) is a grid line at every value of axis 1.
-enum class Warp { Linear, Sqrt, Square, Log, Root4, Root4Layer, Angle, LayerEta, Root4LayerSplit };
+///   Root4LayerAngle: t = L(u, c), u = (2 / pi) asin(y), L the Root4Layer warp (c from axis 1
+///           as there, and its collapsed form at c = 0): nodes dense at both ends. At y -> 0
+///           u ~ 0.64 y, so the grazing layer is graded as by Root4Layer; at y -> 1 u is
+///           linear in the angle theta = acos(y), so a function with a (1 - mu)^(3/2) =
+///           (theta^2 / 2)^(3/2) point at mu = 1 (a microfacet albedo at high roughness,
+///           the normals clipped at the visibility horizon) is smooth in t there. Same rules
+///           as Root4Layer: axis 0 of a table of two or more axes, coupled to axis 1.
+enum class Warp {
+  Linear,
+  Sqrt,
+  Square,
+  Log,
+  Root4,
+  Root4Layer,
+  Angle,
+  LayerEta,
+  Root4LayerSplit,
+  Root4LayerAngle
+};
 
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log", "root4", "root4-layer",
-/// "angle", "layer-eta" or "root4-layer-split".
+/// "angle", "layer-eta", "root4-layer-split" or "root4-layer-angle".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
   switch (warp) {
@@ -102,6 +120,8 @@ inline const char* warpName(Warp warp) noexcept {
       return "layer-eta";
     case Warp::Root4LayerSplit:
       return "root4-layer-split";
+    case Warp::Root4LayerAngle:
+      return "root4-layer-angle";
   }
   return "unknown";
 }
@@ -111,9 +131,9 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
   if (name == nullptr) return false;
-  const Warp all[] = {Warp::Linear, Warp::Sqrt,     Warp::Square,
-                      Warp::Log,    Warp::Root4,    Warp::Root4Layer,
-                      Warp::Angle,  Warp::LayerEta, Warp::Root4LayerSplit};
+  const Warp all[] = {Warp::Linear,          Warp::Sqrt,           Warp::Square, Warp::Log,
+                      Warp::Root4,           Warp::Root4Layer,     Warp::Angle,  Warp::LayerEta,
+                      Warp::Root4LayerSplit, Warp::Root4LayerAngle};
   for (Warp candidate : all) {
     if (std::strcmp(name, warpName(candidate)) == 0) {
       warp = candidate;
@@ -155,11 +175,18 @@ inline double etaLayerScale(double lo, double hi, double eta) noexcept {
   return c > 1e-12 ? c : 1e-12;
 }
 
-/// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit): only on
-/// axis 0 of a table of two or more axes (three for Root4LayerSplit without a constant split),
-/// coupled to axis 1.
+/// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit,
+/// Root4LayerAngle): only on axis 0 of a table of two or more axes (three for
+/// Root4LayerSplit without a constant split), coupled to axis 1.
 inline bool isLayerWarp(Warp warp) noexcept {
-  return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit;
+  return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit ||
+         warp == Warp::Root4LayerAngle;
+}
+
+/// True for the warps whose layer scale is the roughness's (layerScale): Root4Layer,
+/// Root4LayerSplit, Root4LayerAngle.
+inline bool isRoughnessLayerWarp(Warp warp) noexcept {
+  return warp == Warp::Root4Layer || warp == Warp::Root4LayerSplit || warp == Warp::Root4LayerAngle;
 }
 
 /// The split point of a Root4LayerSplit axis 0 over [lo0, hi0] at the value eta of axis 2
@@ -174,10 +201,10 @@ inline double criticalSplit(double lo0, double hi0, double lo2, double hi2, doub
 }
 
 /// The layer scale of an axis 0 with warp `warp0` at the value x1 of axis 1 (`axis1`'s
-/// lo and hi clamp it): layerScale for Root4Layer, etaLayerScale for LayerEta, 1e-12
-/// (ignored) for the other warps.
+/// lo and hi clamp it): layerScale for Root4Layer, Root4LayerSplit and Root4LayerAngle,
+/// etaLayerScale for LayerEta, 1e-12 (ignored) for the other warps.
 inline double layerScaleFor(Warp warp0, double lo1, double hi1, double x1) noexcept {
-  if (warp0 == Warp::Root4Layer || warp0 == Warp::Root4LayerSplit) return layerScale(lo1, hi1, x1);
+  if (isRoughnessLayerWarp(warp0)) return layerScale(lo1, hi1, x1);
   if (warp0 == Warp::LayerEta) return etaLayerScale(lo1, hi1, x1);
   return 1e-12;
 }
@@ -280,23 +307,24 @@ struct Axis {
   }
 
   /// From which node on a collapsed layer (c = 0) holds smooth values: for
-  /// Root4Layer t_s = floor((N - 1) / 2) / (N - 1), the last node at or below 1/2
+  /// Root4Layer (and Root4LayerAngle) t_s = floor((N - 1) / 2) / (N - 1), the last node at or
+  /// below 1/2
   /// (1/2 when N is odd; the lookups at c = 0 map to t >= 1/2, so they read these
   /// nodes only); 1 for LayerEta (its last node); 0 for the other warps. The nodes
   /// t < t_s of a collapsed row hold the layer's limit.
   double collapsedStart() const noexcept {
     if (warp == Warp::LayerEta) return 1.0;
-    if (warp != Warp::Root4Layer || size < 2) return 0.0;
+    if ((warp != Warp::Root4Layer && warp != Warp::Root4LayerAngle) || size < 2) return 0.0;
     const int n1 = size - 1;
     return static_cast<double>(n1 / 2) / static_cast<double>(n1);
   }
 
   /// Warped coordinate t in [0, 1] of a value x. x is clamped to [lo, hi]
-  /// (clamp to edge); a NaN x maps to t = 0 (to 1/2 for a Root4Layer axis at
-  /// c = 0).
+  /// (clamp to edge); a NaN x maps to t = 0 (to 1/2 for a Root4Layer or Root4LayerAngle
+  /// axis at c = 0).
   double warped(double x, double c = 1e-12, double split = 0.5) const noexcept {
     if (warp == Warp::Root4LayerSplit) return splitWarped(x, c, split);
-    const bool collapsed = c == 0.0 && warp == Warp::Root4Layer;
+    const bool collapsed = c == 0.0 && (warp == Warp::Root4Layer || warp == Warp::Root4LayerAngle);
     if (!(x > lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
     if (!(x < hi)) return 1.0;
     double t = 0.0;
@@ -334,6 +362,11 @@ struct Axis {
       case Warp::Angle:
         t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi);
         break;
+      case Warp::Root4LayerAngle: {
+        const double u = std::asin((x - lo) / (hi - lo)) * (2.0 / kPi);
+        t = layerWarpCollapsible(u, c);
+        break;
+      }
       case Warp::Root4LayerSplit:
         break;  // splitWarped
     }
@@ -343,8 +376,9 @@ struct Axis {
 
   /// Inverse of warped(): the value x in [lo, hi] at warped coordinate t in [0, 1]
   /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
-  /// form: safeguarded Newton to the last bits (deterministic). A collapsed layer
-  /// (c = 0) returns lo for every t <= 1/2 (Root4Layer) or t < 1 (LayerEta).
+  /// form: safeguarded Newton to the last bits (deterministic); Root4LayerAngle is its
+  /// inverse followed by sin(u pi / 2). A collapsed layer (c = 0) returns lo for every
+  /// t <= 1/2 (Root4Layer, Root4LayerAngle) or t < 1 (LayerEta).
   double unwarped(double t, double c = 1e-12, double split = 0.5) const noexcept {
     if (!(t > 0.0)) return lo;
     if (!(t < 1.0)) return hi;
@@ -355,6 +389,10 @@ struct Axis {
       }
       case Warp::Root4Layer:
         return lo + (hi - lo) * layerWarpInverse(t, c);
+      case Warp::Root4LayerAngle: {
+        const double u = layerWarpInverse(t, c);
+        return u <= 0.0 ? lo : lo + (hi - lo) * std::sin(u * (kPi / 2.0));
+      }
       case Warp::Root4LayerSplit: {
         const double ys = (split - lo) / (hi - lo), m = 0.5 * ys;
         double y = 0.0;
@@ -445,8 +483,7 @@ struct LutView {
   }
 
   /// True when data is set, channels >= 1, dims is 1..3, every used axis is
-  /// valid(), and a layer warp (Root4Layer, LayerEta) sits only on axis 0 of a
-  /// view of 2+ axes.
+  /// valid(), and a layer warp (isLayerWarp) sits only on axis 0 of a view of 2+ axes.
   /// sample() and at() return zeros on an invalid view.
   bool valid() const noexcept {
     if (data == nullptr || channels < 1 || dims < 1 || dims > 3) return false;
