@@ -68,9 +68,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -78,6 +75,7 @@
 #include <vector>
 
 #include "baker/integrate/dielectric_column_memo.h"
+#include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_walk.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -348,53 +346,14 @@ Channels<2> View::Integrand(PolarParam h, double cp) const { return kiln::Integr
 const DielectricRuleOptions kTuned = {
     {24, 12, 4, 2}, {1e-2, 1e-4, 1e-6}, {12, 10, 6, 6}, {1, 0.1, 0.02}, 4, 16, 4};
 
+using namespace dielectric_lanes;  // Pair: two etas per lane pair
+
 /// The per-eta constants of the entering side's column walk (eta >= kDielectricTableEtaMin),
 /// two etas per lane pair (Pair below), the last pair padded with a copy of the last eta.
 struct EtaConsts {
   double eta2m1[kMaxDielectricColumn], eta2[kMaxDielectricColumn], inv[kMaxDielectricColumn];
   int pairs;
 };
-
-// The per-eta arithmetic on two etas at once: SSE2 where the compiler has it (x86-64 always),
-// plain doubles otherwise. Each lane is IEEE arithmetic (add, mul, div, sqrt correctly
-// rounded, min and max exact) in one fixed order, so an eta's value does not depend on its lane
-// or on the other etas of its column.
-#if defined(__SSE2__)
-struct Pair {
-  __m128d v;
-};
-inline Pair Load(const double* p) { return {_mm_loadu_pd(p)}; }
-inline Pair Splat(double x) { return {_mm_set1_pd(x)}; }
-inline Pair operator+(Pair a, Pair b) { return {_mm_add_pd(a.v, b.v)}; }
-inline Pair operator-(Pair a, Pair b) { return {_mm_sub_pd(a.v, b.v)}; }
-inline Pair operator*(Pair a, Pair b) { return {_mm_mul_pd(a.v, b.v)}; }
-inline Pair operator/(Pair a, Pair b) { return {_mm_div_pd(a.v, b.v)}; }
-inline Pair Sqrt(Pair a) { return {_mm_sqrt_pd(a.v)}; }
-inline Pair Min(Pair a, Pair b) { return {_mm_min_pd(a.v, b.v)}; }
-inline Pair Max(Pair a, Pair b) { return {_mm_max_pd(a.v, b.v)}; }
-inline void Store(double* p, Pair a) { _mm_storeu_pd(p, a.v); }
-#else
-struct Pair {
-  double v[2];
-};
-inline Pair Load(const double* p) { return {{p[0], p[1]}}; }
-inline Pair Splat(double x) { return {{x, x}}; }
-inline Pair operator+(Pair a, Pair b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}}; }
-inline Pair operator-(Pair a, Pair b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
-inline Pair operator*(Pair a, Pair b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
-inline Pair operator/(Pair a, Pair b) { return {{a.v[0] / b.v[0], a.v[1] / b.v[1]}}; }
-inline Pair Sqrt(Pair a) { return {{std::sqrt(a.v[0]), std::sqrt(a.v[1])}}; }
-inline Pair Min(Pair a, Pair b) {
-  return {{a.v[0] < b.v[0] ? a.v[0] : b.v[0], a.v[1] < b.v[1] ? a.v[1] : b.v[1]}};
-}
-inline Pair Max(Pair a, Pair b) {
-  return {{a.v[0] > b.v[0] ? a.v[0] : b.v[0], a.v[1] > b.v[1] ? a.v[1] : b.v[1]}};
-}
-inline void Store(double* p, Pair a) {
-  p[0] = a.v[0];
-  p[1] = a.v[1];
-}
-#endif
 
 /// The fixed rule's walk for a column of etas >= kDielectricTableEtaMin at once: the panels of
 /// view v (made at eta = kDielectricTableEtaMin: on the entering side they depend on eta only
