@@ -1,7 +1,7 @@
 // The split-sum BTDF pair's table (baker/quantities/dielectric_btdf.cpp): glTF transmission asks
 // for it at eta = ior, it is baked on request only, the bake is the same for any thread count, and
-// its stored form (T_F minus btdfFresnelClosedForm) reads back as the pair, {1, F(mu)} on the
-// smooth row.
+// baked by eta columns it holds the rule's point values, and its stored form (T_F minus
+// btdfFresnelClosedForm) reads back as the pair, {1, F(mu)} on the smooth row.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -54,6 +54,19 @@ TEST_CASE("the split-sum BTDF pair is baked on request, the same with 1 and 2 th
   Table a = BakeTable(spec, one), b = BakeTable(spec, two);
   REQUIRE(a.data.size() == b.data.size());
   CHECK(std::memcmp(a.data.data(), b.data.data(), a.data.size() * sizeof(a.data[0])) == 0);
+  // Baked by eta columns: every texel as EvaluateSpec gives it at its node (what the lookup-error
+  // search and kiln verify evaluate).
+  const size_t nc = spec.channels.size();
+  for (size_t i = 0; i < spec.TexelCount(); ++i) {
+    double x[3];
+    NodeEvaluationPoint(spec, i, x);
+    IntegrationStats st;
+    const std::vector<double> v = EvaluateSpec(spec, x, st);
+    for (size_t c = 0; c < nc; ++c) {
+      INFO("texel " << i << " channel " << c);
+      CHECK(a.data[i * nc + c] == static_cast<float>(v[c]));
+    }
+  }
   // Read back: the stored form adds the closed form to T_F.
   REQUIRE(storedForm(a) == StoredForm::BtdfSplitSumResidual);
   for (double mu : {0.0, 1.0})

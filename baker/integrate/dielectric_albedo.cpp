@@ -349,7 +349,8 @@ const DielectricRuleOptions kTuned = {
 using namespace dielectric_lanes;  // Pair: two etas per lane pair
 
 /// The per-eta constants of the entering side's column walk (eta >= kDielectricTableEtaMin),
-/// two etas per lane pair (Pair below), the last pair padded with a copy of the last eta.
+/// two etas per lane pair (Pair, dielectric_lanes.h), the last pair padded with a copy of the last
+/// eta.
 struct EtaConsts {
   double eta2m1[kMaxDielectricColumn], eta2[kMaxDielectricColumn], inv[kMaxDielectricColumn];
   int pairs;

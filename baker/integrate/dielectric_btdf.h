@@ -47,6 +47,19 @@ std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, doubl
 std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,
                                                   long long* evals = nullptr);
 
+/// {T_lobe, T_F} by the fixed rule at (mu, alpha) for n etas at once (1 <= n <=
+/// kMaxDielectricColumn of dielectric_albedo.h, every eta >= kDielectricTableEtaMin = 1.1; throws
+/// std::invalid_argument otherwise), into out[0 .. n-1]: one walk of the microfacet normals (its
+/// panels fixed at eta = 1.1's there), per eta only F and the refracted ray (dielectric_btdf.cpp,
+/// "Columns"). Each out[e] has the bits FixedRuleDielectricBtdfPair(mu, alpha, etas[e], opt)
+/// gives. evals (optional) accumulates one eta's evaluations (every eta takes the same nodes).
+void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
+                                   const DielectricBtdfRuleOptions& opt, std::array<double, 2>* out,
+                                   long long* evals = nullptr);
+/// The same with the bake's node counts (TunedDielectricBtdfRuleOptions).
+void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
+                                   std::array<double, 2>* out, long long* evals = nullptr);
+
 /// The declared bound of the fixed rule against the adaptive reference (tests hold it there).
 constexpr double kDielectricBtdfRuleBound = 5e-7;
 

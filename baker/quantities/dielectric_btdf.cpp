@@ -9,6 +9,7 @@
 #include "baker/integrate/dielectric_btdf.h"
 #include "baker/models/fresnel.h"
 #include "baker/quantities/common.h"
+#include "baker/quantities/dielectric_columns.h"
 #include "kiln/stored.h"
 
 namespace kiln {
@@ -83,6 +84,29 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return Stored(spec, x, p);
 }
 
+/// The texels by columns of eta (quantities/dielectric_columns.h): one walk per (mu, roughness)
+/// for the whole eta axis, each texel the bits FixedRule gives it.
+void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
+               std::vector<double>& errors) {
+  CheckModel(spec);
+  DielectricColumnBake how;
+  how.columnOf = [&](const double* x, double* a, double* b, double* eta) {
+    const auto [mu, r, e] = PointOf(spec, x);
+    if (r == 0 || !(e >= kDielectricTableEtaMin)) return false;
+    *a = mu;
+    *b = std::max(AlphaFromPerceptual(r), MinAlpha);
+    *eta = e;
+    return true;
+  };
+  how.column = [](double mu, double alpha, const double* etas, int n, std::array<double, 2>* out,
+                  long long* evals) {
+    FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, out, evals);
+  };
+  how.store = [&](const double* x, std::array<double, 2> p) { return Stored(spec, x, p); };
+  how.bound = kDielectricBtdfRuleBound;
+  BakeDielectricColumns(spec, threads, how, table, evals, errors);
+}
+
 std::string FixedRuleMethod(const TableSpec&) {
   DielectricBtdfRuleOptions o = TunedDielectricBtdfRuleOptions();
   return "fixed Gauss rule over the visible microfacet normals (v, phi_m), " +
@@ -134,7 +158,10 @@ const QuantityInfo& DielectricBtdfSplitSumQuantity() {
     q.usesFixedRule = UsesRule;
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;
-    q.fixedRuleVersion = "3";  // node counts by panel weight, the shared walk (dielectric_walk.h)
+    // Node counts by panel weight, the shared walk (dielectric_walk.h); from eta = 1.1 up one walk
+    // per eta column, the Fresnel layer's panels at eta = 1.1's (integrate/dielectric_btdf.cpp).
+    q.fixedRuleVersion = "4";
+    q.bakeTable = BakeTable;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;
