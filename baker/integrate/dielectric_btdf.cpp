@@ -37,9 +37,10 @@
 // single point: the lookup-error search, kiln verify, kiln integrate) gives the bits the column
 // gives. Below 1.1 (eta in [1, 1.1): the reference's and tests' points, off the table) the
 // per-point walk with eta's own panels as before. Measured: the worst |fixed - adaptive at
-// 1e-10| on the test's grid (tests/integrate_dielectric_btdf.cpp) 6.8e-8 (1.6e-7 before);
-// evaluations per texel 2,083 counted per eta (1,607 before: the Fresnel panels kept above
-// sqrt(2)), of which a 40-eta column walks ~52 per texel; cost in README ("Tables on request").
+// 1e-10| on the test's grid (tests/integrate_dielectric_btdf.cpp) 6.8e-8 (1.0e-7 before), on a
+// grid between its nodes 5.4e-8; evaluations per texel 2,083 counted per eta (1,607 before: the
+// Fresnel panels kept above sqrt(2)), of which a 40-eta column walks ~52 per texel; cost in
+// docs/models.md section 16 and the README.
 #include "baker/integrate/dielectric_btdf.h"
 
 #include <algorithm>
