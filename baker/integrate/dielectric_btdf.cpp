@@ -34,7 +34,7 @@
 // eta^2 - 1) = eta cos_t), the refracted ray mu_t = (mu - (c - g) cos_m) / eta and its masking
 // folded into one division: 2 square roots and 2 divisions per eta, two etas per lane pair
 // (dielectric_lanes.h). Each eta's sums are its own, in the walk's order: a column of one (a
-// single point: the lookup-error search, kiln verify, kiln integrate) gives the bits the column
+// single point: the lookup-error search, kiln verify) gives the bits the column
 // gives. Below 1.1 (eta in [1, 1.1): the reference's and tests' points, off the table) the
 // per-point walk with eta's own panels as before. Measured: the worst |fixed - adaptive at
 // 1e-10| on the test's grid (tests/integrate_dielectric_btdf.cpp) 6.8e-8 (1.0e-7 before), on a
