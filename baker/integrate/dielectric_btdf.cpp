@@ -191,78 +191,57 @@ struct BtdfEtaConsts {
 void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
                     const dielectric_walk::NodeClasses& rule, std::array<double, 2>* out,
                     long long* evals) {
-  using namespace dielectric_walk;
-  double vs[kMaxThetaBreaks];
-  const int nt = VBreaks(v, vs);
-  long long count = 0;
-  const int np2 = ks.pairs;
-  Pair sumL[kMaxDielectricColumn / 2], sumF[kMaxDielectricColumn / 2];
-  Pair circleL[kMaxDielectricColumn / 2], circleF[kMaxDielectricColumn / 2];
-  for (int e = 0; e < np2; ++e) sumL[e] = sumF[e] = Splat(0);
-  const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
-             gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
-  for (int i = 0; i + 1 < nt; ++i) {
-    const double vb = vs[i + 1];
-    const double weight =
-        vb > 0 ? (vs[i] - vb) * (v.mu + v.st * v.dist.alpha * std::sqrt((1 - vb) / vb)) / v.gDen
-               : INFINITY;
-    const GaussRule01& go =
-        CachedGaussLegendre01(NodesOf(rule.outerNodes, rule.outerWeight, weight));
-    for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      double jac;
-      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
-      jac = -jac;
-      if (!(vv > 0) || !(jac > 0)) continue;
-      const PolarParam h = v.dist.FromV(vv);
-      double phis[kMaxPhiBreaks];
-      const int np = v.PhiBreaks(h, phis);
+  struct Sums {
+    const BtdfView& v;
+    const BtdfEtaConsts& ks;
+    const int np2;
+    const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
+               gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
+    Pair sumL[kMaxDielectricColumn / 2] = {}, sumF[kMaxDielectricColumn / 2] = {};
+    Pair circleL[kMaxDielectricColumn / 2] = {}, circleF[kMaxDielectricColumn / 2] = {};
+    Pair cosM = Splat(0);
+    void BeginRing(const PolarParam& h) {
       for (int e = 0; e < np2; ++e) circleL[e] = circleF[e] = Splat(0);
-      const Pair cosM = Splat(h.cosTheta);
-      for (int k = 0; k + 1 < np; ++k) {
-        const double width = phis[k + 1] - phis[k];
-        if (!(width > 0)) continue;
-        const GaussRule01& gi =
-            CachedGaussLegendre01(NodesOf(rule.innerNodes, rule.innerWidth, width));
-        for (size_t j = 0; j < gi.x.size(); ++j) {
-          double dj;
-          const double phi = Smooth(phis[k], phis[k + 1], gi.x[j], &dj);
-          ++count;
-          const double c = v.mu * h.cosTheta + v.st * h.sinTheta * CosHalfTurn(phi);
-          if (!(c > 0) || !(h.cosTheta > 0)) continue;
-          const Pair wb = Splat(gi.w[j] * dj * (c / h.cosTheta));
-          const Pair cc = Splat(std::min(c, 1.0)), cc2 = cc * cc;
-          // Per eta: g = sqrt(c^2 + eta^2 - 1) = eta cos_t; F by FrDielectric's
-          // cancellation-free forms over one denominator (a = c + g, b = eta^2 c + g,
-          // X = (eta^2 + 1) c^2 - 1: F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4), a >= g >
-          // 0.45 on this side); the refracted ray mu_t = (mu - (c - g) cos_m) / eta (> 0: g > c)
-          // and its masking mu Lambda(t) = mu alpha^2 s_t^2 / P, P = 2 mu_t (sqrt(mu_t^2 +
-          // alpha^2 s_t^2) + mu_t), folded into one division.
-          for (int e = 0; e < np2; ++e) {
-            const Pair eta2m1 = Load(ks.eta2m1 + 2 * e), eta2 = Load(ks.eta2 + 2 * e);
-            const Pair g = Sqrt(cc2 + eta2m1);
-            const Pair a = cc + g, b = eta2 * cc + g, x = (eta2 + one) * cc2 - one;
-            const Pair aa = a * a, bb = b * b, a4 = aa * aa, b4 = bb * bb;
-            const Pair F = Min(one, eta2m1 * eta2m1 * (b4 + x * x * a4) / (two * a4 * b4));
-            const Pair muT = (mu - (cc - g) * cosM) * Load(ks.inv + 2 * e);
-            const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
-            const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
-            const Pair t = wb * p / (gDen * p + mu * a2s2);
-            circleL[e] = circleL[e] + t;
-            circleF[e] = circleF[e] + t * F;
-          }
-        }
-      }
-      const Pair wo = Splat(go.w[ko] * jac / Pi);
+      cosM = Splat(h.cosTheta);
+    }
+    void Node(const PolarParam& h, double phi, double w) {
+      const double c = v.mu * h.cosTheta + v.st * h.sinTheta * dielectric_walk::CosHalfTurn(phi);
+      if (!(c > 0) || !(h.cosTheta > 0)) return;
+      const Pair wb = Splat(w * (c / h.cosTheta));
+      const Pair cc = Splat(std::min(c, 1.0)), cc2 = cc * cc;
+      // Per eta: g = sqrt(c^2 + eta^2 - 1) = eta cos_t; F by FrDielectric's
+      // cancellation-free forms over one denominator (a = c + g, b = eta^2 c + g,
+      // X = (eta^2 + 1) c^2 - 1: F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4), a >= g >
+      // 0.45 on this side); the refracted ray mu_t = (mu - (c - g) cos_m) / eta (> 0: g > c)
+      // and its masking mu Lambda(t) = mu alpha^2 s_t^2 / P, P = 2 mu_t (sqrt(mu_t^2 +
+      // alpha^2 s_t^2) + mu_t), folded into one division.
       for (int e = 0; e < np2; ++e) {
-        sumL[e] = sumL[e] + wo * circleL[e];
-        sumF[e] = sumF[e] + wo * circleF[e];
+        const Pair eta2m1 = Load(ks.eta2m1 + 2 * e), eta2 = Load(ks.eta2 + 2 * e);
+        const Pair g = Sqrt(cc2 + eta2m1);
+        const Pair a = cc + g, b = eta2 * cc + g, x = (eta2 + one) * cc2 - one;
+        const Pair aa = a * a, bb = b * b, a4 = aa * aa, b4 = bb * bb;
+        const Pair F = Min(one, eta2m1 * eta2m1 * (b4 + x * x * a4) / (two * a4 * b4));
+        const Pair muT = (mu - (cc - g) * cosM) * Load(ks.inv + 2 * e);
+        const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
+        const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
+        const Pair t = wb * p / (gDen * p + mu * a2s2);
+        circleL[e] = circleL[e] + t;
+        circleF[e] = circleF[e] + t * F;
       }
     }
-  }
-  for (int e = 0; e < np2; ++e) {
+    void EndRing(double wo) {
+      const Pair w = Splat(wo);
+      for (int e = 0; e < np2; ++e) {
+        sumL[e] = sumL[e] + w * circleL[e];
+        sumF[e] = sumF[e] + w * circleF[e];
+      }
+    }
+  } s{v, ks, ks.pairs};
+  const long long count = dielectric_walk::WalkNodes(v, rule, s);
+  for (int e = 0; e < s.np2; ++e) {
     double l[2], f[2];
-    Store(l, sumL[e]);
-    Store(f, sumF[e]);
+    Store(l, s.sumL[e]);
+    Store(f, s.sumF[e]);
     out[2 * e] = {l[0], f[0]};
     out[2 * e + 1] = {l[1], f[1]};
   }

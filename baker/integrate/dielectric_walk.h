@@ -101,14 +101,18 @@ int VBreaks(const Problem& p, double* vs) {
   return nt;
 }
 
-/// The integral by the fixed rule with node classes `rule`; evals (optional) accumulates the
-/// integrand evaluations. Panels in order of v, nodes in order within each: one summation order.
-template <class Problem>
-Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* evals) {
+/// Walks the fixed rule's nodes with node classes `rule` in its one summation order: panels in
+/// order of v, rings (theta_m nodes) in order within each, azimuth nodes in order within a ring.
+/// For each ring: visit.BeginRing(h); visit.Node(h, phi, w) for each of its azimuth nodes (w the
+/// inner Gauss weight times the smoothstep's Jacobian); visit.EndRing(wo), wo the ring's outer
+/// weight times its Jacobian and 1 / pi. The visitor sums: FixedWalk below one integrand, the
+/// glass tables' eta columns (dielectric_albedo.cpp, dielectric_btdf.cpp) one per eta. Returns
+/// the azimuth nodes visited (the integrand evaluations).
+template <class Problem, class Visitor>
+long long WalkNodes(const Problem& p, const NodeClasses& rule, Visitor& visit) {
   double vs[kMaxThetaBreaks];
   const int nt = VBreaks(p, vs);
   long long count = 0;
-  Channels<2> sum{0, 0};
   for (int i = 0; i + 1 < nt; ++i) {
     // The panel's weight: its share of dv times the integrand's bound at its small-v end,
     // (mu + sin_o tan theta_m) / gDen (the tail panel, ending at v = 0, is unbounded: top class).
@@ -126,7 +130,7 @@ Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* eval
       const PolarParam h = p.dist.FromV(vv);
       double phis[kMaxPhiBreaks];
       const int np = p.PhiBreaks(h, phis);
-      Channels<2> circle{0, 0};
+      visit.BeginRing(h);
       for (int k = 0; k + 1 < np; ++k) {
         const double width = phis[k + 1] - phis[k];
         if (!(width > 0)) continue;
@@ -136,14 +140,31 @@ Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* eval
           double dj;
           const double phi = Smooth(phis[k], phis[k + 1], gi.x[j], &dj);
           ++count;
-          circle += (gi.w[j] * dj) * p.Integrand(h, CosHalfTurn(phi));
+          visit.Node(h, phi, gi.w[j] * dj);
         }
       }
-      sum += (go.w[ko] * jac / Pi) * circle;
+      visit.EndRing(go.w[ko] * jac / Pi);
     }
   }
+  return count;
+}
+
+/// The integral by the fixed rule with node classes `rule` (WalkNodes); evals (optional)
+/// accumulates the integrand evaluations.
+template <class Problem>
+Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* evals) {
+  struct Sum {
+    const Problem& p;
+    Channels<2> sum{0, 0}, circle{0, 0};
+    void BeginRing(const PolarParam&) { circle = Channels<2>{0, 0}; }
+    void Node(const PolarParam& h, double phi, double w) {
+      circle += w * p.Integrand(h, CosHalfTurn(phi));
+    }
+    void EndRing(double wo) { sum += wo * circle; }
+  } s{p};
+  const long long count = WalkNodes(p, rule, s);
   if (evals) *evals += count;
-  return sum;
+  return s.sum;
 }
 
 /// The integral by adaptive Gauss-Kronrod on the same panels: outer to opt.tol / 2, each circle
