@@ -372,11 +372,10 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
     const int np2;
     const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
                gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
-    Pair sumR[kMaxDielectricColumn / 2] = {}, sumT[kMaxDielectricColumn / 2] = {};
-    Pair circleR[kMaxDielectricColumn / 2] = {}, circleT[kMaxDielectricColumn / 2] = {};
+    dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
     void BeginRing(const PolarParam& h) {
-      for (int e = 0; e < np2; ++e) circleR[e] = circleT[e] = Splat(0);
+      sums.ClearRing();
       cosM = Splat(h.cosTheta);
     }
     void Node(const PolarParam& h, double phi, double w) {
@@ -400,29 +399,17 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
         const Pair a = cc + g, b = eta2 * cc + g, x = (eta2 + one) * cc * cc - one;
         const Pair aa = a * a, bb = b * b, a4 = aa * aa, b4 = bb * bb;
         const Pair F = Min(one, eta2m1 * eta2m1 * (b4 + x * x * a4) / (two * a4 * b4));
-        circleR[e] = circleR[e] + wR * F;
+        sums.ring0[e] = sums.ring0[e] + wR * F;
         const Pair muT = (mu - (cc - g) * cosM) * Load(ks.inv + 2 * e);
         const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
         const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
-        circleT[e] = circleT[e] + wb * (one - F) * p / (gDen * p + mu * a2s2);
+        sums.ring1[e] = sums.ring1[e] + wb * (one - F) * p / (gDen * p + mu * a2s2);
       }
     }
-    void EndRing(double wo) {
-      const Pair w = Splat(wo);
-      for (int e = 0; e < np2; ++e) {
-        sumR[e] = sumR[e] + w * circleR[e];
-        sumT[e] = sumT[e] + w * circleT[e];
-      }
-    }
+    void EndRing(double wo) { sums.EndRing(wo); }
   } s{v, ks, ks.pairs};
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
-  for (int e = 0; e < s.np2; ++e) {
-    double r[2], t[2];
-    Store(r, s.sumR[e]);
-    Store(t, s.sumT[e]);
-    out[2 * e] = {r[0], t[0]};
-    out[2 * e + 1] = {r[1], t[1]};
-  }
+  s.sums.Write(out);
   if (evals) *evals += count;
 }
 

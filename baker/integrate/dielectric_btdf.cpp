@@ -197,11 +197,10 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
     const int np2;
     const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
                gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
-    Pair sumL[kMaxDielectricColumn / 2] = {}, sumF[kMaxDielectricColumn / 2] = {};
-    Pair circleL[kMaxDielectricColumn / 2] = {}, circleF[kMaxDielectricColumn / 2] = {};
+    dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
     void BeginRing(const PolarParam& h) {
-      for (int e = 0; e < np2; ++e) circleL[e] = circleF[e] = Splat(0);
+      sums.ClearRing();
       cosM = Splat(h.cosTheta);
     }
     void Node(const PolarParam& h, double phi, double w) {
@@ -225,26 +224,14 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
         const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
         const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
         const Pair t = wb * p / (gDen * p + mu * a2s2);
-        circleL[e] = circleL[e] + t;
-        circleF[e] = circleF[e] + t * F;
+        sums.ring0[e] = sums.ring0[e] + t;
+        sums.ring1[e] = sums.ring1[e] + t * F;
       }
     }
-    void EndRing(double wo) {
-      const Pair w = Splat(wo);
-      for (int e = 0; e < np2; ++e) {
-        sumL[e] = sumL[e] + w * circleL[e];
-        sumF[e] = sumF[e] + w * circleF[e];
-      }
-    }
+    void EndRing(double wo) { sums.EndRing(wo); }
   } s{v, ks, ks.pairs};
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
-  for (int e = 0; e < s.np2; ++e) {
-    double l[2], f[2];
-    Store(l, s.sumL[e]);
-    Store(f, s.sumF[e]);
-    out[2 * e] = {l[0], f[0]};
-    out[2 * e + 1] = {l[1], f[1]};
-  }
+  s.sums.Write(out);
   if (evals) *evals += count;
 }
 

@@ -2,6 +2,7 @@
 // dielectric_btdf.cpp: two etas at once): SSE2 where the compiler has it (x86-64 always), plain
 // doubles otherwise.
 #pragma once
+#include <array>
 #include <cmath>
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -50,6 +51,34 @@ inline void Store(double* p, Pair a) {
   p[1] = a.v[1];
 }
 #endif
+
+/// Two channels of a column walk (dielectric_walk::WalkNodes' visitor state), per lane pair of
+/// etas: a ring's sums (ring0, ring1) cleared by ClearRing, added to the totals with the ring's
+/// weight by EndRing, in the walk's order; Write stores eta 2e's and 2e + 1's {sum0, sum1}.
+template <int kPairs>
+struct ColumnSums {
+  int pairs = 0;
+  Pair sum0[kPairs] = {}, sum1[kPairs] = {}, ring0[kPairs] = {}, ring1[kPairs] = {};
+  void ClearRing() {
+    for (int e = 0; e < pairs; ++e) ring0[e] = ring1[e] = Splat(0);
+  }
+  void EndRing(double wo) {
+    const Pair w = Splat(wo);
+    for (int e = 0; e < pairs; ++e) {
+      sum0[e] = sum0[e] + w * ring0[e];
+      sum1[e] = sum1[e] + w * ring1[e];
+    }
+  }
+  void Write(std::array<double, 2>* out) const {
+    for (int e = 0; e < pairs; ++e) {
+      double a[2], b[2];
+      Store(a, sum0[e]);
+      Store(b, sum1[e]);
+      out[2 * e] = {a[0], b[0]};
+      out[2 * e + 1] = {a[1], b[1]};
+    }
+  }
+};
 
 }  // namespace dielectric_lanes
 }  // namespace kiln
