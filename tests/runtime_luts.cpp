@@ -47,9 +47,9 @@ TEST_CASE("luts/ holds the catalogue, listed in its manifest", "[luts]") {
     // LTC tables in the published layout (kind ltc; 64 linear nodes of roughness x
     // sqrt(1 - N.V), for the shaders written for the original textures): they cannot follow the
     // albedo's layer at N.V -> 0, their norm channels declare 0.163 (ltc-ggx), 0.129
-    // (ltc-beckmann, ltc-blinn-phong) (README "LTC tables"); kiln's own layout, ltc-ggx-kiln (on request),
-    // declares 7.5e-4.
-    // Added with issue #18: ltc-charlie-smith 0.108 (README "LTC tables").
+    // (ltc-beckmann, ltc-blinn-phong) (README "LTC tables"); kiln's own layout, ltc-ggx-kiln (on
+    // request), declares 7.5e-4. Added with issue #18: ltc-charlie-smith 0.108 (README "LTC
+    // tables").
     const std::string name = t["name"].get<std::string>();
     const bool publishedLtc = name == "ltc-ggx" || name == "ltc-beckmann" ||
                               name == "ltc-blinn-phong" || name == "ltc-charlie-smith";
