@@ -183,6 +183,24 @@ struct FastView : View {
   }
 };
 
+/// The view of the fixed rule with options `opt` (its panel sequences' ratios).
+View MakeRuleView(double mu, double alpha, double eta, const DielectricRuleOptions& opt) {
+  View v = MakeView(mu, alpha, eta);
+  v.maskingRatio = opt.maskingRatio;
+  v.grazingRatio = opt.grazingRatio;
+  v.tailRatio = opt.tailRatio;
+  return v;
+}
+
+/// The same as a FastView (alpha^2 and eta^2 precomputed).
+FastView MakeFastView(double mu, double alpha, double eta, const DielectricRuleOptions& opt) {
+  FastView v;
+  static_cast<View&>(v) = MakeRuleView(mu, alpha, eta, opt);
+  v.a2 = Sqr(v.dist.alpha);
+  v.eta2 = eta * eta;
+  return v;
+}
+
 /// Threshold cosines c0 of the inner structures at microfacet polar angle h (see file comment).
 int Thresholds(const View& v, PolarParam h, double* c0) {
   int n = 0;
@@ -429,10 +447,7 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
                                      const DielectricRuleOptions& opt, std::array<double, 2>* out,
                                      long long* evals) {
   CheckColumn(etas, n);
-  View v = MakeView(mu, alpha, kDielectricTableEtaMin);
-  v.maskingRatio = opt.maskingRatio;
-  v.grazingRatio = opt.grazingRatio;
-  v.tailRatio = opt.tailRatio;
+  View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
   EtaConsts ks;
   ks.pairs = (n + 1) / 2;
   for (int e = 0; e < 2 * ks.pairs; ++e) {
@@ -469,26 +484,14 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
     FixedRuleDielectricAlbedoColumn(mu, alpha, &eta, 1, opt, &e, evals);
     return e;
   }
-  FastView v;
-  static_cast<View&>(v) = MakeView(mu, alpha, eta);
-  v.maskingRatio = opt.maskingRatio;
-  v.grazingRatio = opt.grazingRatio;
-  v.tailRatio = opt.tailRatio;
-  v.a2 = Sqr(v.dist.alpha);
-  v.eta2 = eta * eta;
+  FastView v = MakeFastView(mu, alpha, eta, opt);
   const Channels<2> r = dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};
 }
 
 double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
                                       const DielectricRuleOptions& opt, long long* evals) {
-  FastView v;
-  static_cast<View&>(v) = MakeView(mu, alpha, eta);
-  v.maskingRatio = opt.maskingRatio;
-  v.grazingRatio = opt.grazingRatio;
-  v.tailRatio = opt.tailRatio;
-  v.a2 = Sqr(v.dist.alpha);
-  v.eta2 = eta * eta;
+  FastView v = MakeFastView(mu, alpha, eta, opt);
   v.reflectOnly = true;
   return dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals)[0];
 }

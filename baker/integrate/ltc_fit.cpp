@@ -504,6 +504,22 @@ std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
   return ls;
 }
 
+/// The MIS points of an error integral between a lobe and an LTC, in one order: the lobe's
+/// samples `ls` (LobeSamples), then the LTC's n x n stratified samples; add(l, f, pl) with the
+/// lobe's value f (cosine included) and its proposal's density pl at each.
+template <class Add>
+void ForEachMisSample(const std::vector<LobeSample>& ls, const LtcLobe& lobe, const LtcMatrix& ltc,
+                      int n, Add& add) {
+  for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
+      double f, pl;
+      lobe.EvalPdf(l, &f, &pl);
+      add(l, f, pl);
+    }
+}
+
 /// LtcFitError from the lobe's own n x n samples `ls` (LobeSamples(lobe, n)).
 double FitErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, double norm,
                     const LtcMatrix& ltc, int p, int n) {
@@ -520,14 +536,7 @@ double FitErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, doub
     double e = std::fabs(fl - d);
     err += (p == 3 ? e * e * e : e) / den;
   };
-  for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double f, pl;
-      lobe.EvalPdf(l, &f, &pl);
-      add(l, f, pl);
-    }
+  ForEachMisSample(ls, lobe, ltc, n, add);
   return err / (double(n) * n);
 }
 
@@ -544,14 +553,7 @@ double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, i
     double d = ltc.Eval(l), den = pl + d;
     if (den > 0) overlap += std::min(f / norm, d) / den;
   };
-  for (const LobeSample& s : LobeSamples(lobe, n)) add(s.l, s.f, s.pl);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double f, pl;
-      lobe.EvalPdf(l, &f, &pl);
-      add(l, f, pl);
-    }
+  ForEachMisSample(LobeSamples(lobe, n), lobe, ltc, n, add);
   return 2 - 2 * overlap / (double(n) * n);
 }
 

@@ -174,12 +174,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   CheckModel(spec);
   DielectricColumnBake how;
   how.columnOf = [&](const double* x, double* a, double* b, double* eta) {
-    const auto [mu, r, e] = PointOf(spec, x);
-    if (r == 0 || !(e >= kDielectricTableEtaMin)) return false;
-    *a = mu;
-    *b = std::max(AlphaFromPerceptual(r), MinAlpha);
-    *eta = e;
-    return true;
+    return MuRoughnessColumnOf(PointOf(spec, x), a, b, eta);
   };
   how.column = [](double mu, double alpha, const double* etas, int n, std::array<double, 2>* out,
                   long long* evals) {

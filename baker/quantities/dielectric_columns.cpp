@@ -5,12 +5,14 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <map>
 #include <utility>
 
 #include "baker/integrate/dielectric_albedo.h"
+#include "baker/models/roughness.h"
 
 namespace kiln {
 namespace {
@@ -28,6 +30,15 @@ struct Column {
 };
 
 }  // namespace
+
+bool MuRoughnessColumnOf(const std::array<double, 3>& point, double* a, double* b, double* eta) {
+  const auto [mu, r, e] = point;
+  if (r == 0 || !(e >= kDielectricTableEtaMin)) return false;
+  *a = mu;
+  *b = std::max(AlphaFromPerceptual(r), MinAlpha);
+  *eta = e;
+  return true;
+}
 
 void BakeDielectricColumns(const TableSpec& spec, int threads, const DielectricColumnBake& how,
                            Table& table, std::vector<long long>& evals,

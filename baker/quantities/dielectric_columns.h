@@ -27,6 +27,11 @@ struct DielectricColumnBake {
   double bound = 0;  ///< each column texel's declared error (the rule's bound)
 };
 
+/// DielectricColumnBake::columnOf of a (mu, roughness, eta) texel of an entering-side 3D table
+/// (the E tables, the BTDF pair): key (mu, alpha = max(r^2, MinAlpha)) and its eta; false at
+/// roughness 0 (the smooth limit) or eta below kDielectricTableEtaMin (evaluated alone).
+bool MuRoughnessColumnOf(const std::array<double, 3>& point, double* a, double* b, double* eta);
+
 /// Fills table.data, evals and errors of `spec` (QuantityInfo::bakeTable's contract) by
 /// columns: texels grouped by their key in index order, at most kMaxDielectricColumn per column,
 /// one column per task; the same bits for any thread count.
