@@ -55,6 +55,8 @@ void main() {
           + kilnSample3D(lut3, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z)
           + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, true)
           + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, false)
+          + kilnDielectricExitClosedForm(x.x, x.y, x.z, true)
+          + kilnDielectricExitClosedForm(x.x, x.y, x.z, false)
           + kilnBtdfSplitSum(lut3, x.x, x.y, x.z, 1.0, a0, a1, a2);
 }
 )";
@@ -69,6 +71,8 @@ float4 main(float3 x : TEXCOORD0) : SV_Target {
          + kilnSample3D(lut3, linearClamp, x, a0, a1, a2).r + kilnFresnelAlbedoClosedForm(x.x, x.y, x.z)
          + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, true)
          + kilnDielectricAlbedoClosedForm(x.x, x.y, x.z, false)
+         + kilnDielectricExitClosedForm(x.x, x.y, x.z, true)
+         + kilnDielectricExitClosedForm(x.x, x.y, x.z, false)
          + kilnBtdfSplitSum(lut3, linearClamp, x.x, x.y, x.z, 1.0, a0, a1, a2);
 }
 )";

@@ -226,12 +226,85 @@ float kilnDielectricAlbedoClosedForm(float mu, float r, float eta, bool transmit
         return transmit ? 1.0 - f0 : f0;
     }
     float alpha = max(rc * rc, 1e-12);
-    float delta = eta < 1.0 ? 4.0 * alpha * sqrt((1.0 - eta) * (1.0 + eta)) : 0.0;
-    float f = kilnFresnelDielectricSoft(sqrt(m * m + alpha * alpha), eta, delta);
+    // delta = 4 alpha mu_s at the cosine mu_s = sqrt(mu^2 + alpha^2) F_s is taken at (eta < 1).
+    float muS = sqrt(m * m + alpha * alpha);
+    float delta = eta < 1.0 ? 4.0 * alpha * muS : 0.0;
+    float f = kilnFresnelDielectricSoft(muS, eta, delta);
     if (transmit) return 1.0 - f;
     float s = m / alpha;
     float h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
     return f * h / (1.0 + 20.0 * alpha);
+}
+
+// v of a GGX slope x = tan(beta) along the view's azimuth: x / sqrt(alpha^2 + x^2), beta in
+// (-pi/2, pi/2] (the slope's cumulative coordinate of kilnDielectricExitClosedForm).
+float kilnExitSlopeV(float beta, float alpha) {
+    float s = sin(beta), c = cos(beta);
+    return s / sqrt(alpha * alpha * c * c + s * s);
+}
+
+// 12-node Gauss-Legendre on [0, 1], the first half (the rest mirrored: 1 - x, same weight),
+// as kiln/stored.h dielectricExitClosedForm.
+static const float kKilnGaussX[6] = {0.0092196828766403782, 0.047941371814762601,
+    0.11504866290284765, 0.20634102285669126, 0.31608425050090994, 0.43738329574426554};
+static const float kKilnGaussW[6] = {0.023587668193255917, 0.053469662997659088,
+    0.080039164271673166, 0.10158371336153292, 0.11674626826917739, 0.12457352290670144};
+
+// The slope average's integrand at u in [0, 1] (phi = pi u, v from v1 to v2 as (1 - cos phi) / 2).
+float kilnExitSlopeTerm(float u, float v1, float v2, float alpha,
+                              float thetaO, float eta) {
+    float phi = 3.14159265358979 * u;
+    float v = v1 + (v2 - v1) * 0.5 * (1.0 - cos(phi));
+    float dv = (v2 - v1) * 0.5 * sin(phi) * 3.14159265358979;
+    if (!(dv > 0.0)) return 0.0;
+    float vc = clamp(v, -1.0, 1.0);
+    float x = alpha * vc / sqrt(max((1.0 - vc) * (1.0 + vc), 1e-30));
+    return kilnFresnelDielectric(max(cos(thetaO - atan(x)), 0.0), eta) * dv;
+}
+
+// The closed form g a ggx-dielectric-albedo-r-exit / -t-exit file with channel E_R_tir_residual
+// (transmit false) or E_T_tir_residual (transmit true) stores E against
+// (kiln::dielectricExitClosedForm, runtime/FORMAT.md "Stored forms"): the smooth interface's F
+// averaged over GGX's slopes along the view's azimuth (f; g_T = 1 - f), and for E_R the grazing
+// terms f h(s) - K(eta) alpha^2 s ln(1 + 1/s) / (1 + s), s = mu / alpha. E = sample + g at the
+// view cosine mu, perceptual roughness r and index eta (< 1: the view inside the denser medium)
+// of the lookup (clamped to the axes). About 24 Fresnel evaluations.
+float kilnDielectricExitClosedForm(float mu, float r, float eta, bool transmit) {
+    float m = clamp(mu, 0.0, 1.0);
+    float rc = clamp(r, 0.0, 1.0);
+    if (!(rc > 0.0)) {
+        float f0 = kilnFresnelDielectric(m, eta);
+        return transmit ? 1.0 - f0 : f0;
+    }
+    float alpha = max(rc * rc, 1e-12);
+    float halfPi = 1.57079632679490;
+    float thetaO = acos(m);
+    float v1 = -1.0, v2 = 1.0;
+    float thetaC = halfPi;  // psi's end for K: all of [0, pi/2] for eta >= 1
+    if (eta < 1.0) {
+        thetaC = acos(sqrt((1.0 - eta) * (1.0 + eta)));
+        v1 = kilnExitSlopeV(thetaO - thetaC, alpha);
+        if (thetaO + thetaC < halfPi) v2 = kilnExitSlopeV(thetaO + thetaC, alpha);
+    }
+    float inside = 0.0;
+    for (int k = 0; k < 6; ++k)
+        inside += kKilnGaussW[k] * (kilnExitSlopeTerm(kKilnGaussX[k], v1, v2, alpha, thetaO, eta) +
+                                    kilnExitSlopeTerm(1.0 - kKilnGaussX[k], v1, v2, alpha, thetaO, eta));
+    float f = min(1.0, 0.5 * ((v1 + 1.0) + (1.0 - v2) + inside));
+    if (transmit) return 1.0 - f;
+    // K = (2 / pi) int_0^(pi/2) F(cos psi) dpsi: F = 1 beyond theta_c; the rule on [0, theta_c]
+    // in psi = theta_c (1 - cos phi) / 2.
+    float kSum = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        float pa = 3.14159265358979 * kKilnGaussX[i], pb = 3.14159265358979 * (1.0 - kKilnGaussX[i]);
+        kSum += kKilnGaussW[i] * (kilnFresnelDielectric(cos(thetaC * 0.5 * (1.0 - cos(pa))), eta) * sin(pa) +
+                                  kilnFresnelDielectric(cos(thetaC * 0.5 * (1.0 - cos(pb))), eta) * sin(pb));
+    }
+    float kEta = (kSum * thetaC * 0.5 * 3.14159265358979 + (halfPi - thetaC)) * 0.63661977236758134;
+    float s = m / alpha;
+    float h = 1.0 - 0.211 * s / (1.0 + s * (0.4 + s * (0.3 + 0.25 * s)));
+    float layer = s > 0.0 ? s * log(1.0 + 1.0 / s) / (1.0 + s) : 0.0;
+    return f * h - kEta * alpha * alpha * layer;
 }
 
 // The closed form a ggx-dielectric-btdf-split-sum file's channel T_F_residual stores T_F against
