@@ -114,16 +114,20 @@ KILN_AVX512 void FastRingIntegrand(const FastRing& r, const double* phi, int J, 
     const V Fv = StdMin(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
     const V F = _mm512_mask_blend_pd(gok, one, Fv);
     const V muR = Sub(Mul(Mul(two, c), cosM), mu);
+    // Each ray's term only where some lane has it (under total internal reflection none
+    // transmits; past the reflected horizon none reflects).
     const M rok = ok & Gt(muR, zero) & Gt(F, zero);
-    _mm512_mask_storeu_pd(outR + j, k, _mm512_maskz_mov_pd(rok, Weigh(base, muR, F, a2, gDen, mu)));
-    if (r.reflectOnly) {
-      _mm512_mask_storeu_pd(outT + j, k, zero);
-      continue;
+    _mm512_mask_storeu_pd(outR + j, k,
+                          rok ? _mm512_maskz_mov_pd(rok, Weigh(base, muR, F, a2, gDen, mu)) : zero);
+    M tok = 0;
+    V muT = zero;
+    if (!r.reflectOnly) {
+      muT = Div(Sub(mu, Mul(Sub(cc, g), cosM)), eta);
+      tok = ok & Lt(F, one) & Gt(muT, zero);
     }
-    const V muT = Div(Sub(mu, Mul(Sub(cc, g), cosM)), eta);
-    const M tok = ok & Lt(F, one) & Gt(muT, zero);
-    _mm512_mask_storeu_pd(outT + j, k,
-                          _mm512_maskz_mov_pd(tok, Weigh(base, muT, Sub(one, F), a2, gDen, mu)));
+    _mm512_mask_storeu_pd(
+        outT + j, k,
+        tok ? _mm512_maskz_mov_pd(tok, Weigh(base, muT, Sub(one, F), a2, gDen, mu)) : zero);
   }
 }
 
