@@ -1,9 +1,9 @@
 // The glass walks' AVX-512F paths (baker/integrate/dielectric_simd.*): where the CPU has
 // AVX-512F the fixed rule's eta columns and the exit side's per-point walk run eight lanes at a
 // time; the tables must not depend on it. Each path must give the portable path's bits, at the
-// points the bake and the lookup-error search evaluate (columns of 1 .. 40 etas, the exit side's
-// E pair and E_R alone, the averages) and at the corners of the domain (mu 0 and 1, roughness near
-// 0 and 1, eta at both ends of both sides).
+// points the bake and the lookup-error search evaluate (columns of 1 .. 40 etas of the E pair and
+// of the BTDF pair, the exit side's E pair and E_R alone, the averages) and at the corners of the
+// domain (mu 0 and 1, roughness near 0 and 1, eta at both ends of both sides).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -12,6 +12,7 @@
 
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
+#include "baker/integrate/dielectric_btdf.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/models/roughness.h"
 
@@ -61,6 +62,28 @@ TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric
             long long evals = 0;
             FixedRuleDielectricAlbedoColumn(mu, alpha, etas.data() + first, n, opt, col.data(),
                                             &evals);
+            return std::make_pair(col, evals);
+          };
+          const auto [on, off] = BothPaths(run);
+          INFO("n " << n << " mu " << mu << " r " << r);
+          CHECK(on.second == off.second);
+          for (int e = 0; e < n; ++e) CHECK(SameBits(on.first[e], off.first[e]));
+          ++compared;
+        }
+  }
+  SECTION("the BTDF pair's columns of 1, 2, 7, 8, 9 and 40 etas") {
+    std::vector<double> etas;
+    for (int k = 0; k < 40; ++k) etas.push_back(1.1 + 1.9 * (k / 39.0) * (k / 39.0));
+    for (int n : {1, 2, 7, 8, 9, 40})
+      for (double mu : kMus)
+        for (double r : kRoughness) {
+          const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+          const int first = n == 40 ? 0 : (40 - n) / 2;
+          auto run = [&] {
+            std::vector<std::array<double, 2>> col(n);
+            long long evals = 0;
+            FixedRuleDielectricBtdfColumn(mu, alpha, etas.data() + first, n,
+                                          TunedDielectricBtdfRuleOptions(), col.data(), &evals);
             return std::make_pair(col, evals);
           };
           const auto [on, off] = BothPaths(run);

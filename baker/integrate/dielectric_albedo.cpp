@@ -95,6 +95,9 @@ namespace kiln {
 namespace {
 
 constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
+static_assert(dielectric_simd::kMaxRingNodes >=
+                  (dielectric_walk::kMaxPhiBreaks - 1) * kMaxCachedGaussNodes,
+              "a ring's nodes must fit the AVX-512F paths' buffer");
 
 /// The view and interface: what every evaluation needs.
 struct View {
@@ -384,19 +387,6 @@ struct EtaConsts {
   int n;  ///< the column's etas (the AVX-512F path pads to a multiple of 8 with the last)
 };
 
-/// One ring's nodes and the AVX-512F path's per-node arrays (dielectric_simd.h).
-static_assert(dielectric_simd::kMaxRingNodes >=
-                  (dielectric_walk::kMaxPhiBreaks - 1) * kMaxCachedGaussNodes,
-              "a ring's nodes must fit the AVX-512F path's buffer");
-struct RingBuffer {
-  int J = 0;
-  double phi[dielectric_simd::kMaxRingNodes], w[dielectric_simd::kMaxRingNodes];
-  double wR[dielectric_simd::kMaxRingNodes], wb[dielectric_simd::kMaxRingNodes],
-      cc[dielectric_simd::kMaxRingNodes], tR[dielectric_simd::kMaxRingNodes],
-      tT[dielectric_simd::kMaxRingNodes];
-  unsigned char valid[dielectric_simd::kMaxRingNodes];
-};
-
 /// The fixed rule's walk for a column of etas >= kDielectricTableEtaMin at once: the panels of
 /// view v (made at eta = kDielectricTableEtaMin: on the entering side they depend on eta only
 /// through the Fresnel layer's thresholds, fixed here at that eta's), and at every node the
@@ -417,7 +407,7 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
     Pair cosM = Splat(0);
     // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
     const bool simd = dielectric_simd::Enabled();
-    RingBuffer* buf = nullptr;
+    dielectric_simd::RingBuffer* buf = nullptr;
     PolarParam ring{};
     void BeginRing(const PolarParam& h) {
       if (simd) {
@@ -472,7 +462,7 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
     // at a time (a column of eight or more), or one eta and eight nodes at a time (fewer), each
     // eta's terms added in the nodes' order.
     void SimdRing(double wo) {
-      RingBuffer& b = *buf;
+      dielectric_simd::RingBuffer& b = *buf;
       const int J = b.J, n = ks.n;
       if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
       const dielectric_simd::ColumnRing r{
@@ -503,7 +493,7 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
     }
     double total0[kMaxDielectricColumn] = {}, total1[kMaxDielectricColumn] = {};
   } s{v, ks, ks.pairs};
-  RingBuffer buffer;
+  dielectric_simd::RingBuffer buffer;
   s.buf = &buffer;
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
   if (s.simd)
@@ -521,7 +511,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   if (!dielectric_simd::Enabled()) return dielectric_walk::FixedWalk(v, rule, evals);
   struct Sum {
     const FastView& v;
-    RingBuffer& b;
+    dielectric_simd::RingBuffer& b;
     PolarParam ring{};
     Channels<2> sum{0, 0};
     void BeginRing(const PolarParam& h) {
@@ -557,7 +547,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
       sum += wo * circle;
     }
   };
-  RingBuffer buffer;
+  dielectric_simd::RingBuffer buffer;
   Sum s{v, buffer};
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
   if (evals) *evals += count;

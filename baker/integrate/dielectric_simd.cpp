@@ -211,6 +211,78 @@ KILN_AVX512 void ColumnRingOneEta(const ColumnRing& r, const unsigned char*, con
   }
 }
 
+KILN_AVX512 void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                                unsigned char* valid, double* wb, double* cc) {
+  const V zero = _mm512_setzero_pd(), one = Set(1);
+  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
+    const M ok = Gt(c, zero) & k;
+    const V wbs = Mul(_mm512_maskz_loadu_pd(k, w + j), Div(c, cosM));
+    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, wbs));
+    _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
+    for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
+  }
+}
+
+/// BtdfColumnWalk's per-eta terms at cos cc (c2 = cc^2) and weight wb: t and F.
+KILN_AVX512 inline V BtdfTerm(V c, V wbv, V e2m1, V e2, V ie, V e2p1, V e2m1sq, V cosM, V mu,
+                              V gDen, V a2, V* F) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V c2 = Mul(c, c);
+  const V g = Sqrt(Add(c2, e2m1));
+  // BtdfColumnWalk: x = (eta^2 + 1) cc2 - 1 (the E walk's is ((eta^2 + 1) cc) cc - 1).
+  const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(e2p1, c2), one);
+  const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+  *F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+  const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
+  const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
+  const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
+  return Div(Mul(wbv, p), Add(Mul(gDen, p), Mul(mu, a2s2)));
+}
+
+KILN_AVX512 void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
+                              const double* cc, int J, const double* eta2m1, const double* eta2,
+                              const double* inv, int groups, double* ring0, double* ring1) {
+  const V one = Set(1);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  for (int q = 0; q < groups; ++q) {
+    const V e2m1 = _mm512_loadu_pd(eta2m1 + 8 * q), e2 = _mm512_loadu_pd(eta2 + 8 * q),
+            ie = _mm512_loadu_pd(inv + 8 * q), e2p1 = Add(e2, one), e2m1sq = Mul(e2m1, e2m1);
+    V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
+    for (int j = 0; j < J; ++j) {
+      if (!valid[j]) continue;
+      V F;
+      const V t =
+          BtdfTerm(Set(cc[j]), Set(wb[j]), e2m1, e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+      r0 = Add(r0, t);
+      r1 = Add(r1, Mul(t, F));
+    }
+    _mm512_storeu_pd(ring0 + 8 * q, r0);
+    _mm512_storeu_pd(ring1 + 8 * q, r1);
+  }
+}
+
+KILN_AVX512 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J,
+                                double eta2m1, double eta2, double inv, double* t0, double* t1) {
+  const V one = Set(1);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  const V e2m1 = Set(eta2m1), e2 = Set(eta2), ie = Set(inv), e2p1 = Add(e2, one),
+          e2m1sq = Mul(e2m1, e2m1);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    V F;
+    const V t =
+        BtdfTerm(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), _mm512_maskz_loadu_pd(k, wb + j), e2m1,
+                 e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+    _mm512_mask_storeu_pd(t0 + j, k, t);
+    _mm512_mask_storeu_pd(t1 + j, k, Mul(t, F));
+  }
+}
+
 #else  // no AVX-512F path on this target: Enabled() is false, these are never called
 
 void FastRingIntegrand(const FastRing&, const double*, int, double*, double*) {}
@@ -221,6 +293,12 @@ void ColumnRingEtas(const ColumnRing&, const unsigned char*, const double*, cons
                     double*) {}
 void ColumnRingOneEta(const ColumnRing&, const unsigned char*, const double*, const double*,
                       const double*, int, double, double, double, double*, double*) {}
+void BtdfRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
+                    double*) {}
+void BtdfRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*, int,
+                  const double*, const double*, const double*, int, double*, double*) {}
+void BtdfRingOneEta(const ColumnRing&, const double*, const double*, int, double, double, double,
+                    double*, double*) {}
 
 #endif
 

@@ -20,6 +20,15 @@ void SetEnabled(bool on);
 /// kMaxCachedGaussNodes nodes, quadrature.h; dielectric_albedo.cpp checks it).
 constexpr int kMaxRingNodes = 39 * 64;
 
+/// One ring's nodes (phi, w) as the walk visits them, and the AVX-512F paths' per-node arrays.
+struct RingBuffer {
+  int J = 0;
+  double phi[kMaxRingNodes], w[kMaxRingNodes];
+  double wR[kMaxRingNodes], wb[kMaxRingNodes], cc[kMaxRingNodes], tR[kMaxRingNodes],
+      tT[kMaxRingNodes];
+  unsigned char valid[kMaxRingNodes];
+};
+
 /// One ring of the exit side's per-point walk (dielectric_albedo.cpp, FastView): the view's and
 /// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m.
 struct FastRing {
@@ -42,6 +51,9 @@ struct ColumnRing {
 /// where the reflected ray goes down), wb = w c / cos_m, cc = min(c, 1). Needs Enabled().
 void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
                       unsigned char* valid, double* wR, double* wb, double* cc);
+/// The same without wR (the BTDF pair follows the refracted ray only).
+void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                    unsigned char* valid, double* wb, double* cc);
 
 /// The column walk's per-eta terms of one ring, eight etas per instruction: for every valid node
 /// j in order and every eta e < 8 * groups, ring0[e] += wR F, ring1[e] += wb (1 - F) p / (gDen p +
@@ -58,6 +70,17 @@ void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const doubl
 void ColumnRingOneEta(const ColumnRing& r, const unsigned char* valid, const double* wR,
                       const double* wb, const double* cc, int J, double eta2m1, double eta2,
                       double inv, double* tR, double* tT);
+
+/// The BTDF pair's column walk (dielectric_btdf.cpp, BtdfColumnWalk) likewise: per valid node
+/// j in order and eta e < 8 * groups, t = wb p / (gDen p + mu a2 s_t^2), ring0[e] += t,
+/// ring1[e] += t F. Needs Enabled().
+void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
+                  const double* cc, int J, const double* eta2m1, const double* eta2,
+                  const double* inv, int groups, double* ring0, double* ring1);
+/// The same terms for one eta, eight nodes per instruction, into t0[j] = t, t1[j] = t F (0 at
+/// invalid nodes). Needs Enabled().
+void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J, double eta2m1,
+                    double eta2, double inv, double* t0, double* t1);
 
 }  // namespace dielectric_simd
 }  // namespace kiln
