@@ -62,6 +62,14 @@
 // and its masking layer; 4,450 evaluations per point against 7,580, within 3.9e-7 of adaptive on
 // the exit held-out grid, tests/integrate_dielectric_reflectance.cpp) and E_avg_T by reciprocity
 // from the entering side's column (integrate/dielectric_albedo_avg.cpp).
+// Eight lanes (issue #15). Where the CPU has AVX-512F (dielectric_simd.h, checked at run time)
+// both walks keep each ring's nodes and evaluate them at the ring's end: the column walk's shared
+// part eight nodes at a time, its per-eta part eight etas at a time (columns of 8 or more: the
+// bake's) or eight nodes at a time (fewer etas: the search's points), the exit walk's integrand
+// eight nodes at a time; then every eta's terms are summed in the walk's order. Same operations
+// lane by lane, no fused multiply-add: the same bits as the portable path
+// (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass tables (docs/models.md
+// section 16, "The rule's cost").
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
@@ -76,6 +84,7 @@
 
 #include "baker/integrate/dielectric_column_memo.h"
 #include "baker/integrate/dielectric_lanes.h"
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -86,6 +95,9 @@ namespace kiln {
 namespace {
 
 constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
+static_assert(dielectric_simd::kMaxRingNodes >=
+                  (dielectric_walk::kMaxPhiBreaks - 1) * kMaxCachedGaussNodes,
+              "a ring's nodes must fit the AVX-512F paths' buffer");
 
 /// The view and interface: what every evaluation needs.
 struct View {
@@ -372,6 +384,7 @@ using namespace dielectric_lanes;  // Pair: two etas per lane pair
 struct EtaConsts {
   double eta2m1[kMaxDielectricColumn], eta2[kMaxDielectricColumn], inv[kMaxDielectricColumn];
   int pairs;
+  int n;  ///< the column's etas (the AVX-512F path pads to a multiple of 8 with the last)
 };
 
 /// The fixed rule's walk for a column of etas >= kDielectricTableEtaMin at once: the panels of
@@ -392,11 +405,25 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
                gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
     dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
+    // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
+    const bool simd = dielectric_simd::Enabled();
+    dielectric_simd::RingBuffer* buf = nullptr;
+    PolarParam ring{};
     void BeginRing(const PolarParam& h) {
+      if (simd) {
+        buf->J = 0;
+        ring = h;
+        return;
+      }
       sums.ClearRing();
       cosM = Splat(h.cosTheta);
     }
     void Node(const PolarParam& h, double phi, double w) {
+      if (simd) {
+        buf->phi[buf->J] = phi;
+        buf->w[buf->J++] = w;
+        return;
+      }
       const double c = v.mu * h.cosTheta + v.st * h.sinTheta * dielectric_walk::CosHalfTurn(phi);
       if (!(c > 0) || !(h.cosTheta > 0)) return;
       // The node's weight times c / cos_m, and the reflected ray's masking (shared).
@@ -424,11 +451,107 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
         sums.ring1[e] = sums.ring1[e] + wb * (one - F) * p / (gDen * p + mu * a2s2);
       }
     }
-    void EndRing(double wo) { sums.EndRing(wo); }
+    void EndRing(double wo) {
+      if (simd) {
+        SimdRing(wo);
+        return;
+      }
+      sums.EndRing(wo);
+    }
+    // The same sums by dielectric_simd: the shared part eight nodes at a time, then eight etas
+    // at a time (a column of eight or more), or one eta and eight nodes at a time (fewer), each
+    // eta's terms added in the nodes' order.
+    void SimdRing(double wo) {
+      dielectric_simd::RingBuffer& b = *buf;
+      const int J = b.J, n = ks.n;
+      if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
+      const dielectric_simd::ColumnRing r{
+          v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
+          Sqr(v.dist.alpha)};
+      dielectric_simd::ColumnRingShared(r, b.phi, b.w, J, b.valid, b.wR, b.wb, b.cc);
+      double ring0[kMaxDielectricColumn] = {}, ring1[kMaxDielectricColumn] = {};
+      if (n >= 8) {
+        dielectric_simd::ColumnRingEtas(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1, ks.eta2, ks.inv,
+                                        (n + 7) / 8, ring0, ring1);
+      } else {
+        for (int e = 0; e < n; ++e) {
+          dielectric_simd::ColumnRingOneEta(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1[e],
+                                            ks.eta2[e], ks.inv[e], b.tR, b.tT);
+          double s0 = 0, s1 = 0;
+          for (int j = 0; j < J; ++j) {
+            s0 = s0 + b.tR[j];
+            s1 = s1 + b.tT[j];
+          }
+          ring0[e] = s0;
+          ring1[e] = s1;
+        }
+      }
+      for (int e = 0; e < n; ++e) {
+        total0[e] = total0[e] + wo * ring0[e];
+        total1[e] = total1[e] + wo * ring1[e];
+      }
+    }
+    double total0[kMaxDielectricColumn] = {}, total1[kMaxDielectricColumn] = {};
   } s{v, ks, ks.pairs};
+  dielectric_simd::RingBuffer buffer;
+  s.buf = &buffer;
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
-  s.sums.Write(out);
+  if (s.simd)
+    for (int e = 0; e < ks.n; ++e) out[e] = {s.total0[e], s.total1[e]};
+  else
+    s.sums.Write(out);
   if (evals) *evals += count;
+}
+
+/// dielectric_walk::FixedWalk of a FastView (the exit side's per-point walk), by
+/// dielectric_simd's eight nodes at a time where it runs: the ring's integrand values first, then
+/// summed in the walk's order (the bits FixedWalk gives).
+Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule,
+                     long long* evals) {
+  if (!dielectric_simd::Enabled()) return dielectric_walk::FixedWalk(v, rule, evals);
+  struct Sum {
+    const FastView& v;
+    dielectric_simd::RingBuffer& b;
+    PolarParam ring{};
+    Channels<2> sum{0, 0};
+    void BeginRing(const PolarParam& h) {
+      b.J = 0;
+      ring = h;
+    }
+    void Node(const PolarParam&, double phi, double w) {
+      b.phi[b.J] = phi;
+      b.w[b.J++] = w;
+    }
+    void EndRing(double wo) {
+      const int J = b.J;
+      if (ring.cosTheta > 0) {
+        const dielectric_simd::FastRing r{v.mu * ring.cosTheta,
+                                          v.st * ring.sinTheta,
+                                          ring.cosTheta,
+                                          v.mu,
+                                          v.eta,
+                                          v.eta2,
+                                          v.eta2m1,
+                                          v.a2,
+                                          v.gDen,
+                                          v.reflectOnly};
+        dielectric_simd::FastRingIntegrand(r, b.phi, J, b.tR, b.tT);
+      } else {
+        for (int j = 0; j < J; ++j) b.tR[j] = b.tT[j] = 0;
+      }
+      Channels<2> circle{0, 0};
+      for (int j = 0; j < J; ++j) {
+        circle[0] += b.w[j] * b.tR[j];
+        circle[1] += b.w[j] * b.tT[j];
+      }
+      sum += wo * circle;
+    }
+  };
+  dielectric_simd::RingBuffer buffer;
+  Sum s{v, buffer};
+  const long long count = dielectric_walk::WalkNodes(v, rule, s);
+  if (evals) *evals += count;
+  return s.sum;
 }
 
 void CheckColumn(const double* etas, int n) {
@@ -450,7 +573,8 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
   View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
   EtaConsts ks;
   ks.pairs = (n + 1) / 2;
-  for (int e = 0; e < 2 * ks.pairs; ++e) {
+  ks.n = n;
+  for (int e = 0; e < kMaxDielectricColumn; ++e) {
     const double eta = etas[std::min(e, n - 1)];
     ks.eta2m1[e] = (eta - 1) * (eta + 1);
     ks.eta2[e] = eta * eta;
@@ -485,7 +609,7 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
     return e;
   }
   FastView v = MakeFastView(mu, alpha, eta, opt);
-  const Channels<2> r = dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals);
+  const Channels<2> r = FastWalk(v, dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};
 }
 
@@ -493,7 +617,7 @@ double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
                                       const DielectricRuleOptions& opt, long long* evals) {
   FastView v = MakeFastView(mu, alpha, eta, opt);
   v.reflectOnly = true;
-  return dielectric_walk::FixedWalk(v, dielectric_walk::ClassesOf(opt), evals)[0];
+  return FastWalk(v, dielectric_walk::ClassesOf(opt), evals)[0];
 }
 
 namespace {

@@ -50,6 +50,7 @@
 
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_lanes.h"
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -179,6 +180,7 @@ using namespace dielectric_lanes;  // Pair: two etas per lane pair
 struct BtdfEtaConsts {
   double eta2m1[kMaxDielectricColumn], eta2[kMaxDielectricColumn], inv[kMaxDielectricColumn];
   int pairs;
+  int n;  ///< the column's etas (the AVX-512F path pads to a multiple of 8 with the last)
 };
 
 /// The fixed rule's walk for a column of etas >= kDielectricTableEtaMin at once: the panels of
@@ -199,11 +201,26 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
                gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
     dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
+    // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
+    const bool simd = dielectric_simd::Enabled();
+    dielectric_simd::RingBuffer* buf = nullptr;
+    PolarParam ring{};
+    double total0[kMaxDielectricColumn] = {}, total1[kMaxDielectricColumn] = {};
     void BeginRing(const PolarParam& h) {
+      if (simd) {
+        buf->J = 0;
+        ring = h;
+        return;
+      }
       sums.ClearRing();
       cosM = Splat(h.cosTheta);
     }
     void Node(const PolarParam& h, double phi, double w) {
+      if (simd) {
+        buf->phi[buf->J] = phi;
+        buf->w[buf->J++] = w;
+        return;
+      }
       const double c = v.mu * h.cosTheta + v.st * h.sinTheta * dielectric_walk::CosHalfTurn(phi);
       if (!(c > 0) || !(h.cosTheta > 0)) return;
       const Pair wb = Splat(w * (c / h.cosTheta));
@@ -228,10 +245,54 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
         sums.ring1[e] = sums.ring1[e] + t * F;
       }
     }
-    void EndRing(double wo) { sums.EndRing(wo); }
+    void EndRing(double wo) {
+      if (simd) {
+        SimdRing(wo);
+        return;
+      }
+      sums.EndRing(wo);
+    }
+    // The same sums by dielectric_simd: the shared part eight nodes at a time, then eight etas
+    // at a time (a column of eight or more) or one eta and eight nodes at a time (fewer), each
+    // eta's terms added in the nodes' order.
+    void SimdRing(double wo) {
+      dielectric_simd::RingBuffer& b = *buf;
+      const int J = b.J, n = ks.n;
+      if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
+      const dielectric_simd::ColumnRing r{
+          v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
+          Sqr(v.dist.alpha)};
+      dielectric_simd::BtdfRingShared(r, b.phi, b.w, J, b.valid, b.wb, b.cc);
+      double ring0[kMaxDielectricColumn] = {}, ring1[kMaxDielectricColumn] = {};
+      if (n >= 8) {
+        dielectric_simd::BtdfRingEtas(r, b.valid, b.wb, b.cc, J, ks.eta2m1, ks.eta2, ks.inv,
+                                      (n + 7) / 8, ring0, ring1);
+      } else {
+        for (int e = 0; e < n; ++e) {
+          dielectric_simd::BtdfRingOneEta(r, b.wb, b.cc, J, ks.eta2m1[e], ks.eta2[e], ks.inv[e],
+                                          b.tR, b.tT);
+          double s0 = 0, s1 = 0;
+          for (int j = 0; j < J; ++j) {
+            s0 = s0 + b.tR[j];
+            s1 = s1 + b.tT[j];
+          }
+          ring0[e] = s0;
+          ring1[e] = s1;
+        }
+      }
+      for (int e = 0; e < n; ++e) {
+        total0[e] = total0[e] + wo * ring0[e];
+        total1[e] = total1[e] + wo * ring1[e];
+      }
+    }
   } s{v, ks, ks.pairs};
+  dielectric_simd::RingBuffer buffer;
+  s.buf = &buffer;
   const long long count = dielectric_walk::WalkNodes(v, rule, s);
-  s.sums.Write(out);
+  if (s.simd)
+    for (int e = 0; e < ks.n; ++e) out[e] = {s.total0[e], s.total1[e]};
+  else
+    s.sums.Write(out);
   if (evals) *evals += count;
 }
 
@@ -262,7 +323,8 @@ void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, 
   const BtdfView v = MakeBtdfView(mu, alpha, kDielectricTableEtaMin);
   BtdfEtaConsts ks;
   ks.pairs = (n + 1) / 2;
-  for (int e = 0; e < 2 * ks.pairs; ++e) {
+  ks.n = n;
+  for (int e = 0; e < kMaxDielectricColumn; ++e) {
     const double eta = etas[std::min(e, n - 1)];
     ks.eta2m1[e] = (eta - 1) * (eta + 1);
     ks.eta2[e] = eta * eta;

@@ -1,0 +1,306 @@
+// The glass walks' AVX-512F paths (dielectric_simd.h). Each function mirrors, operation for
+// operation and in the same order, the portable code it stands for in dielectric_albedo.cpp
+// (FastView::Integrand, ColumnWalk's node): std::min(a, b) is (b < a ? b : a), which
+// MINPD(b, a) computes ((b < a) ? b : a), likewise max; a branch becomes a mask and a
+// select. Compiled for AVX-512F only (no FMA: no contraction of a * b + c), so every lane's
+// result has the portable code's bits.
+#include "baker/integrate/dielectric_simd.h"
+
+#include <atomic>
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define KILN_HAVE_AVX512_PATH 1
+#define KILN_AVX512 __attribute__((target("avx512f")))
+#endif
+
+namespace kiln {
+namespace dielectric_simd {
+namespace {
+
+bool CpuHasAvx512() {
+#if defined(KILN_HAVE_AVX512_PATH)
+  return __builtin_cpu_supports("avx512f");
+#else
+  return false;
+#endif
+}
+
+std::atomic<bool>& Switch() {
+  static std::atomic<bool> on{CpuHasAvx512()};
+  return on;
+}
+
+}  // namespace
+
+bool Enabled() { return Switch().load(std::memory_order_relaxed); }
+void SetEnabled(bool on) { Switch().store(on && CpuHasAvx512()); }
+
+#if defined(KILN_HAVE_AVX512_PATH)
+namespace {
+
+using V = __m512d;
+using M = __mmask8;
+
+KILN_AVX512 inline V Set(double x) { return _mm512_set1_pd(x); }
+KILN_AVX512 inline V Add(V a, V b) { return _mm512_add_pd(a, b); }
+KILN_AVX512 inline V Sub(V a, V b) { return _mm512_sub_pd(a, b); }
+KILN_AVX512 inline V Mul(V a, V b) { return _mm512_mul_pd(a, b); }
+KILN_AVX512 inline V Div(V a, V b) { return _mm512_div_pd(a, b); }
+// _mm512_sqrt_pd, _mm512_min_pd and _mm512_max_pd with every lane's mask bit set (GCC 12's
+// unmasked forms start from _mm512_undefined_pd, which -Wmaybe-uninitialized flags).
+KILN_AVX512 inline V Sqrt(V a) { return _mm512_maskz_sqrt_pd(0xFF, a); }
+/// MINPD: (a < b) ? a : b; MAXPD: (a > b) ? a : b.
+KILN_AVX512 inline V Min(V a, V b) { return _mm512_maskz_min_pd(0xFF, a, b); }
+KILN_AVX512 inline V Max(V a, V b) { return _mm512_maskz_max_pd(0xFF, a, b); }
+KILN_AVX512 inline M Gt(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_GT_OQ); }
+KILN_AVX512 inline M Lt(V a, V b) { return _mm512_cmp_pd_mask(a, b, _CMP_LT_OQ); }
+/// std::min(a, b) = (b < a) ? b : a.
+KILN_AVX512 inline V StdMin(V a, V b) { return Min(b, a); }
+/// std::max(a, b) = (a < b) ? b : a, i.e. (b > a) ? b : a.
+KILN_AVX512 inline V StdMax(V a, V b) { return Max(b, a); }
+/// -x exactly (the sign bit flipped).
+KILN_AVX512 inline V Neg(V x) {
+  return _mm512_castsi512_pd(_mm512_xor_si512(
+      _mm512_castpd_si512(x), _mm512_set1_epi64(static_cast<long long>(1ull << 63))));
+}
+
+/// dielectric_walk::CosHalfTurn, lane by lane.
+KILN_AVX512 inline V CosHalfTurn8(V phi) {
+  const V x = Sub(phi, Set(1.5707963267948966)), x2 = Mul(x, x);
+  V p = Set(1.9572941063391263e-20);
+  p = Sub(Mul(p, x2), Set(8.2206352466243295e-18));
+  p = Add(Mul(p, x2), Set(2.8114572543455206e-15));
+  p = Sub(Mul(p, x2), Set(7.6471637318198164e-13));
+  p = Add(Mul(p, x2), Set(1.6059043836821613e-10));
+  p = Sub(Mul(p, x2), Set(2.505210838544172e-08));
+  p = Add(Mul(p, x2), Set(2.7557319223985893e-06));
+  p = Sub(Mul(p, x2), Set(0.00019841269841269841));
+  p = Add(Mul(p, x2), Set(0.0083333333333333332));
+  p = Sub(Mul(p, x2), Set(0.16666666666666666));
+  p = Add(Mul(p, x2), Set(1));
+  return Mul(Neg(x), p);
+}
+
+/// FastView's weigh(mi, w): base w p / (gDen p + mu a2 s^2).
+KILN_AVX512 inline V Weigh(V base, V mi, V w, V a2, V gDen, V mu) {
+  const V one = Set(1), zero = _mm512_setzero_pd();
+  const V a2s2 = Mul(a2, StdMax(zero, Mul(Sub(one, mi), Add(one, mi))));
+  const V p = Mul(Mul(Set(2), mi), Add(Sqrt(Add(Mul(mi, mi), a2s2)), mi));
+  return Div(Mul(Mul(base, w), p), Add(Mul(gDen, p), Mul(mu, a2s2)));
+}
+
+}  // namespace
+
+KILN_AVX512 void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR,
+                                   double* outT) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM), mu = Set(r.mu), eta = Set(r.eta),
+          eta2 = Set(r.eta2), eta2m1 = Set(r.eta2m1), a2 = Set(r.a2), gDen = Set(r.gDen),
+          e2m1sq = Set(r.eta2m1 * r.eta2m1);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
+    const M ok = Gt(c, zero) & k;
+    const V base = Div(c, cosM), cc = StdMin(c, one);
+    const V g2 = Add(Mul(cc, cc), eta2m1);
+    const M gok = Gt(g2, zero);
+    const V g = _mm512_mask_sqrt_pd(zero, gok, g2);
+    const V a = Add(cc, g), b = Add(Mul(eta2, cc), g);
+    const V aa = Mul(a, a), bb = Mul(b, b);
+    const V x = Sub(Mul(Mul(Add(eta2, one), cc), cc), one);
+    const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+    const V Fv = StdMin(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+    const V F = _mm512_mask_blend_pd(gok, one, Fv);
+    const V muR = Sub(Mul(Mul(two, c), cosM), mu);
+    // Each ray's term only where some lane has it (under total internal reflection none
+    // transmits; past the reflected horizon none reflects).
+    const M rok = ok & Gt(muR, zero) & Gt(F, zero);
+    _mm512_mask_storeu_pd(outR + j, k,
+                          rok ? _mm512_maskz_mov_pd(rok, Weigh(base, muR, F, a2, gDen, mu)) : zero);
+    M tok = 0;
+    V muT = zero;
+    if (!r.reflectOnly) {
+      muT = Div(Sub(mu, Mul(Sub(cc, g), cosM)), eta);
+      tok = ok & Lt(F, one) & Gt(muT, zero);
+    }
+    _mm512_mask_storeu_pd(
+        outT + j, k,
+        tok ? _mm512_maskz_mov_pd(tok, Weigh(base, muT, Sub(one, F), a2, gDen, mu)) : zero);
+  }
+}
+
+KILN_AVX512 void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                                  unsigned char* valid, double* wR, double* wb, double* cc) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen),
+          a2 = Set(r.a2);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
+    const M ok = Gt(c, zero) & k;
+    const V wbs = Mul(_mm512_maskz_loadu_pd(k, w + j), Div(c, cosM));
+    const V muR = Sub(Mul(Mul(two, c), cosM), mu);
+    // GGXDistribution::MuLambda(muR).
+    const V s2 = StdMax(zero, Sub(one, Mul(muR, muR)));
+    const V den = Mul(two, Add(Sqrt(Add(Mul(muR, muR), Mul(a2, s2))), muR));
+    const V ml = _mm512_maskz_mov_pd(Gt(den, zero), Div(Mul(a2, s2), den));
+    const V wr = Div(wbs, Add(gDen, Mul(mu, Div(ml, muR))));
+    // Nodes not visited: zero weights and a benign cc (their terms are then exactly 0).
+    _mm512_mask_storeu_pd(wR + j, k, _mm512_maskz_mov_pd(ok & Gt(muR, zero), wr));
+    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, wbs));
+    _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
+    for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
+  }
+}
+
+KILN_AVX512 void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
+                                const double* wb, const double* cc, int J, const double* eta2m1,
+                                const double* eta2, const double* inv, int groups, double* ring0,
+                                double* ring1) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  for (int q = 0; q < groups; ++q) {
+    const V e2m1 = _mm512_loadu_pd(eta2m1 + 8 * q), e2 = _mm512_loadu_pd(eta2 + 8 * q),
+            ie = _mm512_loadu_pd(inv + 8 * q), e2p1 = Add(e2, one), e2m1sq = Mul(e2m1, e2m1);
+    V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
+    for (int j = 0; j < J; ++j) {
+      if (!valid[j]) continue;
+      const V c = Set(cc[j]), c2 = Mul(c, c);
+      const V g = Sqrt(Add(c2, e2m1));
+      const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(Mul(e2p1, c), c), one);
+      const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+      // Min(one, X) of dielectric_lanes.h is _mm_min_pd(one, X): (1 < X) ? 1 : X.
+      const V F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+      r0 = Add(r0, Mul(Set(wR[j]), F));
+      const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
+      // Max(zero, X) is _mm_max_pd(zero, X): (0 > X) ? 0 : X.
+      const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
+      const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
+      r1 = Add(r1, Div(Mul(Mul(Set(wb[j]), Sub(one, F)), p), Add(Mul(gDen, p), Mul(mu, a2s2))));
+    }
+    _mm512_storeu_pd(ring0 + 8 * q, r0);
+    _mm512_storeu_pd(ring1 + 8 * q, r1);
+  }
+}
+
+KILN_AVX512 void ColumnRingOneEta(const ColumnRing& r, const unsigned char*, const double* wR,
+                                  const double* wb, const double* cc, int J, double eta2m1,
+                                  double eta2, double inv, double* tR, double* tT) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  const V e2m1 = Set(eta2m1), e2 = Set(eta2), ie = Set(inv), e2p1 = Add(e2, one),
+          e2m1sq = Mul(e2m1, e2m1);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    const V c = _mm512_mask_loadu_pd(Set(0.5), k, cc + j), c2 = Mul(c, c);
+    const V g = Sqrt(Add(c2, e2m1));
+    const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(Mul(e2p1, c), c), one);
+    const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+    const V F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+    _mm512_mask_storeu_pd(tR + j, k, Mul(_mm512_maskz_loadu_pd(k, wR + j), F));
+    const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
+    const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
+    const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
+    _mm512_mask_storeu_pd(tT + j, k,
+                          Div(Mul(Mul(_mm512_maskz_loadu_pd(k, wb + j), Sub(one, F)), p),
+                              Add(Mul(gDen, p), Mul(mu, a2s2))));
+  }
+}
+
+KILN_AVX512 void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                                unsigned char* valid, double* wb, double* cc) {
+  const V zero = _mm512_setzero_pd(), one = Set(1);
+  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
+    const M ok = Gt(c, zero) & k;
+    const V wbs = Mul(_mm512_maskz_loadu_pd(k, w + j), Div(c, cosM));
+    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, wbs));
+    _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
+    for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
+  }
+}
+
+/// BtdfColumnWalk's per-eta terms at cos cc (c2 = cc^2) and weight wb: t and F.
+KILN_AVX512 inline V BtdfTerm(V c, V wbv, V e2m1, V e2, V ie, V e2p1, V e2m1sq, V cosM, V mu,
+                              V gDen, V a2, V* F) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  const V c2 = Mul(c, c);
+  const V g = Sqrt(Add(c2, e2m1));
+  // BtdfColumnWalk: x = (eta^2 + 1) cc2 - 1 (the E walk's is ((eta^2 + 1) cc) cc - 1).
+  const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(e2p1, c2), one);
+  const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+  *F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+  const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
+  const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
+  const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
+  return Div(Mul(wbv, p), Add(Mul(gDen, p), Mul(mu, a2s2)));
+}
+
+KILN_AVX512 void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
+                              const double* cc, int J, const double* eta2m1, const double* eta2,
+                              const double* inv, int groups, double* ring0, double* ring1) {
+  const V one = Set(1);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  for (int q = 0; q < groups; ++q) {
+    const V e2m1 = _mm512_loadu_pd(eta2m1 + 8 * q), e2 = _mm512_loadu_pd(eta2 + 8 * q),
+            ie = _mm512_loadu_pd(inv + 8 * q), e2p1 = Add(e2, one), e2m1sq = Mul(e2m1, e2m1);
+    V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
+    for (int j = 0; j < J; ++j) {
+      if (!valid[j]) continue;
+      V F;
+      const V t =
+          BtdfTerm(Set(cc[j]), Set(wb[j]), e2m1, e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+      r0 = Add(r0, t);
+      r1 = Add(r1, Mul(t, F));
+    }
+    _mm512_storeu_pd(ring0 + 8 * q, r0);
+    _mm512_storeu_pd(ring1 + 8 * q, r1);
+  }
+}
+
+KILN_AVX512 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J,
+                                double eta2m1, double eta2, double inv, double* t0, double* t1) {
+  const V one = Set(1);
+  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  const V e2m1 = Set(eta2m1), e2 = Set(eta2), ie = Set(inv), e2p1 = Add(e2, one),
+          e2m1sq = Mul(e2m1, e2m1);
+  for (int j = 0; j < J; j += 8) {
+    const int m = J - j < 8 ? J - j : 8;
+    const M k = static_cast<M>((1u << m) - 1);
+    V F;
+    const V t =
+        BtdfTerm(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), _mm512_maskz_loadu_pd(k, wb + j), e2m1,
+                 e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+    _mm512_mask_storeu_pd(t0 + j, k, t);
+    _mm512_mask_storeu_pd(t1 + j, k, Mul(t, F));
+  }
+}
+
+#else  // no AVX-512F path on this target: Enabled() is false, these are never called
+
+void FastRingIntegrand(const FastRing&, const double*, int, double*, double*) {}
+void ColumnRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
+                      double*, double*) {}
+void ColumnRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*,
+                    const double*, int, const double*, const double*, const double*, int, double*,
+                    double*) {}
+void ColumnRingOneEta(const ColumnRing&, const unsigned char*, const double*, const double*,
+                      const double*, int, double, double, double, double*, double*) {}
+void BtdfRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
+                    double*) {}
+void BtdfRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*, int,
+                  const double*, const double*, const double*, int, double*, double*) {}
+void BtdfRingOneEta(const ColumnRing&, const double*, const double*, int, double, double, double,
+                    double*, double*) {}
+
+#endif
+
+}  // namespace dielectric_simd
+}  // namespace kiln

@@ -1,0 +1,86 @@
+// Eight doubles per instruction for the glass rules' fixed walks (integrate/dielectric_albedo.cpp:
+// the E tables' eta columns and the exit side's per-point walk), where the CPU has AVX-512F
+// (checked at run time; the portable code of dielectric_albedo.cpp runs elsewhere). Every lane
+// does the portable code's IEEE operations (add, mul, div, sqrt correctly rounded; min, max and
+// the branches as selects with the same operand order; no fused multiply-add: the functions are
+// compiled for AVX-512F without FMA) in the same order, and the caller sums the lanes' terms in
+// the walk's order: the same bits on either path (tests/integrate_dielectric_simd.cpp).
+#pragma once
+
+namespace kiln {
+namespace dielectric_simd {
+
+/// True where the AVX-512F paths run: the CPU has AVX-512F and SetEnabled(false) was not called.
+bool Enabled();
+/// Turns the AVX-512F paths off (false) or back on where the CPU has them (tests compare the
+/// two paths' bits).
+void SetEnabled(bool on);
+
+/// Most azimuth nodes of one ring (dielectric_walk.h: kMaxPhiBreaks - 1 panels of at most
+/// kMaxCachedGaussNodes nodes, quadrature.h; dielectric_albedo.cpp checks it).
+constexpr int kMaxRingNodes = 39 * 64;
+
+/// One ring's nodes (phi, w) as the walk visits them, and the AVX-512F paths' per-node arrays.
+struct RingBuffer {
+  int J = 0;
+  double phi[kMaxRingNodes], w[kMaxRingNodes];
+  double wR[kMaxRingNodes], wb[kMaxRingNodes], cc[kMaxRingNodes], tR[kMaxRingNodes],
+      tT[kMaxRingNodes];
+  unsigned char valid[kMaxRingNodes];
+};
+
+/// One ring of the exit side's per-point walk (dielectric_albedo.cpp, FastView): the view's and
+/// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m.
+struct FastRing {
+  double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
+  bool reflectOnly;
+};
+
+/// FastView::Integrand {R, T} at the J azimuths phi[0 .. J-1] of ring r (cos phi by
+/// dielectric_walk::CosHalfTurn), into outR, outT. Needs Enabled().
+void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR, double* outT);
+
+/// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
+/// and the ring's constants (cosM > 0).
+struct ColumnRing {
+  double A, B, cosM, mu, gDen, a2;
+};
+
+/// The column walk's per-node shared part at the J nodes (phi, w) of ring r: c > 0 marks the
+/// node visited (valid[j] = 1, else 0 and the rest unset), wR the reflected term's weight (0
+/// where the reflected ray goes down), wb = w c / cos_m, cc = min(c, 1). Needs Enabled().
+void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                      unsigned char* valid, double* wR, double* wb, double* cc);
+/// The same without wR (the BTDF pair follows the refracted ray only).
+void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
+                    unsigned char* valid, double* wb, double* cc);
+
+/// The column walk's per-eta terms of one ring, eight etas per instruction: for every valid node
+/// j in order and every eta e < 8 * groups, ring0[e] += wR F, ring1[e] += wb (1 - F) p / (gDen p +
+/// mu a2 s_t^2) (ColumnWalk's expressions). eta2m1, eta2, inv: 8 * groups entries each.
+/// Needs Enabled().
+void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
+                    const double* wb, const double* cc, int J, const double* eta2m1,
+                    const double* eta2, const double* inv, int groups, double* ring0,
+                    double* ring1);
+
+/// The same terms for one eta at every node of the ring, eight nodes per instruction (a column of
+/// one: the lookup-error search's points), into tR[j], tT[j] (0 at invalid nodes). Needs
+/// Enabled().
+void ColumnRingOneEta(const ColumnRing& r, const unsigned char* valid, const double* wR,
+                      const double* wb, const double* cc, int J, double eta2m1, double eta2,
+                      double inv, double* tR, double* tT);
+
+/// The BTDF pair's column walk (dielectric_btdf.cpp, BtdfColumnWalk) likewise: per valid node
+/// j in order and eta e < 8 * groups, t = wb p / (gDen p + mu a2 s_t^2), ring0[e] += t,
+/// ring1[e] += t F. Needs Enabled().
+void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
+                  const double* cc, int J, const double* eta2m1, const double* eta2,
+                  const double* inv, int groups, double* ring0, double* ring1);
+/// The same terms for one eta, eight nodes per instruction, into t0[j] = t, t1[j] = t F (0 at
+/// invalid nodes). Needs Enabled().
+void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J, double eta2m1,
+                    double eta2, double inv, double* t0, double* t1);
+
+}  // namespace dielectric_simd
+}  // namespace kiln
