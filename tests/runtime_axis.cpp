@@ -15,8 +15,8 @@ namespace {
 using kiln::Axis;
 using kiln::Warp;
 
-const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt,  Warp::Square,
-                          Warp::Log,    Warp::Root4, Warp::Angle};
+const Warp kAllWarps[] = {Warp::Linear, Warp::Sqrt,  Warp::Square, Warp::Log,
+                          Warp::Root4,  Warp::Angle, Warp::Arcsine};
 
 /// Axes exercising every warp over a few ranges and sizes.
 std::vector<Axis> sampleAxes() {
@@ -53,9 +53,12 @@ double inverseWarp(const Axis& a, double t) {
     case Warp::LayerEta:
     case Warp::Root4LayerSplit:
     case Warp::Root4LayerAngle:
+    case Warp::Root4LayerSplit2:
       break;  // read another axis: tested on their own (below, runtime_layer_warps.cpp)
     case Warp::Angle:
       return a.lo + (a.hi - a.lo) * std::sin(t * M_PI / 2);
+    case Warp::Arcsine:
+      return a.lo + (a.hi - a.lo) * std::pow(std::sin(t * M_PI / 2), 2.0);
   }
   return 0.0;
 }

@@ -122,6 +122,10 @@ std::string warpEnumerator(Warp warp) {
       return "kiln::Warp::Root4LayerSplit";
     case Warp::Root4LayerAngle:
       return "kiln::Warp::Root4LayerAngle";
+    case Warp::Root4LayerSplit2:
+      return "kiln::Warp::Root4LayerSplit2";
+    case Warp::Arcsine:
+      return "kiln::Warp::Arcsine";
     case Warp::Log:
       return "kiln::Warp::Log";
   }

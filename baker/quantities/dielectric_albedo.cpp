@@ -46,9 +46,12 @@ constexpr double kEtaMin = kDielectricTableEtaMin;
 
 /// The eta axis of a side: entering [1.1, 3], 40 nodes denser near its start (sqrt warp: the
 /// Fresnel layer of width sqrt(eta^2 - 1) at grazing; eta nodes are the cheap ones, the
-/// (mu, roughness) pairs are what a bake costs), exit [1/3, 1/1.1] linear, 24 nodes.
+/// (mu, roughness) pairs are what a bake costs), exit [1/3, 1/1.1] angle, 41 nodes (denser
+/// towards 1/1.1, where E bends most in eta'; node 18 lies 1.5e-4 from eta' = 1 / sqrt 2, where
+/// the exit mu warp's two breaks cross and its node positions have a kink in eta').
+/// docs/models.md section 16, "The exit pair below 1e-3".
 AxisSpec EtaAxis(bool exit) {
-  return exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 24, Warp::Linear}
+  return exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 41, Warp::Angle}
               : AxisSpec{"eta", kEtaMin, 3, 40, Warp::Sqrt};
 }
 
@@ -69,16 +72,22 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 /// root4-layer, and mu -> 1 graded in the angle, where E_T has a (1 - mu)^(3/2) point at high
 /// roughness), 80 nodes for both E_R and E_T (E_T's grazing slope C(eta) alpha mu ln(1 / mu)
 /// needs them; one walk over the microfacets gives both at a (mu, roughness) pair, so the
-/// pair shares its grid: docs/models.md section 16); exit, root4-layer-split (49 nodes: the
-/// critical cosine sqrt(1 - eta'^2), where E has the kink of total internal reflection, is the grid
-/// line t = 1/2 in every eta' layer, with nodes crowded on both sides over ~alpha).
+/// pair shares its grid: docs/models.md section 16); exit, root4-layer-split2 (97 nodes: the
+/// critical cosine sqrt(1 - eta'^2), where E has the kink of total internal reflection, and
+/// mu = eta', where E_T has a one-sided point at high roughness (theta_o + theta_c = pi / 2),
+/// are grid lines in every eta' layer, nodes graded on both sides of each).
 AxisSpec MuAxis(const Kind& k) {
-  if (k.exit) return AxisSpec{"mu", 0, 1, 49, Warp::Root4LayerSplit};
+  if (k.exit) return AxisSpec{"mu", 0, 1, 97, Warp::Root4LayerSplit2};
   return AxisSpec{"mu", 0, 1, 80, Warp::Root4LayerAngle};
 }
 
-/// The roughness axis of a kind, sqrt-warped: entering 50 nodes, exit 40.
-AxisSpec RoughnessAxis(const Kind& k) { return {"roughness", 0, 1, k.exit ? 40 : 50, Warp::Sqrt}; }
+/// The roughness axis of a kind: entering 50 nodes sqrt; exit 56 arcsine (dense at both ends:
+/// the exit E bends most near roughness 1, where sqrt is sparse, and the first cell must stay
+/// thin for the grazing layer's corner, which linear is not).
+AxisSpec RoughnessAxis(const Kind& k) {
+  if (k.exit) return {"roughness", 0, 1, 56, Warp::Arcsine};
+  return {"roughness", 0, 1, 50, Warp::Sqrt};
+}
 
 template <Quantity Q>
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
@@ -92,7 +101,8 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
 /// grows (docs/models.md, ggx-dielectric: the forms measured). The exit kinds store E -
 /// dielectricExitClosedForm (StoredForm::DielectricExitResidual): F averaged over GGX's slope
 /// spread follows E across the kink of total internal reflection, which the softened form does
-/// not (declared 1.3e-2 with it, 3.5e-3 / 4.3e-3 with this one; README glass).
+/// not (declared 1.3e-2 with it, 3.5e-3 / 4.3e-3 with this one on the 49 x 40 x 24 grid, 8.1e-4 /
+/// 6.9e-4 on mu 97 root4-layer-split2 x roughness 56 arcsine x eta' 41 angle; README glass).
 template <Quantity Q>
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   const Kind& k = KindOf(Q);
@@ -259,7 +269,8 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;
   // Entering: one walk per eta column, the Fresnel layer's panels at eta = 1.1's (integrate/
-  // dielectric_albedo.cpp); the exit side's rule is unchanged.
+  // dielectric_albedo.cpp); the exit side's rule is unchanged (its grid is not: mu 97
+  // root4-layer-split2 x roughness 56 arcsine x eta' 41 angle).
   q.fixedRuleVersion = KindOf(Q).exit ? "3" : "4";
   if (!KindOf(Q).exit) q.bakeTable = BakeTable;
   q.evaluate = Evaluate;

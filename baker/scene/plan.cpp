@@ -73,11 +73,12 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
   if (axis1Dropped && !axes.empty() && isLayerWarp(spec.axes[0].warp) &&
       axes[0].name == spec.axes[0].name)
     axes[0].warp = Warp::Root4, axes[0].split = std::nan("");
-  // root4-layer-split reads axis 2 too: without it (a single eta), mu takes root4-layer.
+  // root4-layer-split(2) reads axis 2 too: without it (a single eta), mu takes root4-layer.
   const bool axis2Dropped =
       std::any_of(cuts.begin(), cuts.end(), [](const Cut& c) { return c.axis == 2 && c.drop; });
-  if (!axis1Dropped && axis2Dropped && spec.axes[0].warp == Warp::Root4LayerSplit &&
-      !std::isfinite(spec.axes[0].split) && !axes.empty() && axes[0].name == spec.axes[0].name)
+  if (!axis1Dropped && axis2Dropped &&
+      readsAxis2(spec.axes[0].warp, std::isfinite(spec.axes[0].split)) && !axes.empty() &&
+      axes[0].name == spec.axes[0].name)
     axes[0].warp = Warp::Root4Layer;
   spec.axes = axes;
   for (const Cut& c : cuts) spec.name += "-" + c.tag;

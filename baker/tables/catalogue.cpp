@@ -21,6 +21,8 @@ void Resize(TableSpec& spec, int size) {
     if (a.size > 2 || a.name != "roughness") a.size = size;  // a roughness-less model keeps 2
     // root4-layer-split needs N - 1 a multiple of 8 (its piece ends are nodes): round up
     if (a.warp == Warp::Root4LayerSplit) a.size = std::max(9, (size + 6) / 8 * 8 + 1);
+    // root4-layer-split2 needs N - 1 a multiple of 32 (its piece ends and middles are nodes)
+    if (a.warp == Warp::Root4LayerSplit2) a.size = std::max(33, (size + 30) / 32 * 32 + 1);
   }
 }
 

@@ -133,6 +133,8 @@ double LayerScaleOf(const TableSpec& spec, const double* x) {
 }
 
 double SplitOf(const TableSpec& spec, const double* x) {
+  if (spec.axes.size() == 3 && spec.axes[0].warp == Warp::Root4LayerSplit2)
+    return clampedEta(spec.axes[2].lo, spec.axes[2].hi, x[2]);
   if (spec.axes.size() < 2 || spec.axes[0].warp != Warp::Root4LayerSplit) return 0.5;
   if (std::isfinite(spec.axes[0].split)) return spec.axes[0].split;
   if (spec.axes.size() != 3) return 0.5;
@@ -141,7 +143,7 @@ double SplitOf(const TableSpec& spec, const double* x) {
 
 void PointAtWarped(const TableSpec& spec, const double* t, double* x) {
   // A layered axis 0 is placed last, once, by the value of axis 1 (its inverse is iterative)
-  // and, for root4-layer-split, the split point axis 2 gives.
+  // and, for root4-layer-split(2), the split point (the eta) axis 2 gives.
   const bool layered = spec.axes.size() >= 2 && isLayerWarp(spec.axes[0].warp);
   for (size_t d = 0; d < spec.axes.size(); ++d)
     if (d != 0 || !layered) x[d] = spec.axes[d].ToAxis().unwarped(t[d]);

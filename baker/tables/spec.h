@@ -70,7 +70,8 @@ double LayerScaleOf(const TableSpec& spec, const double* x);
 
 /// The split point of a root4-layer-split axis 0 at the point x: its constant split, or
 /// kiln::criticalSplit of axis 2's value (the critical cosine sqrt(1 - eta^2)) when it has none;
-/// 0.5 (ignored) for any other axis 0.
+/// for a root4-layer-split2 axis 0 axis 2's value (kiln::clampedEta), from which the warp places
+/// its two breaks; 0.5 (ignored) for any other axis 0.
 double SplitOf(const TableSpec& spec, const double* x);
 
 /// The point x (axis units, one coordinate per axis) at warped coordinates t in [0, 1] per axis:

@@ -38,7 +38,7 @@
 #define KILN_WARP_ROOT4_LAYER 5  // axis 0 only: follows the value of axis 1 (kiln/lut.h)
 #define KILN_WARP_ANGLE 6
 #define KILN_WARP_LAYER_ETA 7  // axis 0 only: follows the index of axis 1 (kiln/lut.h)
-// 8 is root4-layer-split (CPU runtime only, kiln/lut.h)
+// 8 is root4-layer-split, 10 root4-layer-split2, 11 arcsine (CPU runtime only, kiln/lut.h)
 #define KILN_WARP_ROOT4_LAYER_ANGLE 9  // axis 0 only: root4-layer after u = (2/pi) asin(y)
 
 struct KilnAxis {

@@ -149,7 +149,7 @@ void readAttributes(const Imf::Header& h, Table& table) {
       throw Refusal(
           prefix + "warp is '" + warp +
           "', not one of linear, sqrt, square, log, root4, root4-layer, angle, layer-eta, "
-          "root4-layer-split, root4-layer-angle");
+          "root4-layer-split, root4-layer-angle, root4-layer-split2, arcsine");
     // A constant split point of a root4-layer-split axis; absent: NaN, the critical cosine.
     a.axis.split = optionalDouble(h, prefix + "split", std::numeric_limits<double>::quiet_NaN());
     std::string axisIssue = axisProblem(a.axis);

@@ -31,6 +31,9 @@ std::string axisProblem(const Axis& axis) {
   if (axis.warp == Warp::Root4LayerSplit && !axis.valid())
     return "size " + std::to_string(axis.size) +
            " with the root4-layer-split warp: needs size >= 9 and (size - 1) % 8 == 0";
+  if (axis.warp == Warp::Root4LayerSplit2 && !axis.valid() && !axis.hasConstantSplit())
+    return "size " + std::to_string(axis.size) +
+           " with the root4-layer-split2 warp: needs size >= 33 and (size - 1) % 32 == 0";
   if (axis.hasConstantSplit() && axis.warp != Warp::Root4LayerSplit)
     return std::string("a split point ") + number(axis.split) + " on the " + warpName(axis.warp) +
            " warp (only root4-layer-split takes one)";
@@ -90,6 +93,12 @@ bool validateTable(const Table& table, std::string& problem) {
       problem = label + ": the " + warpName(a.axis.warp) +
                 " warp couples axis 0 to axis 1; it is allowed "
                 "only on axis 0 of a table with two or more axes";
+      return false;
+    }
+    if (a.axis.warp == Warp::Root4LayerSplit2 && dims != 3) {
+      problem = label +
+                ": the root4-layer-split2 warp reads axes 1 and 2; it is allowed only on axis 0 "
+                "of a table with three axes";
       return false;
     }
     if (a.axis.warp == Warp::Root4LayerSplit && dims != 3 && !a.axis.hasConstantSplit()) {

@@ -84,6 +84,39 @@ namespace kiln {
 ///           (theta^2 / 2)^(3/2) point at mu = 1 (a microfacet albedo at high roughness,
 ///           the normals clipped at the visibility horizon) is smooth in t there. Same rules
 ///           as Root4Layer: axis 0 of a table of two or more axes, coupled to axis 1.
+///   Root4LayerSplit2: a mu axis split at two points of axis 2's eta, the critical cosine
+///           x_c = sqrt(1 - eta^2) (the kink of total internal reflection) and x_e = eta
+///           (theta_o + theta_c = pi / 2: the microfacets facing the view near the horizon
+///           leave total internal reflection, a one-sided point of a rough dielectric's
+///           transmission at high roughness), each clamped into [lo + (hi - lo) / 64, hi -
+///           (hi - lo) / 64]. Only on axis 0 of a 3-axis table (mu, roughness, eta), eta the
+///           value of axis 2 (clamped to that axis), c the Root4Layer scale of axis 1. With
+///           y = (x - lo) / (hi - lo), a <= b the two breaks in y (their min and max: they
+///           cross at eta = 1 / sqrt(2)), m = a / 2, n = (a + b) / 2, w = (b - a) / 2, five
+///           pieces, each a Root4Layer warp L(d, c') of the distance d from a layer end
+///           (collapsed at c' = 0), between the lines T0 = 3/16, T1 = 6/16, T2 = 8/16,
+///           T3 = 10/16 of t:
+///             y <= m:      t = T0 L(y / m, c / m)                          (grazing layer)
+///             m < y <= a:  t = T1 - (T1 - T0) L((a - y) / m, c / m)        (below a)
+///             a < y <= n:  t = T1 + (T2 - T1) L((y - a) / w, c / w)        (above a)
+///             n < y <= b:  t = T3 - (T3 - T2) L((b - y) / w, c / w)        (below b)
+///             y > b:       t = T3 + (1 - T3) L((y - b) / (1 - b), c / (1 - b)) (above b)
+///           so both breaks are grid lines (t = 6/16 and 10/16) in every eta layer, with
+///           nodes crowded on both sides of each, quartically (root4) at every roughness, over
+///           ~c besides. c / w is capped at 1e12 (w -> 0). At eta = 1 / sqrt(2) (w = 0) the
+///           two middle pieces have zero width: their nodes all sit at x = a, the inverse
+///           stays finite and continuous in eta, and a lookup at y <= a maps below T1, above a
+///           from T3 on. The size must satisfy (N - 1) % 32 == 0 (the lines and the middles of
+///           the pieces are nodes). At r = 0 (c = 0) each piece collapses as Root4Layer does:
+///           the nodes t < T0 / 2, (T0 + T1) / 2 < t < (T1 + T2) / 2 and (T2 + T3) / 2 < t <
+///           (T3 + 1) / 2 of that row hold the layers' limit r -> 0+, read only by 0 < r < r_1
+///           (holdsLayerLimit). The third argument of warped/unwarped/texel (`split`) is, for
+///           this warp, axis 2's eta (LutView::splitAt), from which it places both breaks.
+///   Arcsine: t = (2 / pi) asin(sqrt(y)), y = sin^2(t pi / 2) (nodes uniform in the arcsine
+///           distribution's CDF): dense at both ends, as sqrt at lo (y ~ 2.47 t^2) and as
+///           square at hi (1 - y ~ 2.47 (1 - t)^2), about linear in between (dy/dt <= pi / 2).
+///           A roughness axis whose function bends most near r = 1 while its first cell must
+///           stay thin (the layer of a coupled mu axis at r -> 0).
 enum class Warp {
   Linear,
   Sqrt,
@@ -94,11 +127,14 @@ enum class Warp {
   Angle,
   LayerEta,
   Root4LayerSplit,
-  Root4LayerAngle
+  Root4LayerAngle,
+  Root4LayerSplit2,
+  Arcsine
 };
 
 /// The file/CLI name of a warp: "linear", "sqrt", "square", "log", "root4", "root4-layer",
-/// "angle", "layer-eta", "root4-layer-split" or "root4-layer-angle".
+/// "angle", "layer-eta", "root4-layer-split", "root4-layer-angle", "root4-layer-split2" or
+/// "arcsine".
 /// Returns "unknown" for a value outside the enumeration.
 inline const char* warpName(Warp warp) noexcept {
   switch (warp) {
@@ -122,6 +158,10 @@ inline const char* warpName(Warp warp) noexcept {
       return "root4-layer-split";
     case Warp::Root4LayerAngle:
       return "root4-layer-angle";
+    case Warp::Root4LayerSplit2:
+      return "root4-layer-split2";
+    case Warp::Arcsine:
+      return "arcsine";
   }
   return "unknown";
 }
@@ -131,9 +171,18 @@ inline const char* warpName(Warp warp) noexcept {
 /// `warp` untouched and returns false. A null name is rejected.
 inline bool warpFromName(const char* name, Warp& warp) noexcept {
   if (name == nullptr) return false;
-  const Warp all[] = {Warp::Linear,          Warp::Sqrt,           Warp::Square, Warp::Log,
-                      Warp::Root4,           Warp::Root4Layer,     Warp::Angle,  Warp::LayerEta,
-                      Warp::Root4LayerSplit, Warp::Root4LayerAngle};
+  const Warp all[] = {Warp::Linear,
+                      Warp::Sqrt,
+                      Warp::Square,
+                      Warp::Log,
+                      Warp::Root4,
+                      Warp::Root4Layer,
+                      Warp::Angle,
+                      Warp::LayerEta,
+                      Warp::Root4LayerSplit,
+                      Warp::Root4LayerAngle,
+                      Warp::Root4LayerSplit2,
+                      Warp::Arcsine};
   for (Warp candidate : all) {
     if (std::strcmp(name, warpName(candidate)) == 0) {
       warp = candidate;
@@ -176,17 +225,24 @@ inline double etaLayerScale(double lo, double hi, double eta) noexcept {
 }
 
 /// True for the warps that read another axis (Root4Layer, LayerEta, Root4LayerSplit,
-/// Root4LayerAngle): only on axis 0 of a table of two or more axes (three for
-/// Root4LayerSplit without a constant split), coupled to axis 1.
+/// Root4LayerAngle, Root4LayerSplit2): only on axis 0 of a table of two or more axes (three
+/// for Root4LayerSplit without a constant split, and for Root4LayerSplit2), coupled to axis 1.
 inline bool isLayerWarp(Warp warp) noexcept {
   return warp == Warp::Root4Layer || warp == Warp::LayerEta || warp == Warp::Root4LayerSplit ||
-         warp == Warp::Root4LayerAngle;
+         warp == Warp::Root4LayerAngle || warp == Warp::Root4LayerSplit2;
 }
 
 /// True for the warps whose layer scale is the roughness's (layerScale): Root4Layer,
-/// Root4LayerSplit, Root4LayerAngle.
+/// Root4LayerSplit, Root4LayerAngle, Root4LayerSplit2.
 inline bool isRoughnessLayerWarp(Warp warp) noexcept {
-  return warp == Warp::Root4Layer || warp == Warp::Root4LayerSplit || warp == Warp::Root4LayerAngle;
+  return warp == Warp::Root4Layer || warp == Warp::Root4LayerSplit ||
+         warp == Warp::Root4LayerAngle || warp == Warp::Root4LayerSplit2;
+}
+
+/// True for the warps that read axis 2 (Root4LayerSplit without a constant split,
+/// Root4LayerSplit2): axis 0 of a 3-axis table only.
+inline bool readsAxis2(Warp warp, bool constantSplit) noexcept {
+  return (warp == Warp::Root4LayerSplit && !constantSplit) || warp == Warp::Root4LayerSplit2;
 }
 
 /// The split point of a Root4LayerSplit axis 0 over [lo0, hi0] at the value eta of axis 2
@@ -198,6 +254,12 @@ inline double criticalSplit(double lo0, double hi0, double lo2, double hi2, doub
   const double s = q > 0.0 ? std::sqrt(q) : 0.0;
   const double a = lo0 + (hi0 - lo0) / 64.0, b = hi0 - (hi0 - lo0) / 64.0;
   return s < a ? a : (s > b ? b : s);
+}
+
+/// The value of axis 2 a Root4LayerSplit2 axis 0 reads: eta clamped to [lo2, hi2] (NaN maps to
+/// lo2); the axis places its two breaks from it (Axis::split2Breaks).
+inline double clampedEta(double lo2, double hi2, double eta) noexcept {
+  return !(eta > lo2) ? lo2 : (!(eta < hi2) ? hi2 : eta);
 }
 
 /// The layer scale of an axis 0 with warp `warp0` at the value x1 of axis 1 (`axis1`'s
@@ -228,11 +290,13 @@ struct Axis {
   bool hasConstantSplit() const noexcept { return std::isfinite(split); }
 
   /// True when the axis satisfies the conditions above ((size - 1) % 8 == 0 for
-  /// Root4LayerSplit, a constant split only on Root4LayerSplit and strictly inside (lo, hi)).
+  /// Root4LayerSplit, (size - 1) % 32 == 0 for Root4LayerSplit2, a constant split only on
+  /// Root4LayerSplit and strictly inside (lo, hi)).
   bool valid() const noexcept {
     return size >= 1 && std::isfinite(lo) && std::isfinite(hi) && lo < hi &&
            (warp != Warp::Log || lo > 0.0) &&
            (warp != Warp::Root4LayerSplit || (size >= 9 && (size - 1) % 8 == 0)) &&
+           (warp != Warp::Root4LayerSplit2 || (size >= 33 && (size - 1) % 32 == 0)) &&
            (!hasConstantSplit() || (warp == Warp::Root4LayerSplit && lo < split && split < hi)) &&
            !std::isinf(split);
   }
@@ -300,9 +364,14 @@ struct Axis {
   /// True when, in a row where the layer collapsed (c = 0), the node at warped coordinate t
   /// holds the layer's limit rather than the smooth value: t < collapsedStart() for Root4Layer
   /// and LayerEta; t < 1/8 or 3/8 < t < 3/4 for Root4LayerSplit (the inner halves of its
-  /// three pieces; a lookup at c = 0 maps to the outer halves only). False for other warps.
+  /// three pieces; a lookup at c = 0 maps to the outer halves only), the inner halves of the
+  /// five pieces for Root4LayerSplit2 (see Warp). False for other warps.
   bool holdsLayerLimit(double t) const noexcept {
     if (warp == Warp::Root4LayerSplit) return t < 0.125 || (t > 0.375 && t < 0.75);
+    if (warp == Warp::Root4LayerSplit2)
+      return t < 0.5 * kSplit2T0 ||
+             (t > 0.5 * (kSplit2T0 + kSplit2T1) && t < 0.5 * (kSplit2T1 + kSplit2T2)) ||
+             (t > 0.5 * (kSplit2T2 + kSplit2T3) && t < 0.5 * (kSplit2T3 + 1.0));
     return t < collapsedStart();
   }
 
@@ -324,6 +393,7 @@ struct Axis {
   /// axis at c = 0).
   double warped(double x, double c = 1e-12, double split = 0.5) const noexcept {
     if (warp == Warp::Root4LayerSplit) return splitWarped(x, c, split);
+    if (warp == Warp::Root4LayerSplit2) return split2Warped(x, c, split);
     const bool collapsed = c == 0.0 && (warp == Warp::Root4Layer || warp == Warp::Root4LayerAngle);
     if (!(x > lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
     if (!(x < hi)) return 1.0;
@@ -362,6 +432,9 @@ struct Axis {
       case Warp::Angle:
         t = 1.0 - std::acos((x - lo) / (hi - lo)) * (2.0 / kPi);
         break;
+      case Warp::Arcsine:
+        t = std::asin(std::sqrt((x - lo) / (hi - lo))) * (2.0 / kPi);
+        break;
       case Warp::Root4LayerAngle: {
         const double u = std::asin((x - lo) / (hi - lo)) * (2.0 / kPi);
         t = layerWarpCollapsible(u, c);
@@ -369,6 +442,8 @@ struct Axis {
       }
       case Warp::Root4LayerSplit:
         break;  // splitWarped
+      case Warp::Root4LayerSplit2:
+        break;  // split2Warped
     }
     if (!(t >= 0.0)) return 0.0;  // NaN from an invalid axis
     return t < 1.0 ? t : 1.0;
@@ -378,7 +453,8 @@ struct Axis {
   /// (t is clamped). node(i) == unwarped(i / (N - 1)). Root4Layer has no closed
   /// form: safeguarded Newton to the last bits (deterministic); Root4LayerAngle is its
   /// inverse followed by sin(u pi / 2). A collapsed layer (c = 0) returns lo for every
-  /// t <= 1/2 (Root4Layer, Root4LayerAngle) or t < 1 (LayerEta).
+  /// t <= 1/2 (Root4Layer, Root4LayerAngle) or t < 1 (LayerEta). For Root4LayerSplit2,
+  /// `split` is axis 2's eta (see Warp).
   double unwarped(double t, double c = 1e-12, double split = 0.5) const noexcept {
     if (!(t > 0.0)) return lo;
     if (!(t < 1.0)) return hi;
@@ -405,6 +481,23 @@ struct Axis {
         }
         return lo + (hi - lo) * y;
       }
+      case Warp::Root4LayerSplit2: {
+        Split2 p;
+        split2Breaks(split, c, p);
+        double y = 0.0;
+        if (t <= kSplit2T0) {
+          y = p.m * layerWarpInverse(t / kSplit2T0, p.cm);
+        } else if (t <= kSplit2T1) {
+          y = p.a - p.m * layerWarpInverse((kSplit2T1 - t) / (kSplit2T1 - kSplit2T0), p.cm);
+        } else if (t <= kSplit2T2) {
+          y = p.a + p.w * layerWarpInverse((t - kSplit2T1) / (kSplit2T2 - kSplit2T1), p.cw);
+        } else if (t <= kSplit2T3) {
+          y = p.b - p.w * layerWarpInverse((kSplit2T3 - t) / (kSplit2T3 - kSplit2T2), p.cw);
+        } else {
+          y = p.b + (1.0 - p.b) * layerWarpInverse((t - kSplit2T3) / (1.0 - kSplit2T3), p.cb);
+        }
+        return lo + (hi - lo) * y;
+      }
       case Warp::Linear:
         return lo + (hi - lo) * t;
       case Warp::Sqrt:
@@ -417,6 +510,10 @@ struct Axis {
         return lo + (hi - lo) * ((t * t) * (t * t));
       case Warp::Angle:
         return lo + (hi - lo) * std::sin(t * (kPi / 2.0));
+      case Warp::Arcsine: {
+        const double s = std::sin(t * (kPi / 2.0));
+        return lo + (hi - lo) * (s * s);
+      }
     }
     return lo;
   }
@@ -441,7 +538,60 @@ struct Axis {
     return (0.5 + texel(x, c, split)) / static_cast<double>(n);
   }
 
+  /// The lines of t between the five pieces of a Root4LayerSplit2 axis (see Warp).
+  static constexpr double kSplit2T0 = 5.0 / 16.0, kSplit2T1 = 8.0 / 16.0, kSplit2T2 = 10.0 / 16.0,
+                          kSplit2T3 = 13.0 / 16.0;
+
+  /// The pieces of a Root4LayerSplit2 axis at one eta: the breaks a <= b in y, m = a / 2,
+  /// w = (b - a) / 2, and the layer scales of the pieces (cm = c / m, cw = c / w capped at
+  /// 1e12, cb = c / (1 - b)).
+  struct Split2 {
+    double a = 0.0, b = 0.0, m = 0.0, w = 0.0, cm = 0.0, cw = 0.0, cb = 0.0;
+  };
+
+  /// The two breaks of a Root4LayerSplit2 axis at axis 2's value eta (already clamped to axis
+  /// 2, LutView::splitAt): x_c = sqrt(1 - eta^2) (0 for eta >= 1) and x_e = eta, each clamped
+  /// into [lo + (hi - lo) / 64, hi - (hi - lo) / 64], in y, ordered; and the pieces' scales.
+  void split2Breaks(double eta, double c, Split2& p) const noexcept {
+    const double q = (1.0 - eta) * (1.0 + eta);
+    const double xc = q > 0.0 ? std::sqrt(q) : 0.0;
+    const double e = eta == eta ? eta : lo;
+    const double lo64 = lo + (hi - lo) / 64.0, hi64 = hi - (hi - lo) / 64.0;
+    const double yc = ((xc < lo64 ? lo64 : (xc > hi64 ? hi64 : xc)) - lo) / (hi - lo);
+    const double ye = ((e < lo64 ? lo64 : (e > hi64 ? hi64 : e)) - lo) / (hi - lo);
+    p.a = yc < ye ? yc : ye;
+    p.b = yc < ye ? ye : yc;
+    p.m = 0.5 * p.a;
+    p.w = 0.5 * (p.b - p.a);
+    p.cm = c / p.m;
+    p.cw = p.w > 0.0 && c / p.w < 1e12 ? c / p.w : (c > 0.0 ? 1e12 : 0.0);
+    p.cb = c / (1.0 - p.b);
+  }
+
  private:
+  /// warped() of a Root4LayerSplit2 axis (see Warp): x clamped to [lo, hi], NaN to lo; eta is
+  /// axis 2's value.
+  double split2Warped(double x, double c, double eta) const noexcept {
+    const double xc = !(x > lo) ? lo : (!(x < hi) ? hi : x);
+    const double y = (xc - lo) / (hi - lo);
+    Split2 p;
+    split2Breaks(eta, c, p);
+    double t = 0.0;
+    if (y <= p.m) {
+      t = kSplit2T0 * layerWarpCollapsible(y / p.m, p.cm);
+    } else if (y <= p.a) {
+      t = kSplit2T1 - (kSplit2T1 - kSplit2T0) * layerWarpCollapsible((p.a - y) / p.m, p.cm);
+    } else if (y <= p.a + p.w && p.w > 0.0) {
+      t = kSplit2T1 + (kSplit2T2 - kSplit2T1) * layerWarpCollapsible((y - p.a) / p.w, p.cw);
+    } else if (y <= p.b && p.w > 0.0) {
+      t = kSplit2T3 - (kSplit2T3 - kSplit2T2) * layerWarpCollapsible((p.b - y) / p.w, p.cw);
+    } else {
+      t = kSplit2T3 + (1.0 - kSplit2T3) * layerWarpCollapsible((y - p.b) / (1.0 - p.b), p.cb);
+    }
+    if (!(t >= 0.0)) return 0.0;
+    return t < 1.0 ? t : 1.0;
+  }
+
   /// warped() of a Root4LayerSplit axis (see Warp): x clamped to [lo, hi], NaN to lo.
   double splitWarped(double x, double c, double split) const noexcept {
     const double xc = !(x > lo) ? lo : (!(x < hi) ? hi : x);
@@ -490,15 +640,18 @@ struct LutView {
     for (int d = 0; d < dims; ++d) {
       if (!axis[d].valid()) return false;
       if (isLayerWarp(axis[d].warp) && (d != 0 || dims < 2)) return false;
-      if (axis[d].warp == Warp::Root4LayerSplit && dims != 3 && !axis[d].hasConstantSplit())
-        return false;
+      if (readsAxis2(axis[d].warp, axis[d].hasConstantSplit()) && dims != 3) return false;
     }
     return true;
   }
 
   /// The split point of axis 0 at the point x: for a Root4LayerSplit axis 0 its constant
-  /// split, or criticalSplit of axis 2's value when the split is NaN; 0.5, ignored, otherwise.
+  /// split, or criticalSplit of axis 2's value when the split is NaN; for a Root4LayerSplit2
+  /// axis 0 axis 2's value clamped to that axis (clampedEta), from which it places its two
+  /// breaks; 0.5, ignored, otherwise.
   double splitAt(const double* x) const noexcept {
+    if (dims == 3 && axis[0].warp == Warp::Root4LayerSplit2)
+      return clampedEta(axis[2].lo, axis[2].hi, x[2]);
     if (dims < 2 || axis[0].warp != Warp::Root4LayerSplit) return 0.5;
     if (axis[0].hasConstantSplit()) return axis[0].split;
     if (dims != 3) return 0.5;
