@@ -10,6 +10,7 @@
 // ~1e-7, into 1.3e-5 of F and 1.7e-5 of the exit form).
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -38,8 +39,13 @@ namespace {
       return NS::kilnBtdfFresnelClosedForm(mu, r, eta);                                            \
     }                                                                                              \
     static float LayerScale(float x1, Axis a0, Axis a1) { return NS::kilnLayerScale(x1, a0, a1); } \
-    static float Warped(float x, Axis a, float c) { return NS::kilnWarped(x, a, c); }              \
-    static float Coord(float x, Axis a, float c) { return NS::kilnCoord(x, a, c); }                \
+    static float Warped(float x, Axis a, float c, float split) {                                   \
+      return NS::kilnWarped(x, a, c, split);                                                       \
+    }                                                                                              \
+    static float Coord(float x, Axis a, float c, float split) {                                    \
+      return NS::kilnCoord(x, a, c, split);                                                        \
+    }                                                                                              \
+    static float SplitAt(float x2, Axis a0, Axis a2) { return NS::kilnSplitAt(x2, a0, a2); }       \
   };
 KILN_SNIPPET(Glsl, kiln_glsl)
 KILN_SNIPPET(Hlsl, kiln_hlsl)
@@ -115,28 +121,56 @@ TEMPLATE_TEST_CASE("The snippets' closed forms equal the C++ runtime's to float 
   }
 }
 
-TEMPLATE_TEST_CASE("The snippets place a lookup where kiln/lut.h does, for every warp they read",
+/// How far a's warped coordinate moves when x and the split move by a few float roundings
+/// (4e-7): the warps with a layer (root4 pieces: slope ~ d^(-3/4) at a distance d from a layer
+/// end) are that ill-conditioned in any float code, the snippets' included.
+double FloatSpread(const kiln::Axis& a, double x, double c, double split) {
+  const double t = a.warped(x, c, split), d = 4e-7;
+  double spread = 0.0;
+  for (double dx : {-d, d})
+    for (double ds : {-d, 0.0, d})
+      spread = std::max(spread, std::fabs(a.warped(x + dx, c, split + ds) - t));
+  return spread;
+}
+
+TEMPLATE_TEST_CASE("The snippets place a lookup where kiln/lut.h does, for every warp",
                    "[runtime][shaders]", Glsl, Hlsl) {
   using kiln::Warp;
+  using Axis = typename TestType::Axis;
   for (Warp warp : {Warp::Linear, Warp::Sqrt, Warp::Square, Warp::Log, Warp::Root4,
-                    Warp::Root4Layer, Warp::Angle, Warp::LayerEta, Warp::Root4LayerAngle}) {
+                    Warp::Root4Layer, Warp::Angle, Warp::LayerEta, Warp::Root4LayerSplit,
+                    Warp::Root4LayerAngle, Warp::Root4LayerSplit2, Warp::Arcsine}) {
+    // Axis 0 over mu (33 nodes: (N - 1) % 32 == 0 for root4-layer-split2), axis 1 the roughness
+    // (or eta for layer-eta), axis 2 the exit side's eta' (the split warps read it).
     const kiln::Axis a0{warp == Warp::Log ? 0.01 : 0.0, 1.0, 33, warp};
     const kiln::Axis a1 = warp == Warp::LayerEta ? kiln::Axis{1.0, 3.0, 24, Warp::Sqrt}
                                                  : kiln::Axis{0.0, 1.0, 24, Warp::Sqrt};
-    using Axis = typename TestType::Axis;
+    const kiln::Axis a2{1.0 / 3.0, 1.0 / 1.1, 41, Warp::Angle};
     const Axis s0{float(a0.lo), float(a0.hi), float(a0.size), int(a0.warp)};
     const Axis s1{float(a1.lo), float(a1.hi), float(a1.size), int(a1.warp)};
-    for (float x1 : {0.0f, 1e-4f, 0.01f, 0.3f, 1.0f, 1.0001f, 1.1f, 2.0f, 3.0f}) {
-      const double c = kiln::layerScaleFor(warp, a1.lo, a1.hi, x1);
-      const float cs = TestType::LayerScale(x1, s0, s1);
-      INFO("warp " << kiln::warpName(warp) << ", axis 1 at " << x1);
-      if (kiln::isRoughnessLayerWarp(warp) || warp == Warp::LayerEta)
-        CHECK(std::fabs(cs - c) <= 1e-6 * c);
-      for (float x : {-0.5f, 0.0f, 1e-9f, 1e-6f, 1e-3f, 0.01f, 0.1f, 0.3f, 0.5f, 0.77f, 0.99f,
-                      0.9999f, 1.0f, 1.5f}) {
-        INFO("x " << x);
-        CHECK(std::fabs(TestType::Warped(x, s0, cs) - a0.warped(x, c)) < 2e-6);
-        CHECK(std::fabs(TestType::Coord(x, s0, cs) - a0.gpuCoord(x, c)) < 2e-6);
+    const Axis s2{float(a2.lo), float(a2.hi), float(a2.size), int(a2.warp)};
+    for (float x2 : {0.2f, 1.0f / 3.0f, 0.5f, 0.7f, 0.70710678f, 0.72f, 0.8f, 1.0f / 1.1f, 1.2f}) {
+      // The split argument as kiln::LutView::splitAt computes it (x2 already float).
+      double split = 0.5;
+      if (warp == Warp::Root4LayerSplit)
+        split = kiln::criticalSplit(a0.lo, a0.hi, a2.lo, a2.hi, x2);
+      if (warp == Warp::Root4LayerSplit2) split = kiln::clampedEta(a2.lo, a2.hi, x2);
+      const float splitShader = TestType::SplitAt(x2, s0, s2);
+      CHECK(std::fabs(splitShader - split) < 1e-6);
+      for (float x1 : {0.0f, 1e-4f, 0.01f, 0.3f, 1.0f, 1.0001f, 1.1f, 2.0f, 3.0f}) {
+        const double c = kiln::layerScaleFor(warp, a1.lo, a1.hi, x1);
+        const float cs = TestType::LayerScale(x1, s0, s1);
+        INFO("warp " << kiln::warpName(warp) << ", axis 1 at " << x1 << ", axis 2 at " << x2);
+        if (kiln::isRoughnessLayerWarp(warp) || warp == Warp::LayerEta)
+          CHECK(std::fabs(cs - c) <= 1e-6 * c);
+        for (float x : {-0.5f, 0.0f,    1e-9f, 1e-6f, 1e-3f, 0.01f,  0.1f,  0.3f,    0.45f, 0.5f,
+                        0.7f,  0.7071f, 0.72f, 0.77f, 0.9f,  0.943f, 0.99f, 0.9999f, 1.0f,  1.5f}) {
+          INFO("x " << x);
+          const double tol = 2e-6 + FloatSpread(a0, x, c, split);
+          CHECK(std::fabs(TestType::Warped(x, s0, cs, splitShader) - a0.warped(x, c, split)) < tol);
+          CHECK(std::fabs(TestType::Coord(x, s0, cs, splitShader) - a0.gpuCoord(x, c, split)) <
+                tol);
+        }
       }
     }
   }

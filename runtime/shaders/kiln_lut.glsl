@@ -13,6 +13,8 @@
 //                                      (root4-layer: also of c = max(x1^2, 1e-12), c = 0 at x1 = 0;
 //                                       root4-layer-angle: the same after y -> (2/pi) asin(y);
 //                                       layer-eta: of c = sqrt(|x1^2 - 1|), c = 0 at x1 = 1;
+//                                       root4-layer-split(2): also of axis 2's value x2,
+//                                       kilnSplitAt; a 2D table's constant split: kiln.axis0.split;
 //                                       x1 axis 1's value, kilnLayerScale)
 //     s = t * (size - 1)               continuous node index
 //     u = (0.5 + s) / size             texture coordinate: node i sits on texel centre i
@@ -38,8 +40,10 @@
 #define KILN_WARP_ROOT4_LAYER 5  // axis 0 only: follows the value of axis 1 (kiln/lut.h)
 #define KILN_WARP_ANGLE 6
 #define KILN_WARP_LAYER_ETA 7  // axis 0 only: follows the index of axis 1 (kiln/lut.h)
-// 8 is root4-layer-split, 10 root4-layer-split2, 11 arcsine (CPU runtime only, kiln/lut.h)
+#define KILN_WARP_ROOT4_LAYER_SPLIT 8  // axis 0 only: split at a point (kiln/lut.h, kilnSplitAt)
 #define KILN_WARP_ROOT4_LAYER_ANGLE 9  // axis 0 only: root4-layer after u = (2/pi) asin(y)
+#define KILN_WARP_ROOT4_LAYER_SPLIT2 10  // axis 0 of a 3D table: split at two points of axis 2's eta
+#define KILN_WARP_ARCSINE 11
 
 struct KilnAxis {
     highp float lo;    // kiln.axis<i>.lo
@@ -59,7 +63,8 @@ highp float kilnLayerScale(highp float r, KilnAxis a1) {
 // root4-layer; c = max(sqrt(|x1^2 - 1|), 1e-12), 0 at x1 = 1 exactly, for
 // layer-eta; ignored (1e-12) for the other warps.
 highp float kilnLayerScale(highp float x1, KilnAxis a0, KilnAxis a1) {
-    if (a0.warp == KILN_WARP_ROOT4_LAYER || a0.warp == KILN_WARP_ROOT4_LAYER_ANGLE)
+    if (a0.warp == KILN_WARP_ROOT4_LAYER || a0.warp == KILN_WARP_ROOT4_LAYER_ANGLE ||
+        a0.warp == KILN_WARP_ROOT4_LAYER_SPLIT || a0.warp == KILN_WARP_ROOT4_LAYER_SPLIT2)
         return kilnLayerScale(x1, a1);
     if (a0.warp != KILN_WARP_LAYER_ETA) return 1e-12;
     highp float ec = clamp(x1, a1.lo, a1.hi);
@@ -67,9 +72,33 @@ highp float kilnLayerScale(highp float x1, KilnAxis a0, KilnAxis a1) {
     return c > 0.0 ? max(c, 1e-12) : 0.0;
 }
 
+// The root4-layer warp of y in [0, 1] at layer scale c, collapsed at c = 0 (kiln::Axis::
+// layerWarpCollapsible): (y^(1/4) + y (1 + c) / (y + c)) / 2; (y^(1/4) + 1) / 2 at c = 0.
+highp float kilnLayerWarp(highp float y, highp float c) {
+    if (!(y > 0.0)) return c == 0.0 ? 0.5 : 0.0;
+    if (!(y < 1.0)) return 1.0;
+    if (c == 0.0) return 0.5 * (sqrt(sqrt(y)) + 1.0);
+    return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
+}
+
+// The split argument of kilnWarped for axis 0 (a0) of a 3D table at the value x2 of axis 2
+// (a2), as kiln::LutView::splitAt: root4-layer-split, the critical cosine sqrt(1 - eta^2) of
+// x2 clamped to a2 (0 for eta >= 1), clamped into [lo + (hi - lo) / 64, hi - (hi - lo) / 64];
+// root4-layer-split2, x2 clamped to a2; 0.5 (ignored) for the other warps. (A 2D table with a
+// constant split, kiln.axis0.split, passes that value to kilnSample2D instead.)
+highp float kilnSplitAt(highp float x2, KilnAxis a0, KilnAxis a2) {
+    highp float ec = clamp(x2, a2.lo, a2.hi);
+    if (a0.warp == KILN_WARP_ROOT4_LAYER_SPLIT2) return ec;
+    if (a0.warp != KILN_WARP_ROOT4_LAYER_SPLIT) return 0.5;
+    highp float q = (1.0 - ec) * (1.0 + ec);
+    highp float s = q > 0.0 ? sqrt(q) : 0.0;
+    return clamp(s, a0.lo + (a0.hi - a0.lo) / 64.0, a0.hi - (a0.hi - a0.lo) / 64.0);
+}
+
 // Warped coordinate t in [0, 1] of x; x is clamped to [lo, hi]. c: the layer
-// scale of a root4-layer axis (kilnLayerScale), ignored by the other warps.
-highp float kilnWarped(highp float x, KilnAxis a, highp float c) {
+// scale of a root4-layer axis (kilnLayerScale), ignored by the other warps;
+// split: kilnSplitAt's value for a root4-layer-split(2) axis, ignored by the others.
+highp float kilnWarped(highp float x, KilnAxis a, highp float c, highp float split) {
     highp float xc = clamp(x, a.lo, a.hi);
     if (a.warp == KILN_WARP_LOG) return clamp(log(xc / a.lo) / log(a.hi / a.lo), 0.0, 1.0);
     highp float y = (xc - a.lo) / (a.hi - a.lo);
@@ -77,6 +106,31 @@ highp float kilnWarped(highp float x, KilnAxis a, highp float c) {
     if (a.warp == KILN_WARP_SQUARE) return y * y;
     if (a.warp == KILN_WARP_ROOT4) return sqrt(sqrt(y));
     if (a.warp == KILN_WARP_ANGLE) return 1.0 - acos(y) * 0.63661977236758134;  // 2 / pi
+    if (a.warp == KILN_WARP_ARCSINE) return asin(sqrt(y)) * 0.63661977236758134;
+    if (a.warp == KILN_WARP_ROOT4_LAYER_SPLIT) {
+        // Three root4-layer pieces: [0, m] (t to 1/4), [m, ys] (to 1/2), [ys, 1] (to 1), m = ys / 2.
+        highp float ys = (split - a.lo) / (a.hi - a.lo), m = 0.5 * ys;
+        if (y <= m) return 0.25 * kilnLayerWarp(y / m, c / m);
+        if (y <= ys) return 0.5 - 0.25 * kilnLayerWarp((ys - y) / m, c / m);
+        return min(0.5 + 0.5 * kilnLayerWarp((y - ys) / (1.0 - ys), c / (1.0 - ys)), 1.0);
+    }
+    if (a.warp == KILN_WARP_ROOT4_LAYER_SPLIT2) {
+        // Five root4-layer pieces between the lines 5/16, 8/16, 10/16, 13/16 of t, at the breaks
+        // pa <= pb (the critical cosine and eta, in y; split is eta): kiln::Axis::split2Breaks.
+        highp float q = (1.0 - split) * (1.0 + split);
+        highp float xcr = q > 0.0 ? sqrt(q) : 0.0;
+        highp float lo64 = a.lo + (a.hi - a.lo) / 64.0, hi64 = a.hi - (a.hi - a.lo) / 64.0;
+        highp float yc = (clamp(xcr, lo64, hi64) - a.lo) / (a.hi - a.lo);
+        highp float ye = (clamp(split, lo64, hi64) - a.lo) / (a.hi - a.lo);
+        highp float pa = min(yc, ye), pb = max(yc, ye);
+        highp float m = 0.5 * pa, w = 0.5 * (pb - pa);
+        highp float cw = w > 0.0 && c / w < 1e12 ? c / w : (c > 0.0 ? 1e12 : 0.0);
+        if (y <= m) return 0.3125 * kilnLayerWarp(y / m, c / m);
+        if (y <= pa) return 0.5 - 0.1875 * kilnLayerWarp((pa - y) / m, c / m);
+        if (y <= pa + w && w > 0.0) return 0.5 + 0.125 * kilnLayerWarp((y - pa) / w, cw);
+        if (y <= pb && w > 0.0) return 0.8125 - 0.1875 * kilnLayerWarp((pb - y) / w, cw);
+        return min(0.8125 + 0.1875 * kilnLayerWarp((y - pb) / (1.0 - pb), c / (1.0 - pb)), 1.0);
+    }
     if (a.warp == KILN_WARP_ROOT4_LAYER_ANGLE) {
         y = asin(y) * 0.63661977236758134;  // u = (2 / pi) asin(y), then root4-layer
         if (c > 0.0) return 0.5 * (sqrt(sqrt(y)) + y * (1.0 + c) / (y + c));
@@ -93,17 +147,27 @@ highp float kilnWarped(highp float x, KilnAxis a, highp float c) {
     return y;
 }
 
+highp float kilnWarped(highp float x, KilnAxis a, highp float c) {
+    return kilnWarped(x, a, c, 0.5);
+}
+
 // Continuous node index s = t * (size - 1) of x.
+highp float kilnTexel(highp float x, KilnAxis a, highp float c, highp float split) {
+    return kilnWarped(x, a, c, split) * max(a.size - 1.0, 0.0);
+}
 highp float kilnTexel(highp float x, KilnAxis a, highp float c) {
-    return kilnWarped(x, a, c) * max(a.size - 1.0, 0.0);
+    return kilnTexel(x, a, c, 0.5);
 }
 highp float kilnTexel(highp float x, KilnAxis a) {
     return kilnTexel(x, a, 1e-12);
 }
 
 // Texture coordinate (0.5 + s) / size of x, for hardware bilinear filtering.
+highp float kilnCoord(highp float x, KilnAxis a, highp float c, highp float split) {
+    return (0.5 + kilnTexel(x, a, c, split)) / a.size;
+}
 highp float kilnCoord(highp float x, KilnAxis a, highp float c) {
-    return (0.5 + kilnTexel(x, a, c)) / a.size;
+    return kilnCoord(x, a, c, 0.5);
 }
 highp float kilnCoord(highp float x, KilnAxis a) {
     return kilnCoord(x, a, 1e-12);
@@ -119,12 +183,18 @@ highp vec4 kilnSample2D(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis
     return textureLod(lut, vec2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1)), kilnCoord(x.y, a1)), 0.0);
 }
 
+// 2D table whose axis 0 is root4-layer-split with a constant split point (the file's
+// kiln.axis0.split): the same fetch, axis 0 split there.
+highp vec4 kilnSample2D(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis a1, highp float split) {
+    return textureLod(lut, vec2(kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1), split), kilnCoord(x.y, a1)), 0.0);
+}
+
 // 3D table (slices along axis 2 stacked vertically) at x = (x0, x1, x2): a
 // bilinear fetch in the two slices around x2, blended linearly. The fetch
 // never bleeds into the neighbouring slice: its v stays between the centres
 // of the slice's first and last rows.
 highp vec4 kilnSample3D(highp sampler2D lut, highp vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    highp float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1));
+    highp float u = kilnCoord(x.x, a0, kilnLayerScale(x.y, a0, a1), kilnSplitAt(x.z, a0, a2));
     highp float s1 = kilnTexel(x.y, a1);
     highp float s2 = kilnTexel(x.z, a2);
     highp float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
@@ -152,10 +222,13 @@ highp vec4 kilnBlendExact(highp sampler2D lut, highp vec2 p) {
 highp vec4 kilnSample2DExact(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis a1) {
     return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1)), kilnTexel(x.y, a1)));
 }
+highp vec4 kilnSample2DExact(highp sampler2D lut, highp vec2 x, KilnAxis a0, KilnAxis a1, highp float split) {
+    return kilnBlendExact(lut, vec2(kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1), split), kilnTexel(x.y, a1)));
+}
 
 // As kilnSample3D, with the blends in full float precision.
 highp vec4 kilnSample3DExact(highp sampler2D lut, highp vec3 x, KilnAxis a0, KilnAxis a1, KilnAxis a2) {
-    highp float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1));
+    highp float s0 = kilnTexel(x.x, a0, kilnLayerScale(x.y, a0, a1), kilnSplitAt(x.z, a0, a2));
     highp float s1 = kilnTexel(x.y, a1);
     highp float s2 = kilnTexel(x.z, a2);
     highp float k0 = min(floor(s2), max(a2.size - 2.0, 0.0));
