@@ -75,8 +75,9 @@ TEST_CASE("A lookup at a node of any committed table returns the stored texel ex
       // A collapsed layer (r = 0, eta = 1) places its nodes up to t = 1/2 (root4-layer) or
       // below 1 (layer-eta) at mu = 0, which maps to one t: no lookup lands on the others, the
       // layer's limit (lut.h), read by lookups next to the collapse point.
-      x[0] = a0.node(i0, v.layerScaleAt(x));
-      if (a0.texel(x[0], v.layerScaleAt(x)) != i0) continue;
+      // A split axis 0 (root4-layer-split, -split2) places its nodes by axis 2's value too.
+      x[0] = a0.node(i0, v.layerScaleAt(x), v.splitAt(x));
+      if (a0.texel(x[0], v.layerScaleAt(x), v.splitAt(x)) != i0) continue;
       float lin[8], cub[8];
       v.sample(x, lin, Filter::Linear);
       v.sample(x, cub, Filter::Cubic);

@@ -94,14 +94,14 @@ namespace kiln {
 ///           y = (x - lo) / (hi - lo), a <= b the two breaks in y (their min and max: they
 ///           cross at eta = 1 / sqrt(2)), m = a / 2, n = (a + b) / 2, w = (b - a) / 2, five
 ///           pieces, each a Root4Layer warp L(d, c') of the distance d from a layer end
-///           (collapsed at c' = 0), between the lines T0 = 3/16, T1 = 6/16, T2 = 8/16,
-///           T3 = 10/16 of t:
+///           (collapsed at c' = 0), between the lines T0 = 5/16, T1 = 8/16, T2 = 10/16,
+///           T3 = 13/16 of t (kSplit2T0 .. kSplit2T3):
 ///             y <= m:      t = T0 L(y / m, c / m)                          (grazing layer)
 ///             m < y <= a:  t = T1 - (T1 - T0) L((a - y) / m, c / m)        (below a)
 ///             a < y <= n:  t = T1 + (T2 - T1) L((y - a) / w, c / w)        (above a)
 ///             n < y <= b:  t = T3 - (T3 - T2) L((b - y) / w, c / w)        (below b)
 ///             y > b:       t = T3 + (1 - T3) L((y - b) / (1 - b), c / (1 - b)) (above b)
-///           so both breaks are grid lines (t = 6/16 and 10/16) in every eta layer, with
+///           so both breaks are grid lines (t = 8/16 and 13/16) in every eta layer, with
 ///           nodes crowded on both sides of each, quartically (root4) at every roughness, over
 ///           ~c besides. c / w is capped at 1e12 (w -> 0). At eta = 1 / sqrt(2) (w = 0) the
 ///           two middle pieces have zero width: their nodes all sit at x = a, the inverse
