@@ -92,6 +92,8 @@
 #include "baker/models/roughness.h"
 
 namespace kiln {
+static_assert(dielectric_simd::kMaxColumnEtas == kMaxDielectricColumn,
+              "dielectric_simd::AddColumnRing sizes its rings by kMaxColumnEtas");
 namespace {
 
 constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
@@ -469,27 +471,17 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
           v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
           Sqr(v.dist.alpha)};
       dielectric_simd::ColumnRingShared(r, b.phi, b.w, J, b.valid, b.wR, b.wb, b.cc);
-      double ring0[kMaxDielectricColumn] = {}, ring1[kMaxDielectricColumn] = {};
-      if (n >= 8) {
-        dielectric_simd::ColumnRingEtas(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1, ks.eta2, ks.inv,
-                                        (n + 7) / 8, ring0, ring1);
-      } else {
-        for (int e = 0; e < n; ++e) {
-          dielectric_simd::ColumnRingOneEta(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1[e],
-                                            ks.eta2[e], ks.inv[e], b.tR, b.tT);
-          double s0 = 0, s1 = 0;
-          for (int j = 0; j < J; ++j) {
-            s0 = s0 + b.tR[j];
-            s1 = s1 + b.tT[j];
-          }
-          ring0[e] = s0;
-          ring1[e] = s1;
-        }
-      }
-      for (int e = 0; e < n; ++e) {
-        total0[e] = total0[e] + wo * ring0[e];
-        total1[e] = total1[e] + wo * ring1[e];
-      }
+      dielectric_simd::AddColumnRing(
+          n, b, wo,
+          [&](double* ring0, double* ring1) {
+            dielectric_simd::ColumnRingEtas(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1, ks.eta2,
+                                            ks.inv, (n + 7) / 8, ring0, ring1);
+          },
+          [&](int e) {
+            dielectric_simd::ColumnRingOneEta(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1[e],
+                                              ks.eta2[e], ks.inv[e], b.tR, b.tT);
+          },
+          total0, total1);
     }
     double total0[kMaxDielectricColumn] = {}, total1[kMaxDielectricColumn] = {};
   } s{v, ks, ks.pairs};

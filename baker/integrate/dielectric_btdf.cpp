@@ -263,27 +263,17 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
           v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
           Sqr(v.dist.alpha)};
       dielectric_simd::BtdfRingShared(r, b.phi, b.w, J, b.valid, b.wb, b.cc);
-      double ring0[kMaxDielectricColumn] = {}, ring1[kMaxDielectricColumn] = {};
-      if (n >= 8) {
-        dielectric_simd::BtdfRingEtas(r, b.valid, b.wb, b.cc, J, ks.eta2m1, ks.eta2, ks.inv,
-                                      (n + 7) / 8, ring0, ring1);
-      } else {
-        for (int e = 0; e < n; ++e) {
-          dielectric_simd::BtdfRingOneEta(r, b.wb, b.cc, J, ks.eta2m1[e], ks.eta2[e], ks.inv[e],
-                                          b.tR, b.tT);
-          double s0 = 0, s1 = 0;
-          for (int j = 0; j < J; ++j) {
-            s0 = s0 + b.tR[j];
-            s1 = s1 + b.tT[j];
-          }
-          ring0[e] = s0;
-          ring1[e] = s1;
-        }
-      }
-      for (int e = 0; e < n; ++e) {
-        total0[e] = total0[e] + wo * ring0[e];
-        total1[e] = total1[e] + wo * ring1[e];
-      }
+      dielectric_simd::AddColumnRing(
+          n, b, wo,
+          [&](double* ring0, double* ring1) {
+            dielectric_simd::BtdfRingEtas(r, b.valid, b.wb, b.cc, J, ks.eta2m1, ks.eta2, ks.inv,
+                                          (n + 7) / 8, ring0, ring1);
+          },
+          [&](int e) {
+            dielectric_simd::BtdfRingOneEta(r, b.wb, b.cc, J, ks.eta2m1[e], ks.eta2[e], ks.inv[e],
+                                            b.tR, b.tT);
+          },
+          total0, total1);
     }
   } s{v, ks, ks.pairs};
   dielectric_simd::RingBuffer buffer;

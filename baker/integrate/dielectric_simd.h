@@ -82,5 +82,37 @@ void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double*
 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J, double eta2m1,
                     double eta2, double inv, double* t0, double* t1);
 
+/// Most etas of a column (kMaxDielectricColumn, dielectric_albedo.h; asserted there).
+constexpr int kMaxColumnEtas = 64;
+
+/// Adds one ring of a column walk to the column's totals: the ring's per-eta sums ring0[e],
+/// ring1[e] by allEtas(ring0, ring1) for a column of eight or more etas, else per eta by
+/// oneEta(e), which fills buf.tR, buf.tT at the ring's J nodes, summed here in the nodes' order;
+/// then total[e] += wo ring[e]. Shared by the E tables' and the BTDF pair's column walks (the
+/// same operations in the same order as each wrote them before).
+template <class AllEtas, class OneEta>
+void AddColumnRing(int n, RingBuffer& buf, double wo, AllEtas allEtas, OneEta oneEta,
+                   double* total0, double* total1) {
+  double ring0[kMaxColumnEtas] = {}, ring1[kMaxColumnEtas] = {};
+  if (n >= 8) {
+    allEtas(ring0, ring1);
+  } else {
+    for (int e = 0; e < n; ++e) {
+      oneEta(e);
+      double s0 = 0, s1 = 0;
+      for (int j = 0; j < buf.J; ++j) {
+        s0 = s0 + buf.tR[j];
+        s1 = s1 + buf.tT[j];
+      }
+      ring0[e] = s0;
+      ring1[e] = s1;
+    }
+  }
+  for (int e = 0; e < n; ++e) {
+    total0[e] = total0[e] + wo * ring0[e];
+    total1[e] = total1[e] + wo * ring1[e];
+  }
+}
+
 }  // namespace dielectric_simd
 }  // namespace kiln
