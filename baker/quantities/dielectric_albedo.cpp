@@ -103,7 +103,8 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
 /// dielectricExitClosedForm (StoredForm::DielectricExitResidual): F averaged over GGX's slope
 /// spread follows E across the kink of total internal reflection, which the softened form does
 /// not (declared 1.3e-2 with it, 3.5e-3 / 4.3e-3 with this one on the 49 x 40 x 24 grid, 8.1e-4 /
-/// 6.9e-4 on mu 97 root4-layer-split2 x roughness 56 arcsine x eta' 41 angle; README glass).
+/// 6.9e-4 on mu 97 root4-layer-split2 x roughness 56 arcsine x eta' 41 angle, 9.4e-4 / 7.3e-4
+/// with roughness 50 arcsine; README glass).
 template <Quantity Q>
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   const Kind& k = KindOf(Q);
@@ -271,7 +272,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.fixedRuleMethod = FixedRuleMethod;
   // Entering: one walk per eta column, the Fresnel layer's panels at eta = 1.1's (integrate/
   // dielectric_albedo.cpp); the exit side's rule is unchanged (its grid is not: mu 97
-  // root4-layer-split2 x roughness 56 arcsine x eta' 41 angle).
+  // root4-layer-split2 x roughness 50 arcsine x eta' 41 angle).
   q.fixedRuleVersion = KindOf(Q).exit ? "3" : "4";
   if (!KindOf(Q).exit) q.bakeTable = BakeTable;
   q.evaluate = Evaluate;
