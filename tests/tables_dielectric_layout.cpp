@@ -7,18 +7,26 @@
 
 using namespace kiln;
 
-TEST_CASE("the glass averages: 24 roughness nodes, linear, by 16 eta nodes", "[dielectric]") {
-  for (const char* name :
-       {"ggx-dielectric-albedo-r-avg", "ggx-dielectric-albedo-t-avg",
-        "ggx-dielectric-albedo-r-exit-avg", "ggx-dielectric-albedo-t-exit-avg"}) {
-    INFO(name);
-    TableSpec spec = CatalogueTable(name, CatalogueOptions{});
+TEST_CASE(
+    "the glass averages: roughness linear by eta, 24 x 16 entering, 32 x 24 exit (its search "
+    "found 9.8e-4 on 24 x 16)",
+    "[dielectric]") {
+  struct Case {
+    const char* name;
+    int roughness, eta;
+  };
+  for (const Case& c :
+       {Case{"ggx-dielectric-albedo-r-avg", 24, 16}, Case{"ggx-dielectric-albedo-t-avg", 24, 16},
+        Case{"ggx-dielectric-albedo-r-exit-avg", 32, 24},
+        Case{"ggx-dielectric-albedo-t-exit-avg", 32, 24}}) {
+    INFO(c.name);
+    TableSpec spec = CatalogueTable(c.name, CatalogueOptions{});
     REQUIRE(spec.axes.size() == 2);
     CHECK(spec.axes[0].name == "roughness");
-    CHECK(spec.axes[0].size == 24);
+    CHECK(spec.axes[0].size == c.roughness);
     CHECK(spec.axes[0].warp == Warp::Linear);
     CHECK(spec.axes[1].name == "eta");
-    CHECK(spec.axes[1].size == 16);
+    CHECK(spec.axes[1].size == c.eta);
   }
 }
 

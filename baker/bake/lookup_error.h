@@ -72,8 +72,11 @@ std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel = 0
 /// descending. In each: fixed probe points (centre, the 2^d points at 0.2 / 0.8 of the cell,
 /// the 2d points at 0.05 / 0.95 of the cell on one axis and 0.5 on the others). Then in the
 /// cells whose probes erred most: coordinate-wise golden section from the worst probe, in the
-/// cell's warped coordinates, clamped to the cell, to a local maximum. Every point is placed by
-/// PointAtWarped. Deterministic: the same report for any thread count (oneTBB).
+/// cell's warped coordinates, clamped to the cell, to a local maximum. A table of at most 1,024
+/// cells whose automatic budget probed only some of them (a costly reference) also gets every
+/// other cell's centre, outside the budget, and the worst of those (as many as were probed, at
+/// least 8) probed in full before the climbs. Every point is placed by PointAtWarped.
+/// Deterministic: the same report for any thread count (oneTBB).
 LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
                                      const LookupSearchOptions& opt);
 

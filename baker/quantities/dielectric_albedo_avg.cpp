@@ -50,11 +50,14 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 /// The averages are smooth in r, quadratic at r -> 0 (alpha = r^2), and curve most at r ~ 0.7:
 /// with the sqrt warp the 24 x 16 grids declared 1.7e-3 (albedo-t-avg, at r = 0.79) and 1.2e-3
 /// (albedo-r-exit-avg, r = 0.96); with the linear warp all four stay below 1e-3 (README glass).
+/// Exit: 32 x 24, since the search probes every cell's centre (bake/lookup_error.cpp) and found
+/// albedo-r-exit-avg's 24 x 16 at 9.8e-4 (declared 1.5e-3; 8.3e-4 from 3 searched cells before),
+/// at roughness 0.41, eta' 0.37: 32 x 24 declares 7.3e-4 (24 x 24 1.1e-3, 32 x 20 8.7e-4).
 template <Quantity Q>
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
-  AxisSpec eta = KindOf(Q).exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 16, Warp::Linear}
+  AxisSpec eta = KindOf(Q).exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 24, Warp::Linear}
                                 : AxisSpec{"eta", kEtaMin, 3, 16, Warp::Sqrt};
-  return {{"roughness", 0, 1, 24, Warp::Linear}, eta};
+  return {{"roughness", 0, 1, KindOf(Q).exit ? 32 : 24, Warp::Linear}, eta};
 }
 
 template <Quantity Q>
