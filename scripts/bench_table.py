@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The README's 'Error against time' table from bench/bench.csv (a fixed selection of rows)."""
+"""docs/benchmarks.md's 'Error against time' table from bench/bench.csv (a fixed selection of rows)."""
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1] if len(sys.argv) > 1 else "bench/bench.csv")))
 keep_mc = {"1024", "65536", "64"}

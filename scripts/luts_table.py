@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the README's catalogue table (Markdown) from a kiln manifest.json."""
+"""Prints docs/catalogue.md's table (Markdown) from a kiln manifest.json."""
 import json
 import sys
 
