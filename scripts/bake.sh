@@ -2,5 +2,5 @@
 # Builds kiln and bakes the default catalogue into luts/ (extra args go to `kiln bake`).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$here/scripts/setup.sh" "$here/build"
+KILN_TARGET=kiln "$here/scripts/setup.sh" "$here/build"
 "$here/build/kiln" bake --out "$here/luts" "$@"

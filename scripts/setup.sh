@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages kiln needs (when missing), then configures and builds.
-# Usage: scripts/setup.sh [BUILD_DIR] [extra cmake args...]
+# Usage: [KILN_TARGET=name] scripts/setup.sh [BUILD_DIR] [extra cmake args...]
+# KILN_TARGET builds that target alone (scripts/bake.sh: the kiln executable, not the tests).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${1:-$here/build}"; shift || true
@@ -16,4 +17,4 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)"
+cmake --build "$build" -j "$(nproc)" ${KILN_TARGET:+--target "$KILN_TARGET"}
