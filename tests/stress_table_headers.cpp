@@ -24,7 +24,7 @@ std::string Texels(Kind kind, std::uint32_t width, std::uint32_t height) {
   if (kind == Kind::Png16) {
     for (std::uint32_t y = 0; y < height; ++y) {
       bytes += '\0';  // filter: none
-      for (std::uint32_t x = 0; x < width; ++x) bytes += "\x80\x00";
+      for (std::uint32_t x = 0; x < width; ++x) bytes += std::string("\x80\0", 2);
     }
     return bytes;
   }
