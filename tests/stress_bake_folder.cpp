@@ -71,11 +71,19 @@ TEST_CASE("ReadJsonFileCached parses a file once while it stays the same file",
   // Rewritten in place with another size: read again.
   WriteFile(path, "{\"a\": 33}");
   CHECK((*kiln::ReadJsonFileCached(path))["a"] == 33);
+  // Rewritten in place at once with the same size (the same times on a coarse clock): the bytes
+  // of a recently modified file are compared, so the new contents are read.
+  WriteFile(path, "{\"a\": 44}");
+  CHECK((*kiln::ReadJsonFileCached(path))["a"] == 44);
+  WriteFile(path, "{\"a\": 55}");
+  CHECK((*kiln::ReadJsonFileCached(path))["a"] == 55);
+  auto same = kiln::ReadJsonFileCached(path);
+  CHECK(kiln::ReadJsonFileCached(path) == same);  // unchanged bytes: the same document
   // A writer that renamed a document into place tells the cache what it holds.
   WriteFile(dir / "m.tmp", "{\"a\": 4}");
   fs::rename(dir / "m.tmp", path);
   auto told = std::make_shared<const nlohmann::ordered_json>(nlohmann::ordered_json{{"a", 4}});
-  kiln::RememberJsonFile(path, told);
+  kiln::RememberJsonFile(path, "{\"a\": 4}", told);
   CHECK(kiln::ReadJsonFileCached(path) == told);
   CHECK_THROWS_WITH(kiln::ReadJsonFileCached(dir / "missing.json"),
                     "cannot read " + (dir / "missing.json") + ": No such file or directory");

@@ -425,12 +425,13 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   PendingFile manifest(dir + "/manifest.json");
   auto doc = std::make_shared<const ordered_json>(
       ManifestDocument(dir, {table}, {evals}, format, half, texelsFrom));
-  manifest.WriteBytes(doc->dump(2) + "\n");
+  const std::string text = doc->dump(2) + "\n";
+  manifest.WriteBytes(text);
   std::vector<PendingFile*> files = {&exr};
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
   PendingFile::CommitAll(files);
-  RememberJsonFile(manifest.Path(), std::move(doc));  // still under the lock: what was written
+  RememberJsonFile(manifest.Path(), text, std::move(doc));  // under the lock: what was written
 }
 
 namespace {

@@ -44,16 +44,21 @@ std::string JsonErrorDetail(const std::string& what);
 nlohmann::ordered_json ParseBoundedJson(const std::string& text);
 
 /// The parsed contents of the JSON file at `path` (ParseBoundedJson), shared with every earlier
-/// call for the same path while the file is the same one (device, inode, size, modification and
-/// change times to the nanosecond): a run that reads one manifest for every table parses it once.
+/// call for the same path while the file is the same one: same device, inode, size, modification
+/// and change times (to the nanosecond), and, while its modification time is less than 2 s old
+/// (a file rewritten within one tick of the file system's clock keeps its times), the same bytes
+/// (read again and hashed). A run that reads one manifest for every table parses it once.
 /// Throws std::runtime_error "cannot read <path>: <strerror>" when it cannot be read and
 /// JsonTextError (ParseBoundedJson's, without the path) when it is refused. Keeps the last
-/// kJsonCacheFiles files. Thread-safe.
+/// kJsonCacheFiles files. Thread-safe. Each parse writes the test note "parsing '<path>'"
+/// (TestNote, test_hooks.h: only with KILN_TEST_NOTES set).
 std::shared_ptr<const nlohmann::ordered_json> ReadJsonFileCached(const std::string& path);
 
-/// Tells the cache of ReadJsonFileCached that the file at `path`, as it is now, holds `doc`: a
-/// writer that has just renamed the file into place (under the folder's lock) saves the next
-/// reader from parsing back what it wrote. Does nothing when `path` cannot be stat'ed.
-void RememberJsonFile(const std::string& path, std::shared_ptr<const nlohmann::ordered_json> doc);
+/// Tells the cache of ReadJsonFileCached that the file at `path`, as it is now, holds `text`,
+/// parsed as `doc`: a writer that has just renamed the file into place (under the folder's lock)
+/// saves the next reader from parsing back what it wrote. Does nothing when `path` cannot be
+/// stat'ed.
+void RememberJsonFile(const std::string& path, const std::string& text,
+                      std::shared_ptr<const nlohmann::ordered_json> doc);
 
 }  // namespace kiln

@@ -13,9 +13,6 @@
 
 namespace kiln {
 
-static_assert(kMaxSceneDepth == kMaxJsonDepth,
-              "scene files have the limit of every JSON kiln reads");
-
 std::string PointerChild(const std::string& parent, const std::string& token) {
   std::string escaped;
   for (char c : token) {
