@@ -10,6 +10,8 @@
 
 namespace kiln {
 
+/// An Imf::OStream writing with pwrite(2) to a file it opens; a failed write throws
+/// std::runtime_error with strerror(errno) and is remembered for Close().
 class ErrnoOStream : public Imf::OStream {
  public:
   /// Opens `path` for writing (truncating it, created with mode 0666 minus the umask); throws

@@ -1,6 +1,5 @@
 // Reads a kiln table from an OpenEXR file, checking every kiln.* attribute.
 #include "kiln/exr_loader.h"
-#include "kiln/table_checks.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfDoubleAttribute.h>
@@ -22,6 +21,8 @@
 #include <stdexcept>
 #include <system_error>
 #include <utility>
+
+#include "kiln/table_checks.h"
 
 namespace kiln {
 
