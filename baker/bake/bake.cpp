@@ -26,8 +26,9 @@
 #include <thread>
 
 #include "baker/bake/lookup_error.h"
-#include "baker/io/texture_readers.h"
 #include "baker/io/atomic_write.h"
+#include "baker/io/bounded_json.h"
+#include "baker/io/texture_readers.h"
 #include "baker/io/table_json.h"
 #include "baker/io/cpp_header_writer.h"
 #include "baker/io/exr_writer.h"
@@ -302,50 +303,61 @@ EntryKey KeyOf(const ordered_json& e) {
   return {name, file};
 }
 
-/// The entries of DIR/manifest.json by (name, file) ({} when it is missing); throws as
-/// CheckManifest.
-std::map<EntryKey, ordered_json> ManifestEntries(const std::string& dir) {
-  std::string path = dir + "/manifest.json";
-  std::map<EntryKey, ordered_json> entries;
-  struct stat st {};
-  if (lstat(path.c_str(), &st) != 0) {
-    if (errno == ENOENT) return entries;
-    throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
-  }
-  CheckWritableTarget(path);  // a link, FIFO or device is refused before it is read
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
-  ordered_json old;
-  try {
-    old = ordered_json::parse(in);
-  } catch (const std::exception& e) {
-    std::string reason = e.what();
-    if (reason.rfind("[json.exception.", 0) == 0 && reason.find("] ") != std::string::npos)
-      reason = reason.substr(reason.find("] ") + 2);
-    for (char& c : reason)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw std::runtime_error(path + " is not valid JSON (" + reason +
-                             "); move it aside or delete it");
-  }
+/// The entries of a manifest by (name, file), pointing into the parsed document they keep alive.
+struct ManifestEntryMap {
+  std::shared_ptr<const ordered_json> doc;  ///< null when there is no manifest
+  std::map<EntryKey, const ordered_json*> entries;
+};
+
+/// The entries of the manifest `doc` (at `path`) by (name, file); throws as CheckManifest.
+std::shared_ptr<const ManifestEntryMap> IndexManifest(const std::string& path,
+                                                      std::shared_ptr<const ordered_json> doc) {
+  auto map = std::make_shared<ManifestEntryMap>();
+  map->doc = std::move(doc);
+  const ordered_json& old = *map->doc;
   auto notOurs = [&](const std::string& why) {
     return std::runtime_error(path + " is not a kiln manifest (" + why +
                               "); move it aside or delete it");
   };
   if (!old.is_object() || !old.contains("tables") || !old["tables"].is_array())
     throw notOurs("no \"tables\" array");
-  for (auto& e : old["tables"]) {
+  for (const ordered_json& e : old["tables"]) {
     if (!e.is_object() || !e.contains("name") || !e["name"].is_string())
       throw notOurs("an entry without a \"name\"");
-    entries[KeyOf(e)] = e;
+    map->entries[KeyOf(e)] = &e;
   }
-  return entries;
+  return map;
 }
 
-/// The text of DIR/manifest.json with the entries of `tables` added or replaced.
-std::string ManifestText(const std::string& dir, const std::vector<Table>& tables,
-                         const std::vector<long long>& evals, OutputFormat format, bool half,
-                         const std::string& texelsFrom) {
-  std::map<EntryKey, ordered_json> entries = ManifestEntries(dir);
+/// The entries of DIR/manifest.json ({} when it is missing), parsed (ReadJsonFileCached) and
+/// indexed once per version of the file; throws as CheckManifest.
+std::shared_ptr<const ManifestEntryMap> ManifestEntries(const std::string& dir) {
+  static std::mutex mutex;
+  static std::shared_ptr<const ManifestEntryMap> last;  // the index of the last document read
+  const std::string path = dir + "/manifest.json";
+  struct stat st {};
+  if (lstat(path.c_str(), &st) != 0) {
+    if (errno == ENOENT) return std::make_shared<ManifestEntryMap>();
+    throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  }
+  CheckWritableTarget(path);  // a link, FIFO or device is refused before it is read
+  std::shared_ptr<const ordered_json> doc;
+  try {
+    doc = ReadJsonFileCached(path);
+  } catch (const JsonTextError& e) {
+    throw std::runtime_error(path + " is " + e.what() + "; move it aside or delete it");
+  }
+  std::lock_guard<std::mutex> lock(mutex);
+  if (!last || last->doc != doc) last = IndexManifest(path, std::move(doc));
+  return last;
+}
+
+/// DIR/manifest.json with the entries of `tables` added or replaced.
+ordered_json ManifestDocument(const std::string& dir, const std::vector<Table>& tables,
+                              const std::vector<long long>& evals, OutputFormat format, bool half,
+                              const std::string& texelsFrom) {
+  const std::shared_ptr<const ManifestEntryMap> old = ManifestEntries(dir);
+  std::map<EntryKey, ordered_json> added;
   for (size_t i = 0; i < tables.size(); ++i) {
     const Table& t = tables[i];
     ordered_json e;
@@ -372,14 +384,17 @@ std::string ManifestText(const std::string& dir, const std::vector<Table>& table
     if (!texelsFrom.empty()) e["texels_from"] = texelsFrom;  // derived: its evaluations are there
     e["bytes_float32"] = t.data.size() * 4;
     e["spec_hash"] = t.specHash;
-    entries[KeyOf(e)] = e;
+    const EntryKey key = KeyOf(e);
+    added[key] = std::move(e);
   }
+  std::map<EntryKey, const ordered_json*> entries = old->entries;
+  for (const auto& [key, e] : added) entries[key] = &e;
   ordered_json doc;
   doc["generator"] = kGenerator;
   doc["format"] = kFormatVersion;
   doc["tables"] = ordered_json::array();
-  for (auto& [name, e] : entries) doc["tables"].push_back(e);
-  return doc.dump(2) + "\n";
+  for (const auto& [key, e] : entries) doc["tables"].push_back(*e);
+  return doc;
 }
 
 }  // namespace
@@ -408,11 +423,15 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
   FolderLock lock(dir);
   RemoveStaleTemporaries(dir);
   PendingFile manifest(dir + "/manifest.json");
-  manifest.WriteBytes(ManifestText(dir, {table}, {evals}, format, half, texelsFrom));
+  auto doc = std::make_shared<const ordered_json>(
+      ManifestDocument(dir, {table}, {evals}, format, half, texelsFrom));
+  const std::string text = doc->dump(2) + "\n";
+  manifest.WriteBytes(text);
   std::vector<PendingFile*> files = {&exr};
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
   PendingFile::CommitAll(files);
+  RememberJsonFile(manifest.Path(), text, std::move(doc));  // under the lock: what was written
 }
 
 namespace {
@@ -433,10 +452,11 @@ bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool l
   const std::string file = spec.name + FormatExtension(format), path = dir + "/" + file;
   const std::string hash = spec.Hash();
   if (access(path.c_str(), R_OK) != 0) return false;
-  auto entries = ManifestEntries(dir);
-  auto it = entries.find({spec.name, file});
-  if (it == entries.end() || !it->second.contains("spec_hash") || it->second["spec_hash"] != hash)
-    return false;
+  const std::shared_ptr<const ManifestEntryMap> manifest = ManifestEntries(dir);
+  auto it = manifest->entries.find({spec.name, file});
+  if (it == manifest->entries.end()) return false;
+  const ordered_json& entry = *it->second;
+  if (!entry.contains("spec_hash") || entry["spec_hash"] != hash) return false;
   Table stored;
   try {
     stored = LoadAnyTable(path);
@@ -444,7 +464,7 @@ bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool l
       if (StoredAsHalf(path) != half) return false;
     } else {
       // The manifest says how the texels are stored ("float16", "float32", "unorm16").
-      std::string pixel = it->second.value("pixel_type", "");
+      std::string pixel = entry.value("pixel_type", "");
       if (pixel != (format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32"))
         return false;
     }
@@ -458,6 +478,12 @@ BakeRunResult BakeSpecs(const std::vector<TableSpec>& specs, const std::string& 
                         const BakeRunOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   BakeRunResult result;
+  {
+    // The temporary files of a killed bake go on every bake, also one with nothing to bake
+    // (CommitBakedTable sweeps again under the lock each time it commits).
+    FolderLock lock(dir);
+    RemoveStaleTemporaries(dir);
+  }
   NodeValueCache nodeValues(specs);
   for (const TableSpec& spec : specs) {
     if (!opt.force && IsUpToDate(spec, dir, opt.half, opt.bake.measureLookupError, opt.format)) {

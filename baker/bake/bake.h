@@ -125,7 +125,9 @@ struct BakeRunResult {
   double seconds = 0;                       ///< wall time of the whole run
 };
 
-/// Bakes each of `specs` into `dir` (which must exist; CheckManifest first), deriving a table's
+/// Bakes each of `specs` into `dir` (which must exist; CheckManifest first), first removing the
+/// temporary files of killed bakes from it (RemoveStaleTemporaries, under the folder's lock; also
+/// when every table is up to date), deriving a table's
 /// texels from a table baked before it in the same run where its kind says so (NodeValueCache:
 /// the same bytes as baking it alone), and commits it with
 /// its manifest entry (CommitBakedTable), table by table, except those IsUpToDate finds (unless

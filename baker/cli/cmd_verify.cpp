@@ -14,6 +14,7 @@
 
 #include "baker/bake/lookup_error.h"
 #include "baker/cli/commands.h"
+#include "baker/io/texture_readers.h"
 #include "baker/models/registry.h"
 #include "kiln/exr_loader.h"
 
@@ -139,10 +140,13 @@ void RegisterVerify(CLI::App& app) {
           std::printf("%-40s FAILED: %s\n", f.c_str(), why.c_str());
         ++failed;
       };
+      // Any format kiln writes (EXR, KTX2, DDS with its manifest.json, 16-bit PNG): the texels
+      // as stored, so a float16 or unorm16 file is measured with its rounding.
       Table t;
-      std::string error;
-      if (!loadTable(f, t, error)) {
-        fail(error);
+      try {
+        t = LoadAnyTable(f);
+      } catch (const std::exception& e) {
+        fail(e.what());
         continue;
       }
       TableSpec spec;

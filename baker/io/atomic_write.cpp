@@ -293,11 +293,21 @@ void writeAtomically(const std::string& path,
 }
 
 void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream stream(path, std::ios::binary | std::ios::trunc);
-  if (!stream) throw std::runtime_error("cannot create '" + path + "': " + std::strerror(errno));
-  stream.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  stream.close();
-  if (!stream) throw std::runtime_error("error while writing '" + path + "'");
+  const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw std::runtime_error("cannot create '" + path + "': " + std::strerror(errno));
+  int error = 0;
+  for (std::size_t done = 0; done < bytes.size() && error == 0;) {
+    const ssize_t w = write(fd, bytes.data() + done, bytes.size() - done);
+    if (w > 0)
+      done += static_cast<std::size_t>(w);
+    else if (w == 0)
+      error = ENOSPC;  // nothing written and no error: the device is full
+    else if (errno != EINTR)
+      error = errno;
+  }
+  if (close(fd) != 0 && error == 0) error = errno;
+  // The system's reason alone: the caller (PendingFile::Write) names the destination file.
+  if (error != 0) throw std::runtime_error(std::strerror(error));
 }
 
 }  // namespace kiln

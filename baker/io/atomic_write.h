@@ -88,8 +88,10 @@ void InstallCleanupHandlers();
 void writeAtomically(const std::string& path,
                      const std::function<void(const std::string& temporaryPath)>& write);
 
-/// Writes `bytes` to the file `path` (truncating it); throws std::runtime_error naming the file
-/// when it cannot be opened or written completely. Used inside writeAtomically's callback.
+/// Writes `bytes` to the file `path` (truncating it) with write(2). Throws std::runtime_error
+/// "cannot create '<path>': <strerror>" when it cannot be opened, and the bare strerror text
+/// ("No space left on device") when a write or the close fails: PendingFile::Write, its caller,
+/// names the destination. Used inside writeAtomically's callback.
 void writeBytes(const std::string& path, const std::string& bytes);
 
 }  // namespace kiln

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "baker/io/atomic_write.h"
+#include "baker/io/errno_ostream.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
@@ -70,9 +71,13 @@ void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, 
       frameBuffer.insert(
           names[c], Imf::Slice::Make(Imf::FLOAT, table.data.data() + c, window, xStride, yStride));
   }
-  Imf::OutputFile file(filePath.c_str(), header, threads > 1 ? threads : 0);
-  file.setFrameBuffer(frameBuffer);
-  file.writePixels(table.imageHeight());
+  ErrnoOStream stream(filePath);  // keeps errno: "No space left on device"
+  {
+    Imf::OutputFile file(stream, header, threads > 1 ? threads : 0);
+    file.setFrameBuffer(frameBuffer);
+    file.writePixels(table.imageHeight());
+  }  // the line offsets are written here, errors swallowed: Close() reports them
+  stream.Close();
 }
 
 }  // namespace

@@ -1,18 +1,23 @@
 #include "baker/io/texture_readers.h"
 
 #include <Imath/half.h>
+#include <unistd.h>
 #include <zlib.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
+#include "baker/io/bounded_json.h"
 #include "baker/io/texture_writers.h"
 #include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
+#include "kiln/table_checks.h"
 
 namespace kiln {
 namespace {
@@ -22,6 +27,12 @@ using nlohmann::ordered_json;
 /// The most texel values a texture file may declare (the writers' tables are far smaller; this
 /// bounds what a hostile header can make the reader allocate: 1 GiB of floats).
 constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 28;
+
+/// Where a DDS file's texels start: magic, DDS_HEADER (124 bytes), DDS_HEADER_DXT10 (20 bytes).
+constexpr std::uint64_t kDdsDataAt = 148;
+
+/// The most bytes one byte of a zlib stream inflates to (deflate's limit is about 1032).
+constexpr std::uint64_t kMaxInflateRatio = 1100;
 
 [[noreturn]] void Bad(const std::string& why) { throw std::invalid_argument(why); }
 
@@ -47,10 +58,34 @@ std::uint32_t BigEndian32(const std::string& bytes, std::size_t at) {
 
 ordered_json ParseJson(const std::string& text, const char* where) {
   try {
-    return ordered_json::parse(text);
-  } catch (const std::exception&) {
-    Bad(std::string(where) + " is not valid JSON");
+    return ParseBoundedJson(text);
+  } catch (const JsonTextError& e) {
+    Bad(std::string(where) + " is " + e.what());
   }
+}
+
+/// The integer j[key] (a JSON integer, not a number with a fraction) within int's range.
+int GetInt(const ordered_json& j, const char* key) {
+  if (!j.contains(key)) Bad(std::string("description has no \"") + key + "\"");
+  const ordered_json& v = j.at(key);
+  if (!v.is_number_integer())
+    Bad(std::string("description's \"") + key + "\" is " + v.dump() + ", not an integer");
+  const bool fits = v.is_number_unsigned()
+                        ? v.get<std::uint64_t>() <= std::uint64_t{INT_MAX}
+                        : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
+  if (!fits) Bad(std::string("description's \"") + key + "\" is " + v.dump() + ", out of range");
+  return static_cast<int>(v.get<std::int64_t>());
+}
+
+/// Refuses a description whose "format" is not the integer kFormatVersion (formatVersionProblem).
+void CheckFormatVersion(const ordered_json& j, const char* where) {
+  if (!j.is_object() || !j.contains("format") || !j["format"].is_number_integer())
+    Bad(std::string(where) + " has no integer \"format\" (the format version)");
+  const ordered_json& v = j["format"];
+  const long long version =
+      v.is_number_unsigned() && v.get<std::uint64_t>() > LLONG_MAX ? LLONG_MAX : v.get<long long>();
+  const std::string problem = formatVersionProblem(version);
+  if (!problem.empty()) Bad(std::string(where) + ": " + problem);
 }
 
 template <class T>
@@ -64,9 +99,14 @@ T Get(const ordered_json& j, const char* key) {
 }
 
 /// Checks that the table's axes give `width` x `height` x `depth` texels of `channels` values
-/// (a 1D table is N x 1, a 2D table has depth 0 or 1) and sizes its data.
+/// (a 1D table is N x 1, a 2D table has depth 0 or 1), and that the `need(values)` bytes of texel
+/// data those take in the file are no more than the `present` bytes the file holds for them
+/// (`what` says where, e.g. "in level 0"), before it sizes the table's data: a header cannot make
+/// the reader allocate more than the file could fill.
+template <class Need>
 void CheckShape(Table& t, std::uint64_t width, std::uint64_t height, std::uint64_t depth,
-                std::uint64_t channels) {
+                std::uint64_t channels, const Need& need, std::uint64_t present,
+                const std::string& what) {
   if (channels != t.channels.size())
     Bad("the file holds " + std::to_string(channels) + " channel(s), its description " +
         std::to_string(t.channels.size()));
@@ -81,6 +121,10 @@ void CheckShape(Table& t, std::uint64_t width, std::uint64_t height, std::uint64
   const std::uint64_t values = width * height * depth * channels;
   if (width > (1u << 20) || height > (1u << 20) || depth > (1u << 20) || values > kMaxValues)
     Bad("more than 2^28 values");
+  const std::uint64_t needBytes = need(values);
+  if (needBytes > present)
+    Bad("truncated texel data (" + std::to_string(needBytes) + " bytes expected, " +
+        std::to_string(present) + " " + what + ")");
   t.data.assign(static_cast<std::size_t>(values), 0.0f);
 }
 
@@ -146,12 +190,10 @@ Table TableFromDescription(const ordered_json& j) {
     ta.name = Get<std::string>(a, "name");
     ta.axis.lo = Get<double>(a, "lo");
     ta.axis.hi = Get<double>(a, "hi");
-    ta.axis.size = Get<int>(a, "size");
+    ta.axis.size = GetInt(a, "size");
     std::string warp = Get<std::string>(a, "warp");
     if (!warpFromName(warp.c_str(), ta.axis.warp)) Bad("unknown warp '" + warp + "'");
     if (a.contains("split")) ta.axis.split = Get<double>(a, "split");
-    std::string problem = axisProblem(ta.axis);
-    if (!problem.empty()) Bad("axis '" + ta.name + "': " + problem);
     t.axes.push_back(ta);
   }
   t.params = Get<std::string>(j, "params");
@@ -170,6 +212,9 @@ Table TableFromDescription(const ordered_json& j) {
     t.lookupError.cubicRms = Get<double>(j["lookup_error_cubic"], "rms");
   }
   t.specHash = Get<std::string>(j, "spec_hash");
+  // The checks of the EXR loader's header (kiln/table_checks.h), before any texel is allocated.
+  const std::string problem = tableHeaderProblem(t);
+  if (!problem.empty()) Bad("invalid table: " + problem);
   return t;
 }
 
@@ -217,9 +262,15 @@ Table DecodeKtx2(const std::string& bytes) {
     p += 4 + ((len + 3) / 4) * 4;
   }
   if (json.empty()) Bad("no kiln.json key (not a kiln table)");
-  Table t = TableFromDescription(ParseJson(json, "kiln.json"));
-  CheckShape(t, width, height == 0 ? 1 : height, depth, static_cast<std::uint64_t>(channels));
+  const ordered_json meta = ParseJson(json, "kiln.json");
+  CheckFormatVersion(meta, "kiln.json");
+  Table t = TableFromDescription(meta);
   const std::uint64_t levelAt = r.U64(80), levelLength = r.U64(88);
+  const std::uint64_t levelPresent = levelAt > bytes.size() ? 0 : bytes.size() - levelAt;
+  CheckShape(
+      t, width, height == 0 ? 1 : height, depth, static_cast<std::uint64_t>(channels),
+      [&](std::uint64_t values) { return values * typeSize; }, std::min(levelPresent, levelLength),
+      "in level 0");
   if (levelLength != t.data.size() * typeSize)
     Bad("level 0 holds " + std::to_string(levelLength) + " bytes, the texels need " +
         std::to_string(t.data.size() * typeSize));
@@ -268,8 +319,12 @@ Table DecodeDds(const std::string& bytes, const ordered_json& description) {
       Bad("DXGI format " + std::to_string(dxgi) + " (kiln writes R/RG/RGB/RGBA 16/32-bit float)");
   }
   Table t = TableFromDescription(description);
-  CheckShape(t, width, height, depth, static_cast<std::uint64_t>(channels));
-  ReadTexels(t, bytes, 148, half);
+  const std::uint64_t typeSize = half ? 2 : 4;
+  CheckShape(
+      t, width, height, depth, static_cast<std::uint64_t>(channels),
+      [&](std::uint64_t values) { return values * typeSize; },
+      bytes.size() < kDdsDataAt ? 0 : bytes.size() - kDdsDataAt, "after the header");
+  ReadTexels(t, bytes, kDdsDataAt, half);
   Validate(t);
   return t;
 }
@@ -313,6 +368,7 @@ Table DecodePng16(const std::string& bytes) {
   if (!samples) Bad("no IHDR chunk");
   if (json.empty()) Bad("no kiln.json text chunk (not a kiln table)");
   const ordered_json meta = ParseJson(json, "kiln.json");
+  CheckFormatVersion(meta, "kiln.json");
   Table t = TableFromDescription(meta);
   const std::size_t nc = t.channels.size();
   const std::size_t expectSamples = nc == 1 ? 1 : nc == 4 ? 4 : 3;
@@ -322,8 +378,13 @@ Table DecodePng16(const std::string& bytes) {
       static_cast<std::uint64_t>(t.size(1)) * static_cast<std::uint64_t>(t.size(2)))
     Bad("the image has " + std::to_string(height) + " rows, the axes need " +
         std::to_string(t.size(1) * t.size(2)));
-  CheckShape(t, width, static_cast<std::uint64_t>(t.size(1)), static_cast<std::uint64_t>(t.size(2)),
-             nc);
+  // Each row is a filter byte and width x samples 16-bit values; no deflate stream inflates by
+  // more than kMaxInflateRatio.
+  CheckShape(
+      t, width, static_cast<std::uint64_t>(t.size(1)), static_cast<std::uint64_t>(t.size(2)), nc,
+      [&](std::uint64_t) { return (std::uint64_t{width} * samples * 2 + 1) * height; },
+      static_cast<std::uint64_t>(idat.size()) * kMaxInflateRatio,
+      "at most from the compressed image data");
   std::vector<double> scale, offset;
   try {
     scale = meta.at("png16").at("scale").get<std::vector<double>>();
@@ -413,11 +474,19 @@ Table LoadAnyTable(const std::string& path) {
     const std::size_t slash = path.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash);
     const std::string file = slash == std::string::npos ? path : path.substr(slash + 1);
-    std::ifstream mf(dir + "/manifest.json", std::ios::binary);
-    if (!mf) throw fail("a DDS file carries no description; manifest.json must be beside it");
-    std::stringstream text;
-    text << mf.rdbuf();
-    const ordered_json manifest = ParseJson(text.str(), "manifest.json");
+    const std::string manifestPath = dir + "/manifest.json";
+    if (access(manifestPath.c_str(), F_OK) != 0 && errno == ENOENT)
+      throw fail("a DDS file carries no description; manifest.json must be beside it");
+    std::shared_ptr<const ordered_json> parsed;
+    try {
+      parsed = ReadJsonFileCached(manifestPath);  // parsed once for all the DDS files of a run
+    } catch (const JsonTextError& e) {
+      throw fail(manifestPath + " is " + e.what());
+    } catch (const std::runtime_error& e) {
+      throw fail(e.what());
+    }
+    const ordered_json& manifest = *parsed;
+    CheckFormatVersion(manifest, "manifest.json");
     if (manifest.contains("tables") && manifest["tables"].is_array())
       for (const ordered_json& e : manifest["tables"])
         if (e.is_object() && e.contains("file") && e["file"] == file) {

@@ -25,12 +25,16 @@ TableFileKind SniffTableFile(const std::string& firstBytes);
 /// A table from the JSON description kiln writes (manifest entry, kiln.json): name, model,
 /// quantity, channels, channel_meanings, axes, params, method, tolerance, bake_error,
 /// lookup_error, spec_hash, generator (the keys AppendTableDescription writes). No texels.
-/// Throws std::invalid_argument naming the first missing or malformed key.
+/// Throws std::invalid_argument naming the first missing or malformed key (an axis size must be
+/// a JSON integer within int), or the first problem tableHeaderProblem (kiln/table_checks.h, the
+/// EXR loader's header checks) finds. The format version is checked by the callers.
 Table TableFromDescription(const nlohmann::ordered_json& description);
 
 /// The table in the bytes of a KTX2 file kiln wrote (one level, R/RG/RGB/RGBA 16- or 32-bit
-/// float, kiln.json present). Throws std::invalid_argument with a one-line reason for a file
-/// that is not one (truncated, another vkFormat, sizes that disagree with kiln.json, ...).
+/// float, kiln.json present, nested at most kMaxJsonDepth deep, with the integer "format" 1).
+/// Throws std::invalid_argument with a one-line reason for a file that is not one (truncated,
+/// another vkFormat, sizes that disagree with kiln.json, ...); a level shorter than the texels
+/// the header declares is refused before anything is allocated for them.
 Table DecodeKtx2(const std::string& bytes);
 
 /// The table in the bytes of a DDS file kiln wrote (DX10 header, R/RG/RGB/RGBA float formats),
@@ -44,8 +48,9 @@ Table DecodeDds(const std::string& bytes, const nlohmann::ordered_json& descript
 Table DecodePng16(const std::string& bytes);
 
 /// Loads any kiln table file: EXR (kiln/exr_loader.h), KTX2, DDS (with manifest.json beside it)
-/// or 16-bit PNG, by its first bytes. Throws std::runtime_error "cannot read 'PATH': REASON"
-/// (one line).
+/// or 16-bit PNG, by its first bytes. A DDS file's manifest.json (its top-level "format" must be
+/// 1) is parsed once per run (ReadJsonFileCached). Throws std::runtime_error "cannot read 'PATH':
+/// REASON" (one line).
 Table LoadAnyTable(const std::string& path);
 
 }  // namespace kiln

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "baker/io/bounded_json.h"
+
 namespace kiln {
 
 std::string PointerChild(const std::string& parent, const std::string& token) {
@@ -47,59 +49,12 @@ class PlacedDomParser : public nlohmann::detail::json_sax_dom_parser<Json> {
   }
 };
 
-/// "line L, column C" of text[offset] (0-based offset; 1-based line and column).
-std::string LineColumn(const std::string& text, size_t offset) {
-  int line = 1, column = 1;
-  for (size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
-/// nlohmann's message without its "[json.exception.out_of_range.406] " head, on one line.
-std::string JsonErrorDetail(const std::string& what) {
-  size_t head = what.rfind("[json.exception.", 0) == 0 ? what.find("] ") : std::string::npos;
-  std::string detail = head == std::string::npos ? what : what.substr(head + 2);
-  for (char& c : detail)
-    if (c == '\n' || c == '\r') c = ' ';
-  return detail;
-}
-
-/// The offset of the first '[' or '{' (outside strings) that opens level kMaxSceneDepth + 1, or
-/// npos. A pre-scan, so that a deep document costs neither the parser's memory nor the
-/// recursion of whoever walks it.
-size_t TooDeepAt(const std::string& text) {
-  size_t depth = 0;
-  bool inString = false;
-  for (size_t i = 0; i < text.size(); ++i) {
-    char c = text[i];
-    if (inString) {
-      if (c == '\\')
-        ++i;
-      else if (c == '"')
-        inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      if (++depth > kMaxSceneDepth) return i;
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
-    }
-  }
-  return std::string::npos;
-}
-
 }  // namespace
 
 Json ParseSceneJson(const std::string& text, const std::string& file, const std::string& prefix) {
-  size_t deep = TooDeepAt(text);
+  size_t deep = JsonTooDeepAt(text, kMaxSceneDepth);
   if (deep != std::string::npos)
-    throw SceneError(file, prefix + LineColumn(text, deep),
+    throw SceneError(file, prefix + JsonLineColumn(text, deep),
                      "nested deeper than " + std::to_string(kMaxSceneDepth) + " levels");
   Json doc;
   PlacedDomParser parser(doc);
@@ -114,14 +69,14 @@ Json ParseSceneJson(const std::string& text, const std::string& file, const std:
     std::string detail = JsonErrorDetail(e.what());
     size_t colon = detail.find(": ");
     if (colon != std::string::npos) detail = detail.substr(colon + 2);
-    throw SceneError(file, prefix + LineColumn(text, end), "not valid JSON (" + detail + ")");
+    throw SceneError(file, prefix + JsonLineColumn(text, end), "not valid JSON (" + detail + ")");
   } catch (const Json::exception& e) {
     // Valid JSON kiln cannot hold, e.g. "[json.exception.out_of_range.406] number overflow
     // parsing '1e999'": placed at the start of the token when the parser said where it stopped.
     std::string place;
     if (parser.position > 0)
-      place = prefix +
-              LineColumn(text, parser.position - std::min(parser.position, parser.token.size()));
+      place = prefix + JsonLineColumn(
+                           text, parser.position - std::min(parser.position, parser.token.size()));
     throw SceneError(file, place, "cannot be read (" + JsonErrorDetail(e.what()) + ")");
   }
 }

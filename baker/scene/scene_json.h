@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "baker/io/bounded_json.h"
 #include "baker/scene/scene_error.h"
 
 namespace kiln {
@@ -16,8 +17,9 @@ std::string PointerChild(const std::string& parent, size_t index);
 
 /// The largest scene file ReadSceneFile reads (a larger glb: its JSON chunk, up to this size).
 constexpr size_t kMaxSceneBytes = size_t{64} << 20;
-/// The deepest nesting of arrays and objects ParseSceneJson accepts (glTF needs about 8).
-constexpr size_t kMaxSceneDepth = 64;
+/// The deepest nesting of arrays and objects ParseSceneJson accepts (glTF needs about 8): the
+/// limit of every JSON kiln reads (bounded_json.h).
+constexpr size_t kMaxSceneDepth = kMaxJsonDepth;
 
 /// Parses `text` as JSON; a syntax error throws SceneError at "line L, column C" (`prefix` goes
 /// before it, e.g. "JSON chunk, " for a glb), and so does nesting deeper than kMaxSceneDepth.

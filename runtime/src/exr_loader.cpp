@@ -22,6 +22,8 @@
 #include <system_error>
 #include <utility>
 
+#include "kiln/table_checks.h"
+
 namespace kiln {
 
 namespace {
@@ -96,35 +98,12 @@ void checkReadableFile(const std::string& path) {
   if (stream.peek() == std::ifstream::traits_type::eof()) throw Refusal("the file is empty");
 }
 
-/// x with %.17g.
-std::string numberText(double x) {
-  char text[40];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
-
-/// The largest |lo| and |hi| of an axis: every kiln axis is a cosine, a roughness, an index of
-/// refraction or an extinction coefficient, far below it.
-constexpr double kMaxAxisMagnitude = 1e6;
-
-/// Why a valid axis is still absurd (lo or hi beyond kMaxAxisMagnitude, or hi - lo not finite,
-/// which would make every lookup and every verification point overflow); "" when it is not.
-std::string axisRangeProblem(const Axis& axis) {
-  if (!(std::fabs(axis.lo) <= kMaxAxisMagnitude && std::fabs(axis.hi) <= kMaxAxisMagnitude))
-    return "lo " + numberText(axis.lo) + " or hi " + numberText(axis.hi) +
-           " is beyond +-1e6, where no kiln axis reaches";
-  if (!std::isfinite(axis.hi - axis.lo)) return "hi - lo is not finite";
-  return "";
-}
-
 /// Fills every metadata field of `table` from the kiln.* attributes.
 void readAttributes(const Imf::Header& h, Table& table) {
   if (h.find("kiln.format") == h.end())
     throw Refusal("not a kiln table (no kiln.format attribute)");
-  const int format = requireInt(h, "kiln.format");
-  if (format != kFormatVersion)
-    throw Refusal("format version " + std::to_string(format) + ", this runtime reads " +
-                  std::to_string(kFormatVersion));
+  const std::string formatIssue = formatVersionProblem(requireInt(h, "kiln.format"));
+  if (!formatIssue.empty()) throw Refusal(formatIssue);
 
   table.generator = optionalString(h, "kiln.generator");
   table.name = requireString(h, "kiln.name");
@@ -152,10 +131,6 @@ void readAttributes(const Imf::Header& h, Table& table) {
           "root4-layer-split, root4-layer-angle, root4-layer-split2, arcsine");
     // A constant split point of a root4-layer-split axis; absent: NaN, the critical cosine.
     a.axis.split = optionalDouble(h, prefix + "split", std::numeric_limits<double>::quiet_NaN());
-    std::string axisIssue = axisProblem(a.axis);
-    if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
-    if (!axisIssue.empty())
-      throw Refusal("axis " + std::to_string(d) + " ('" + a.name + "'): " + axisIssue);
   }
 
   table.params = optionalString(h, "kiln.params");
@@ -174,6 +149,9 @@ void readAttributes(const Imf::Header& h, Table& table) {
   table.fitError.polygonMax = optionalDouble(h, "kiln.fit_error.polygon_max", -1.0);
   table.fitError.polygonRms = optionalDouble(h, "kiln.fit_error.polygon_rms", -1.0);
   table.fitError.method = optionalString(h, "kiln.fit_error.method");
+  // The checks every table file's header goes through (KTX2, DDS and PNG readers too).
+  const std::string headerIssue = tableHeaderProblem(table);
+  if (!headerIssue.empty()) throw Refusal(headerIssue);
 }
 
 /// Checks the image's channels and returns the EXR channel name of each
@@ -438,7 +416,7 @@ Table readTable(const std::string& path) {
                   std::to_string(height));
   const std::uint64_t values = static_cast<std::uint64_t>(width) *
                                static_cast<std::uint64_t>(height) * table.channels.size();
-  if (values > (std::uint64_t{1} << 30)) throw Refusal("the table is too large");
+  if (values > kMaxTableValues) throw Refusal("the table is too large");
 
   table.data.assign(static_cast<std::size_t>(values), 0.0f);
   const std::size_t channelCount = table.channels.size();

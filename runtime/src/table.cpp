@@ -6,17 +6,36 @@
 #include <cstdio>
 #include <set>
 
+#include "kiln/table_checks.h"
+
 namespace kiln {
 
 namespace {
-/// Upper bound on the values of a table (4 GiB of floats); keeps every index
-/// and the image height within int and rejects absurd headers early.
-constexpr std::uint64_t kMaxValues = std::uint64_t{1} << 30;
+/// Upper bound on the values of a table (kMaxTableValues); keeps every index and the image
+/// height within int and rejects absurd headers early.
+constexpr std::uint64_t kMaxValues = kMaxTableValues;
 /// A number printed with enough digits to tell close bounds apart.
 std::string number(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.9g", value);
   return text;
+}
+
+/// x with %.17g.
+std::string numberText(double x) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+
+/// Why a valid axis is still absurd (lo or hi beyond kMaxAxisMagnitude, or hi - lo not finite,
+/// which would make every lookup and every verification point overflow); "" when it is not.
+std::string axisRangeProblem(const Axis& axis) {
+  if (!(std::fabs(axis.lo) <= kMaxAxisMagnitude && std::fabs(axis.hi) <= kMaxAxisMagnitude))
+    return "lo " + numberText(axis.lo) + " or hi " + numberText(axis.hi) +
+           " is beyond +-1e6, where no kiln axis reaches";
+  if (!std::isfinite(axis.hi - axis.lo)) return "hi - lo is not finite";
+  return "";
 }
 
 }  // namespace
@@ -70,80 +89,72 @@ std::string joinList(const std::vector<std::string>& items, char separator) {
   return text;
 }
 
-bool validateTable(const Table& table, std::string& problem) {
+namespace {
+
+/// Why axis d of `table` cannot be read, "" when it can (tableHeaderProblem).
+std::string axisHeaderProblem(const Table& table, int d) {
   const int dims = table.dims();
-  if (dims < 1 || dims > 3) {
-    problem = "dims is " + std::to_string(dims) + ", must be 1, 2 or 3";
-    return false;
-  }
+  const TableAxis& a = table.axes[static_cast<std::size_t>(d)];
+  const std::string label = "axis " + std::to_string(d) + " ('" + a.name + "')";
+  if (a.name.empty()) return "axis " + std::to_string(d) + " has no name";
+  std::string axisIssue = axisProblem(a.axis);
+  if (axisIssue.empty()) axisIssue = axisRangeProblem(a.axis);
+  if (!axisIssue.empty()) return label + ": " + axisIssue;
+  if (isLayerWarp(a.axis.warp) && (d != 0 || dims < 2))
+    return label + ": the " + warpName(a.axis.warp) +
+           " warp couples axis 0 to axis 1; it is allowed "
+           "only on axis 0 of a table with two or more axes";
+  if (a.axis.warp == Warp::Root4LayerSplit2 && dims != 3)
+    return label +
+           ": the root4-layer-split2 warp reads axes 1 and 2; it is allowed only on axis 0 "
+           "of a table with three axes";
+  if (a.axis.warp == Warp::Root4LayerSplit && dims != 3 && !a.axis.hasConstantSplit())
+    return label +
+           ": the root4-layer-split warp without a constant split reads axes 1 and 2; it "
+           "is allowed only on axis 0 of a table with three axes";
+  return "";
+}
+
+}  // namespace
+
+std::string formatVersionProblem(long long version) {
+  if (version == kFormatVersion) return "";
+  return "format version " + std::to_string(version) + ", this runtime reads " +
+         std::to_string(kFormatVersion);
+}
+
+std::string tableHeaderProblem(const Table& table) {
+  const int dims = table.dims();
+  if (dims < 1 || dims > 3) return "dims is " + std::to_string(dims) + ", must be 1, 2 or 3";
   std::uint64_t nodes = 1;
   for (int d = 0; d < dims; ++d) {
-    const TableAxis& a = table.axes[static_cast<std::size_t>(d)];
-    const std::string label = "axis " + std::to_string(d) + " ('" + a.name + "')";
-    if (a.name.empty()) {
-      problem = "axis " + std::to_string(d) + " has no name";
-      return false;
-    }
-    const std::string axisIssue = axisProblem(a.axis);
-    if (!axisIssue.empty()) {
-      problem = label + ": " + axisIssue;
-      return false;
-    }
-    if (isLayerWarp(a.axis.warp) && (d != 0 || dims < 2)) {
-      problem = label + ": the " + warpName(a.axis.warp) +
-                " warp couples axis 0 to axis 1; it is allowed "
-                "only on axis 0 of a table with two or more axes";
-      return false;
-    }
-    if (a.axis.warp == Warp::Root4LayerSplit2 && dims != 3) {
-      problem = label +
-                ": the root4-layer-split2 warp reads axes 1 and 2; it is allowed only on axis 0 "
-                "of a table with three axes";
-      return false;
-    }
-    if (a.axis.warp == Warp::Root4LayerSplit && dims != 3 && !a.axis.hasConstantSplit()) {
-      problem = label +
-                ": the root4-layer-split warp without a constant split reads axes 1 and 2; it "
-                "is allowed only on axis 0 of a table with three axes";
-      return false;
-    }
-    nodes *= static_cast<std::uint64_t>(a.axis.size);
-    if (nodes > kMaxValues) {
-      problem = "the grid is too large (more than 2^30 nodes)";
-      return false;
-    }
+    const std::string axisIssue = axisHeaderProblem(table, d);
+    if (!axisIssue.empty()) return axisIssue;
+    nodes *= static_cast<std::uint64_t>(table.axes[static_cast<std::size_t>(d)].axis.size);
+    if (nodes > kMaxValues) return "the grid is too large (more than 2^30 nodes)";
   }
-  if (table.channels.empty()) {
-    problem = "the table has no channels";
-    return false;
-  }
+  if (table.channels.empty()) return "the table has no channels";
   std::set<std::string> seen;
   for (const std::string& c : table.channels) {
-    if (c.empty() || c.find(',') != std::string::npos) {
-      problem = "channel name '" + c + "' is empty or contains ','";
-      return false;
-    }
-    if (!seen.insert(c).second) {
-      problem = "channel name '" + c + "' appears twice";
-      return false;
-    }
+    if (c.empty() || c.find(',') != std::string::npos)
+      return "channel name '" + c + "' is empty or contains ','";
+    if (!seen.insert(c).second) return "channel name '" + c + "' appears twice";
   }
-  if (!table.channelMeanings.empty() && table.channelMeanings.size() != table.channels.size()) {
-    problem = std::to_string(table.channelMeanings.size()) + " channel meanings for " +
-              std::to_string(table.channels.size()) + " channels";
-    return false;
-  }
-  for (const std::string& m : table.channelMeanings) {
-    if (m.find(';') != std::string::npos) {
-      problem = "channel meaning '" + m + "' contains ';'";
-      return false;
-    }
-  }
-  const std::uint64_t expected = nodes * table.channels.size();
-  if (expected > kMaxValues) {
-    problem = "the table is too large (more than 2^30 values)";
-    return false;
-  }
+  if (!table.channelMeanings.empty() && table.channelMeanings.size() != table.channels.size())
+    return std::to_string(table.channelMeanings.size()) + " channel meanings for " +
+           std::to_string(table.channels.size()) + " channels";
+  for (const std::string& m : table.channelMeanings)
+    if (m.find(';') != std::string::npos) return "channel meaning '" + m + "' contains ';'";
+  if (nodes * table.channels.size() > kMaxValues)
+    return "the table is too large (more than 2^30 values)";
+  return "";
+}
+
+bool validateTable(const Table& table, std::string& problem) {
+  problem = tableHeaderProblem(table);
+  if (!problem.empty()) return false;
+  std::uint64_t expected = table.channels.size();
+  for (int d = 0; d < table.dims(); ++d) expected *= static_cast<std::uint64_t>(table.size(d));
   if (table.data.size() != expected) {
     problem = "data holds " + std::to_string(table.data.size()) + " values, the grid needs " +
               std::to_string(expected);

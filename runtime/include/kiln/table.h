@@ -87,13 +87,13 @@ struct Table {
   }
 };
 
-/// Checks that a table is consistent and writable: 1..3 axes, each valid
-/// (size >= 1, finite lo < hi, lo > 0 for log) with a non-empty name, at least
-/// one channel, channel names non-empty, unique and free of ',', channel
-/// meanings either empty or one per channel and free of ';', data size equal to
-/// size0 * size1 * size2 * channels, every texel finite. Returns true when it
-/// is; otherwise false with a one-line description of the first problem in
-/// `problem`.
+/// Checks that a table is consistent and writable: its header passes
+/// tableHeaderProblem (kiln/table_checks.h: 1..3 named axes, each valid with lo
+/// and hi within +-1e6, at most 2^30 values, at least one channel, channel names
+/// non-empty, unique and free of ',', channel meanings either empty or one per
+/// channel and free of ';'), data size equal to size0 * size1 * size2 *
+/// channels, every texel finite. Returns true when it is; otherwise false with a
+/// one-line description of the first problem in `problem`.
 bool validateTable(const Table& table, std::string& problem);
 
 /// Why `axis` is not Axis::valid() ("size is 0, must be >= 1", "lo 2 >= hi 1",
