@@ -37,6 +37,7 @@ struct TableNeed {
   std::string model;                         ///< "ggx", ...; "none" for the Fresnel tables
   std::map<std::string, ValueRange> ranges;  ///< by axis name: "roughness", "eta", "n", "k"
   std::string reason;                        ///< who needs it and why, one line
+  std::string material;  ///< the material that needs it, e.g. "'Glass' (/materials/0)"
 };
 
 /// Something in a scene that needs no table (or cannot have one yet), and why.
