@@ -155,6 +155,7 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
     need.kind = kind;
     need.reason = label + ": " + what;
     need.material = label;
+    need.named = kindsGiven;
     need.model = q.sceneModel ? q.sceneModel : id;
     for (const auto& [axis, param] : q.sceneAxes)
       if (FindParam(*info, param)) need.ranges[axis] = value(param);

@@ -89,7 +89,8 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
 /// The values of `need` on each axis of `whole` (an axis the need does not bound spans the whole
 /// axis; mu is left out unless bounded). A kind with a scene domain (QuantityInfo::sceneDomain)
 /// keeps only the part of each range inside its axis: `outside` then says what was cut, and the
-/// result is false when nothing is left.
+/// result is false when nothing is left. A need the scene names itself (TableNeed::named) throws
+/// std::invalid_argument instead.
 bool NeedRanges(const TableNeed& need, const TableSpec& whole,
                 std::map<std::string, ValueRange>& ranges, std::string& outside) {
   const QuantityInfo& q = Describe(need.kind);
@@ -98,6 +99,11 @@ bool NeedRanges(const TableNeed& need, const TableSpec& whole,
     if (a.name == "mu" && found == need.ranges.end()) continue;
     bool bounded = found != need.ranges.end() && !found->second.whole;
     ValueRange v = bounded ? found->second : ValueRange::Between(a.lo, a.hi);
+    if (q.sceneDomain && bounded && (v.lo < a.lo || v.hi > a.hi) && need.named)
+      throw std::invalid_argument("plan: " + need.reason + ": " + a.name + " " + v.Text() +
+                                  " is outside " + q.name + "'s domain " + a.name + " in [" +
+                                  ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
+                                  q.sceneDomain + ")");
     if (q.sceneDomain && bounded && (v.lo < a.lo || v.hi > a.hi)) {
       outside += std::string(outside.empty() ? "" : "; ") + a.name + " " + v.Text() +
                  " is outside its domain [" + ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
