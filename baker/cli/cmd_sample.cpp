@@ -74,19 +74,24 @@ void RegisterSample(CLI::App& app) {
     const bool definedOnAxesOnly = form == StoredForm::ConductorResidual ||
                                    form == StoredForm::WardAlbedo ||
                                    form == StoredForm::UnityLobe || (kind && kind->sceneDomain);
+    std::string whole;  // every bounded coordinate's domain, for the message
+    for (const Coordinate& c : domain)
+      if (std::isfinite(c.lo))
+        whole += std::string(whole.empty() ? "" : ", ") + c.name + " in [" + Short(c.lo) + ", " +
+                 Short(c.hi) + "]";
     std::string clamped;
     for (std::size_t d = 0; d < domain.size(); ++d) {
       const Coordinate& c = domain[d];
       const double v = args->x[d];
       if (v >= c.lo && v <= c.hi) continue;
-      const std::string range = "[" + Short(c.lo) + ", " + Short(c.hi) + "]";
       if (!args->clamp || definedOnAxesOnly)
         throw std::invalid_argument(
             "sample: " + c.name + " " + Short(v) + " is outside the domain of '" + args->file +
-            "': " + c.name + " in " + range +
+            "': " + whole +
             (definedOnAxesOnly ? " (the table is defined there only)" : " (--clamp clamps)"));
       clamped += std::string(clamped.empty() ? "" : ", ") + c.name + " " + Short(v) + " to " +
-                 Short(std::min(std::max(v, c.lo), c.hi)) + " (" + range + ")";
+                 Short(std::min(std::max(v, c.lo), c.hi)) + " ([" + Short(c.lo) + ", " +
+                 Short(c.hi) + "])";
     }
     if (!clamped.empty())
       std::fprintf(stderr, "kiln: warning: sample: clamped %s\n", clamped.c_str());
