@@ -99,15 +99,14 @@ bool NeedRanges(const TableNeed& need, const TableSpec& whole,
     if (a.name == "mu" && found == need.ranges.end()) continue;
     bool bounded = found != need.ranges.end() && !found->second.whole;
     ValueRange v = bounded ? found->second : ValueRange::Between(a.lo, a.hi);
-    if (q.sceneDomain && bounded && (v.lo < a.lo || v.hi > a.hi) && need.named)
-      throw std::invalid_argument("plan: " + need.reason + ": " + a.name + " " + v.Text() +
-                                  " is outside " + q.name + "'s domain " + a.name + " in [" +
-                                  ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
-                                  q.sceneDomain + ")");
     if (q.sceneDomain && bounded && (v.lo < a.lo || v.hi > a.hi)) {
-      outside += std::string(outside.empty() ? "" : "; ") + a.name + " " + v.Text() +
-                 " is outside its domain [" + ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
-                 q.sceneDomain + ")";
+      const std::string value = a.name + " " + v.Text() + " is outside ";
+      const std::string domain =
+          "[" + ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" + q.sceneDomain + ")";
+      if (need.named)
+        throw std::invalid_argument("plan: " + need.reason + ": " + value + q.name + "'s domain " +
+                                    a.name + " in " + domain);
+      outside += std::string(outside.empty() ? "" : "; ") + value + "its domain " + domain;
       v = ValueRange::Between(std::max(v.lo, a.lo), std::min(v.hi, a.hi));
       if (v.lo > v.hi) return false;
     }
@@ -200,12 +199,7 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
   // first.
   std::unordered_map<std::string, size_t> noteOf;  // "kind\ntopic\nwhy" -> index in plan.notes
   std::vector<std::unordered_set<std::string>> noteMaterials;
-  std::vector<const SceneNote*> notes;
-  for (const std::vector<SceneNote>* list :
-       {&scene.notes, static_cast<const std::vector<SceneNote>*>(&outsideNotes)})
-    for (const SceneNote& n : *list) notes.push_back(&n);
-  for (const SceneNote* note : notes) {
-    const SceneNote& n = *note;
+  auto mergeNote = [&](const SceneNote& n) {
     ++plan.mergeProbes;
     std::string key = std::to_string(static_cast<int>(n.kind)) + "\n" + n.topic + "\n" + n.why;
     auto [slot, added] = noteOf.emplace(key, plan.notes.size());
@@ -216,7 +210,9 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
     ++plan.mergeProbes;
     if (!n.material.empty() && noteMaterials[slot->second].insert(n.material).second)
       plan.notes[slot->second].materials.push_back(n.material);
-  }
+  };
+  for (const SceneNote& n : scene.notes) mergeNote(n);
+  for (const SceneNote& n : outsideNotes) mergeNote(n);
   return plan;
 }
 
