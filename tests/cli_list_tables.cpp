@@ -25,6 +25,8 @@ TEST_CASE("kiln list --tables lists every catalogue and on-request table once", 
   CHECK(r.out.rfind("ggx-dfg  [default]  mu 0..1 (128, root4-layer) x roughness 0..1 (128, sqrt)"
                     "  # split-sum specular",
                     0) == 0);
+  // A table baked at fixed model parameters says so.
+  CHECK(r.out.find(" x cos_phi -1..1 (3, linear) at roughness = 0.5  # ") != std::string::npos);
   for (const std::string& name : onRequest)
     CHECK(r.out.find("\n" + name + "  [on request]  ") != std::string::npos);
 }
@@ -44,6 +46,7 @@ TEST_CASE("kiln list --tables --json: name, axes, meaning and catalogue membersh
     CHECK(t.at("default_catalogue").get<bool>() == (defaults.count(name) == 1));
     CHECK(!t.at("description").get<std::string>().empty());
     TableSpec spec = CatalogueTable(name);
+    CHECK(t.at("params") == nlohmann::json(spec.params));
     REQUIRE(t.at("axes").size() == spec.axes.size());
     for (size_t i = 0; i < spec.axes.size(); ++i) {
       CHECK(t.at("axes")[i].at("name") == spec.axes[i].name);

@@ -6,6 +6,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/scene/plan_report.h"
+#include "baker/scene/scene_json.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln::cli {
@@ -54,6 +55,7 @@ std::string FormatTableList(const std::vector<ListedTable>& tables, bool json) {
                      {"quantity", q.name},
                      {"channels", t.spec.channels},
                      {"axes", axes},
+                     {"params", t.spec.params},
                      {"default_catalogue", t.inDefaultCatalogue},
                      {"description", q.description}});
     }
@@ -62,8 +64,11 @@ std::string FormatTableList(const std::vector<ListedTable>& tables, bool json) {
   std::string out;
   for (const ListedTable& t : tables) {
     const QuantityInfo& q = Describe(t.spec.quantity);
+    std::string fixed;  // the model parameters the table is baked at (a *-brdf's roughness)
+    for (const auto& [name, value] : t.spec.params)
+      fixed += (fixed.empty() ? " at " : ", ") + name + " = " + ExactNumber(value);
     out += t.spec.name + "  [" + (t.inDefaultCatalogue ? "default" : "on request") + "]  " +
-           AxesText(t.spec) + "  # " + q.description + "\n";
+           AxesText(t.spec) + fixed + "  # " + q.description + "\n";
   }
   return out;
 }

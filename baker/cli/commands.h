@@ -67,10 +67,10 @@ struct ListedTable {
 /// tables, each name once.
 std::vector<ListedTable> AllListedTables();
 
-/// One line per table ("NAME  [default|on request]  AXES  # MEANING", AXES as kiln plan prints
-/// them: "mu 0..1 (32, sqrt) x roughness ..."), or (json) a JSON array of objects with keys
-/// name, model, quantity, channels, axes (name, lo, hi, size, warp), default_catalogue,
-/// description.
+/// One line per table ("NAME  [default|on request]  AXES[ at P = V, ...]  # MEANING", AXES as
+/// kiln plan prints them: "mu 0..1 (32, sqrt) x roughness ...", then the model parameters the
+/// table is baked at, if any), or (json) a JSON array of objects with keys name, model,
+/// quantity, channels, axes (name, lo, hi, size, warp), params, default_catalogue, description.
 std::string FormatTableList(const std::vector<ListedTable>& tables, bool json);
 
 /// kiln list [--tables [--json]]: the models, or every table kiln can bake.
