@@ -83,6 +83,16 @@ TEST_CASE("More bad values, each at its pointer", "[scene][errors]") {
        "/textures/0/source"},
       {R"({"asset": {"version": "2.0"}, "meshes": [{"primitives": [{"material": -1}]}]})", "a.gltf",
        "/meshes/0/primitives/0/material"},
+      // sheenColorFactor is held to [0, 1] like every other factor.
+      {R"({"asset": {"version": "2.0"}, "materials": [{"extensions": {"KHR_materials_sheen":
+          {"sheenColorFactor": [2, 2, 2]}}}]})",
+       "a.gltf", "/materials/0/extensions/KHR_materials_sheen/sheenColorFactor/0"},
+      {R"({"asset": {"version": "2.0"}, "materials": [{"extensions": {"KHR_materials_sheen":
+          {"sheenColorFactor": [0.5, 1e308, 0]}}}]})",
+       "a.gltf", "/materials/0/extensions/KHR_materials_sheen/sheenColorFactor/1"},
+      {R"({"asset": {"version": "2.0"}, "materials": [{"extensions": {"KHR_materials_sheen":
+          {"sheenColorFactor": [0.5, 0.5, -0.1]}}}]})",
+       "a.gltf", "/materials/0/extensions/KHR_materials_sheen/sheenColorFactor/2"},
       {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "roughness": [0.6, 0.2]}]})", "s.json",
        "/materials/0/roughness"},
       {R"({"kiln_scene": 1, "materials": [{"model": "ggx", "f0": 0.04, "eta": 1.5}]})", "s.json",

@@ -291,11 +291,14 @@ TEST_CASE("Negative numbers that do not start with a digit are taken as numbers"
       {"integrate albedo --model ggx --roughness 0.5 --mu -.5", "--mu = -0.5 is outside [0, 1]"},
       {"eval --model ggx --mu-o 0.5 --mu-l 0.5 --phi -inf", "--phi"},
   });
-  // Below the axis, a lookup clamps to it: -.5 and -1e-3 give the values at mu = 0.
+  // Below the axis: refused naming mu; with --clamp, -.5 and -1e-3 give the values at mu = 0.
   auto at0 = RunKilnFor(60, "sample " + table + " 0 0.3");
   for (const std::string x : {"-.5", "-1e-3", "-0.5"}) {
-    auto r = RunKilnFor(60, "sample " + table + " " + x + " 0.3");
-    INFO("sample " << x << " 0.3: exit " << r.exitCode << ", stderr: " << r.err);
+    auto refused = RunKilnFor(60, "sample " + table + " " + x + " 0.3");
+    CHECK(IsCleanRefusal(refused));
+    CHECK(refused.err.find("mu ") != std::string::npos);
+    auto r = RunKilnFor(60, "sample " + table + " " + x + " 0.3 --clamp");
+    INFO("sample " << x << " 0.3 --clamp: exit " << r.exitCode << ", stderr: " << r.err);
     CHECK(r.exitCode == 0);
     CHECK(r.out == at0.out);
   }

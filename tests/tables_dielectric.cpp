@@ -1,7 +1,7 @@
 // The rough dielectric's tables (baker/quantities/dielectric_albedo.cpp): glTF glass maps to them
 // (KHR_materials_transmission: the entering pair; KHR_materials_volume: the exit pair too, at
-// eta = 1/ior), an ior outside the domain is refused, and the bake is the same for any thread
-// count.
+// eta = 1/ior), an ior outside a table's domain leaves that table out with a note, and the bake
+// is the same for any thread count.
 #include <catch2/catch.hpp>
 
 #include <cstring>
@@ -51,17 +51,28 @@ TEST_CASE(
   }
 }
 
-TEST_CASE("an ior outside the dielectric tables' domain is refused", "[dielectric][scene]") {
-  CHECK_THROWS_WITH(PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
+TEST_CASE("an ior outside a dielectric table's domain leaves that table out, with a note",
+          "[dielectric][scene]") {
+  // ior 1.05: below every dielectric table's domain: none is planned, each is noted; the GGX
+  // lobe's tables still are.
+  Plan below = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
-      "KHR_materials_ior": {"ior": 1.05}}})")),
-                    Catch::Contains("eta 1.05 is outside") && Catch::Contains("domain"));
+      "KHR_materials_ior": {"ior": 1.05}}})"));
+  CHECK(TableNames(below) ==
+        std::vector<std::string>{"ggx-dfg-r1", "ggx-albedo-r1", "ggx-albedo-avg-r1"});
+  const PlanNote* glass = FindNote(below, SceneNote::Kind::NotYet, "ggx-dielectric-albedo-r");
+  REQUIRE(glass);
+  CHECK(glass->why.find("eta 1.05 is outside its domain [1.1, 3]") != std::string::npos);
   // ior 1.2: inside the glass tables' [1.1, 3] but below fresnel-albedo's 1.3, which the
-  // material's dielectric layer also asks for: refused, naming that table's domain.
-  CHECK_THROWS_WITH(PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
+  // material's dielectric layer also asks for: the glass tables are planned, fresnel-albedo is
+  // noted with its domain.
+  Plan between = PlanText(OneMaterialGltf(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
       "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
-      "KHR_materials_ior": {"ior": 1.2}}})")),
-                    Catch::Contains("outside fresnel-albedo's domain"));
+      "KHR_materials_ior": {"ior": 1.2}}})"));
+  CHECK(FindTable(between, "ggx-dielectric-albedo-r-r1-ior1.2"));
+  const PlanNote* fresnel = FindNote(between, SceneNote::Kind::NotYet, "ggx-fresnel-albedo");
+  REQUIRE(fresnel);
+  CHECK(fresnel->why.find("eta 1.2 is outside its domain [1.3, 3]") != std::string::npos);
 }
 
 TEST_CASE("the dielectric tables bake the same values with 1 and 2 threads", "[dielectric]") {

@@ -2,13 +2,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "baker/atlas/atlas.h"
 #include "baker/cli/commands.h"
 #include "baker/io/atomic_write.h"
+#include "baker/util/did_you_mean.h"
 
 namespace kiln::cli {
 
@@ -39,13 +39,15 @@ void RegisterAtlas(CLI::App& app) {
       throw std::invalid_argument("atlas: --grid must be in [2, 256]");
     std::vector<AtlasPair> pairs;
     if (oOnly->count()) {
-      std::stringstream in(args->only);
-      std::string name;
-      while (std::getline(in, name, ',')) {
+      std::vector<std::string> known;
+      for (const AtlasPair& p : AtlasPairs()) known.push_back(p.name);
+      for (const std::string& name : UniqueNames(args->only)) {  // a,a runs a once
         const AtlasPair* found = nullptr;
         for (const AtlasPair& p : AtlasPairs())
           if (p.name == name) found = &p;
-        if (!found) throw std::invalid_argument("atlas: unknown pair '" + name + "'");
+        if (!found)
+          throw std::invalid_argument("atlas: unknown pair '" + name + "'" +
+                                      DidYouMean(name, known));
         pairs.push_back(*found);
       }
       if (pairs.empty()) throw std::invalid_argument("atlas: --only '' names no pair");

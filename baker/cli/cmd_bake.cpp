@@ -131,7 +131,7 @@ void RegisterBake(CLI::App& app) {
     if (!oOnly->count()) {
       specs = DefaultCatalogue(copt);
     } else {
-      for (const std::string& name : splitList(args->only, ','))
+      for (const std::string& name : UniqueNames(args->only))  // a,a bakes a once
         specs.push_back(CatalogueTable(name, copt));
     }
     for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);

@@ -56,7 +56,7 @@ void RegisterBench(CLI::App& app) {
       CatalogueBenchOptions opt;
       opt.threads = args->threads > 0 ? args->threads : 2;
       opt.samples = args->samples;
-      if (!args->only.empty()) opt.only = splitList(args->only, ',');
+      if (!args->only.empty()) opt.only = UniqueNames(args->only);
       std::string csv = CatalogueCsv(RunCatalogueBench(opt, stdout));
       std::filesystem::create_directories(args->out);
       writeAtomically(args->out + "/catalogue.csv",

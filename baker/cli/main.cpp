@@ -29,13 +29,14 @@ int main(int argc, char** argv) {
   kiln::cli::RefuseNonNumbers(app);
   kiln::cli::CheckThreadOptions(app);
   // -j above the number of cores is allowed (up to kMaxThreads): without this oneTBB would print
-  // a warning and run fewer threads.
+  // a warning and run fewer threads. Under an address-space limit (ulimit -v) fewer: oneTBB
+  // aborts the process when pthread_create fails.
   tbb::global_control threadLimit(tbb::global_control::max_allowed_parallelism,
-                                  kiln::cli::kMaxThreads);
+                                  static_cast<size_t>(kiln::cli::ThreadLimit()));
+  std::vector<std::string> args = kiln::cli::NumbersAsPositionals(argc, argv);
   try {
-    std::vector<std::string> args = kiln::cli::NumbersAsPositionals(argc, argv);
-    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
-    app.parse(args);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    app.parse(reversed);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "kiln: error: %s\n", e.what());
+    std::fprintf(stderr, "kiln: error: %s%s\n", e.what(),
+                 kiln::cli::SuggestArgument(app, args).c_str());
     return 2;
   } catch (const std::exception& e) {
     std::string what = e.what();

@@ -1,10 +1,13 @@
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "baker/cli/commands.h"
+#include "kiln/table.h"
 
 namespace kiln::cli {
 
@@ -36,6 +39,14 @@ ModelParams ModelParamOptions::Params() const {
   return p;
 }
 
+std::vector<std::string> UniqueNames(const std::string& list) {
+  std::vector<std::string> names;
+  std::set<std::string> seen;
+  for (const std::string& name : splitList(list, ','))
+    if (seen.insert(name).second) names.push_back(name);
+  return names;
+}
+
 std::string FullPrecision(double x) {
   char buf[40];
   std::snprintf(buf, sizeof buf, "%.17g", x);
@@ -44,17 +55,57 @@ std::string FullPrecision(double x) {
 
 namespace {
 
-/// "" when `text` is a whole integer (integer) or number as CLI11 reads it (strtoll base 0 or
-/// strtod, to the last character), else the complaint.
+/// True when `text` (after leading blanks, which CLI11's conversions skip) is a plain decimal
+/// integer: an optional sign and digits, without leading zeros (CLI11 2.1 reads "010" as octal 8
+/// and "0x10" as 16).
+bool IsDecimalInteger(const std::string& text) {
+  size_t i = text.find_first_not_of(" \t");
+  if (i == std::string::npos) return false;
+  if (text[i] == '+' || text[i] == '-') ++i;
+  size_t digits = text.find_first_not_of("0123456789", i);
+  if (digits != std::string::npos || i == text.size()) return false;
+  return text[i] != '0' || i + 1 == text.size();
+}
+
+/// True when `text` is a plain decimal number: what IsDecimalInteger takes, with an optional
+/// fraction and exponent ("-1.5e-3", ".5", "2."), or inf, infinity, nan in any case (the commands
+/// refuse those with their own message). No hexadecimal ("0x10", "0x1p3").
+bool IsDecimalNumber(const std::string& text) {
+  size_t i = text.find_first_not_of(" \t");
+  if (i == std::string::npos) return false;
+  if (text[i] == '+' || text[i] == '-') ++i;
+  std::string rest = text.substr(i);
+  for (char& c : rest) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (rest == "inf" || rest == "infinity" || rest == "nan") return true;
+  auto digitsAt = [&](size_t& at) {
+    size_t start = at;
+    while (at < rest.size() && std::isdigit(static_cast<unsigned char>(rest[at]))) ++at;
+    return at - start;
+  };
+  size_t at = 0, mantissa = digitsAt(at);
+  if (at < rest.size() && rest[at] == '.') mantissa += digitsAt(++at);
+  if (mantissa == 0) return false;
+  if (at < rest.size() && rest[at] == 'e') {
+    ++at;
+    if (at < rest.size() && (rest[at] == '+' || rest[at] == '-')) ++at;
+    if (digitsAt(at) == 0) return false;
+  }
+  return at == rest.size();
+}
+
+/// "" when `text` is a plain decimal integer (integer) or number that CLI11 reads to the last
+/// character, else the complaint.
 std::string NumberProblem(const std::string& text, bool integer) {
-  std::string wanted = integer ? "an integer" : "a number";
+  std::string wanted = integer ? "a decimal integer" : "a decimal number";
   if (text.empty()) return "needs " + wanted + ", got ''";
+  bool decimal = integer ? IsDecimalInteger(text) : IsDecimalNumber(text);
   char* end = nullptr;
   if (integer)
-    std::strtoll(text.c_str(), &end, 0);
+    std::strtoll(text.c_str(), &end, 10);
   else
     std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size()) return "needs " + wanted + ", got '" + text + "'";
+  if (!decimal || end != text.c_str() + text.size())
+    return "needs " + wanted + ", got '" + text + "'";
   return "";
 }
 
@@ -81,11 +132,22 @@ void CheckThreads(const std::string& command, int threads) {
 void CheckThreadOptions(CLI::App& app) {
   for (CLI::Option* o : app.get_options()) {
     if (o->get_name() != "--threads") continue;
+    // More threads than the address space holds (ulimit -v) would abort in pthread_create:
+    // a -j above ThreadLimit() runs ThreadLimit() threads, with a warning.
+    o->transform(CLI::Validator(
+        [](std::string& text) -> std::string {
+          if (!IsDecimalInteger(text)) return "";  // refused by the checks below
+          long long n = std::strtoll(text.c_str(), nullptr, 10);
+          if (n >= 1 && n <= kMaxThreads)
+            text = std::to_string(ThreadsToRun(static_cast<int>(n), ThreadLimit()));
+          return "";
+        },
+        ""));
     // Only a -j the user gave is checked: the commands' own default 0 means all cores.
     o->check(CLI::Validator(
         [](std::string& text) -> std::string {
           char* end = nullptr;
-          long long n = std::strtoll(text.c_str(), &end, 0);
+          long long n = std::strtoll(text.c_str(), &end, 10);
           if (n >= 1 && n <= kMaxThreads) return "";
           return "-j " + text + " must be in [1, " + std::to_string(kMaxThreads) + "]";
         },

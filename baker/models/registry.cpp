@@ -3,6 +3,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/models/model_names.h"
+#include "baker/util/did_you_mean.h"
+
 namespace kiln {
 namespace {
 
@@ -328,6 +331,17 @@ const ModelInfo* FindModel(const std::string& id) {
   return nullptr;
 }
 
+std::vector<std::string> AllModelIds() {
+  std::vector<std::string> ids;
+  for (const ModelInfo& m : AllModels()) ids.push_back(m.id);
+  for (const ModelInfo& m : AllBsdfModels()) ids.push_back(m.id);
+  return ids;
+}
+
+std::string UnknownModelMessage(const std::string& id) {
+  return "unknown model '" + id + "'" + DidYouMean(id, AllModelIds()) + " (see `kiln list`)";
+}
+
 Fresnel FresnelFromParams(const ModelParams& p) {
   Fresnel F;
   if (p.f0) {
@@ -343,7 +357,7 @@ Fresnel FresnelFromParams(const ModelParams& p) {
 
 AnyModel MakeModel(const std::string& id, const ModelParams& p) {
   const ModelInfo* info = FindModel(id);
-  if (!info) throw std::invalid_argument("unknown model '" + id + "' (see `kiln list`)");
+  if (!info) throw std::invalid_argument(UnknownModelMessage(id));
   // Every given parameter must be one the model takes, and inside its range.
   const std::pair<const char*, const std::optional<double>*> given[] = {{"roughness", &p.roughness},
                                                                         {"rho", &p.rho},

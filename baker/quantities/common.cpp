@@ -15,6 +15,7 @@
 #include "baker/integrate/fixed_rule_microfacet.h"
 
 #include "baker/integrate/fixed_rule_diffuse.h"
+#include "baker/models/model_names.h"
 #include "baker/models/specular.h"
 
 namespace kiln::quantity_detail {
@@ -54,7 +55,7 @@ TableSpec Shell(Quantity q, const std::string& name, const std::string& model,
 
 const ModelInfo& Info(const std::string& model) {
   const ModelInfo* m = FindModel(model);
-  if (!m) throw std::invalid_argument("unknown model '" + model + "'");
+  if (!m) throw std::invalid_argument(UnknownModelMessage(model));
   return *m;
 }
 

@@ -61,7 +61,7 @@ class MaterialReader {
   }
   void NeedModel(Quantity kind, const std::string& model, std::map<std::string, ValueRange> ranges,
                  const std::string& why) {
-    scene_.needs.push_back({kind, model, std::move(ranges), label_ + ": " + why});
+    scene_.needs.push_back({kind, model, std::move(ranges), label_ + ": " + why, label_});
   }
   /// A factor in [lo, hi] multiplied by an optional texture: one value without a texture,
   /// [0, f] with one (the texture multiplies the factor), the whole axis when animated. `what`
@@ -204,8 +204,8 @@ void MaterialReader::Read() {
       Note(Kind::NoTable, "KHR_materials_ior",
            "ior 1 (no interface): F = 0, the dielectric layer reflects nothing");
     } else {
-      // ggx-fresnel-albedo covers eta in [1.3, 3] (its sceneDomain): the planner refuses
-      // 1 < ior < 1.3 in one line.
+      // ggx-fresnel-albedo covers eta in [1.3, 3], the glass tables [1.1, 3] (their
+      // sceneDomain): the planner plans each table the ior falls in and notes the others.
       ValueRange eta = ValueRange::Exactly(ior);
       if (iorAnimated) {
         eta = ValueRange::Whole();
@@ -262,8 +262,13 @@ void MaterialReader::Read() {
     bool on = Animated(at, "sheenColorFactor");
     if (const Json* c = JsonReader::Find(*sh, "sheenColorFactor")) {
       r_.Array(*c, PointerChild(at, "sheenColorFactor"));
-      for (size_t i = 0; i < c->size(); ++i)
-        on |= r_.Number((*c)[i], PointerChild(PointerChild(at, "sheenColorFactor"), i)) > 0;
+      // A color factor, in [0, 1] like every other factor.
+      for (size_t i = 0; i < c->size(); ++i) {
+        std::string p = PointerChild(PointerChild(at, "sheenColorFactor"), i);
+        double x = r_.Number((*c)[i], p);
+        if (x < 0 || x > 1) r_.Fail(p, ExactNumber(x) + " is outside [0, 1]");
+        on |= x > 0;
+      }
     }
     if (!on)
       Note(Kind::NoEffect, "KHR_materials_sheen", "sheenColorFactor 0: no sheen");

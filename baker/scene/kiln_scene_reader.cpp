@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "baker/models/model_names.h"
 #include "baker/models/registry.h"
 
 namespace kiln {
@@ -59,7 +60,7 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
   if (!modelJson) r.Fail(at, "missing \"model\" (a kiln model id, see `kiln list`)");
   std::string id = r.String(*modelJson, PointerChild(at, "model"));
   const ModelInfo* info = FindModel(id);
-  if (!info) r.Fail(PointerChild(at, "model"), "unknown model '" + id + "' (see `kiln list`)");
+  if (!info) r.Fail(PointerChild(at, "model"), UnknownModelMessage(id));
 
   std::map<std::string, ValueRange> values;
   std::vector<Quantity> kinds;
@@ -153,6 +154,8 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
     TableNeed need;
     need.kind = kind;
     need.reason = label + ": " + what;
+    need.material = label;
+    need.named = kindsGiven;
     need.model = q.sceneModel ? q.sceneModel : id;
     for (const auto& [axis, param] : q.sceneAxes)
       if (FindParam(*info, param)) need.ranges[axis] = value(param);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "baker/models/registry.h"
 #include "baker/scene/axis_narrowing.h"
@@ -84,6 +86,42 @@ void CutAxes(TableSpec& spec, const std::map<std::string, ValueRange>& ranges) {
   for (const Cut& c : cuts) spec.name += "-" + c.tag;
 }
 
+/// The values of `need` on each axis of `whole` (an axis the need does not bound spans the whole
+/// axis; mu is left out unless bounded). A kind with a scene domain (QuantityInfo::sceneDomain)
+/// keeps only the part of each range inside its axis: `outside` then says what was cut, and the
+/// result is false when nothing is left. A need the scene names itself (TableNeed::named) throws
+/// std::invalid_argument instead.
+bool NeedRanges(const TableNeed& need, const TableSpec& whole,
+                std::map<std::string, ValueRange>& ranges, std::string& outside) {
+  const QuantityInfo& q = Describe(need.kind);
+  for (const AxisSpec& a : whole.axes) {
+    auto found = need.ranges.find(a.name);
+    if (a.name == "mu" && found == need.ranges.end()) continue;
+    bool bounded = found != need.ranges.end() && !found->second.whole;
+    ValueRange v = bounded ? found->second : ValueRange::Between(a.lo, a.hi);
+    if (q.sceneDomain && bounded && (v.lo < a.lo || v.hi > a.hi)) {
+      const std::string value = a.name + " " + v.Text() + " is outside ";
+      const std::string domain =
+          "[" + ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" + q.sceneDomain + ")";
+      if (need.named)
+        throw std::invalid_argument("plan: " + need.reason + ": " + value + q.name + "'s domain " +
+                                    a.name + " in " + domain);
+      outside += std::string(outside.empty() ? "" : "; ") + value + "its domain " + domain;
+      v = ValueRange::Between(std::max(v.lo, a.lo), std::min(v.hi, a.hi));
+      if (v.lo > v.hi) return false;
+    }
+    ranges[a.name] = v;
+  }
+  return true;
+}
+
+/// A note (kind NotYet) on table `table` for the material of `need`: `why` says which of its
+/// values the table's domain leaves out.
+void AddOutsideNote(std::vector<SceneNote>& notes, const TableNeed& need, const std::string& table,
+                    const std::string& why) {
+  notes.push_back({SceneNote::Kind::NotYet, table, why, need.material});
+}
+
 }  // namespace
 
 TableSpec WholeTableSpec(Quantity kind, const std::string& model, const PlanOptions& opt) {
@@ -110,64 +148,71 @@ Plan PlanScene(const Scene& scene, const PlanOptions& opt) {
   plan.materialCount = scene.materialCount;
   plan.warnings = scene.warnings;
 
-  // Merge the needs by table (kind, model), resolving "whole" against the catalogue axis.
+  // Merge the needs by table (kind, model), resolving "whole" against the catalogue axis. Each
+  // need, reason, note and material is placed by one hash lookup: linear in the scene's size.
   struct Group {
     Quantity kind;
     std::string model;
     TableSpec whole;
     std::map<std::string, ValueRange> ranges;
     std::vector<std::string> reasons;
+    std::unordered_set<std::string> reasonSet;
   };
   std::vector<Group> groups;
+  std::unordered_map<std::string, size_t> groupOf;     // "kind model" -> index in groups
+  std::unordered_map<std::string, TableSpec> wholeOf;  // "kind model" -> WholeTableSpec
+  std::vector<SceneNote> outsideNotes;  // values outside a table's domain (NeedRanges)
   for (const TableNeed& need : scene.needs) {
-    auto g = std::find_if(groups.begin(), groups.end(), [&](const Group& x) {
-      return x.kind == need.kind && x.model == need.model;
-    });
-    if (g == groups.end()) {
-      groups.push_back({need.kind, need.model, WholeTableSpec(need.kind, need.model, opt), {}, {}});
-      g = groups.end() - 1;
+    ++plan.mergeProbes;
+    std::string key = std::to_string(static_cast<int>(need.kind)) + " " + need.model;
+    auto whole = wholeOf.find(key);
+    if (whole == wholeOf.end())
+      whole = wholeOf.emplace(key, WholeTableSpec(need.kind, need.model, opt)).first;
+    std::map<std::string, ValueRange> ranges;
+    std::string outside;
+    if (!NeedRanges(need, whole->second, ranges, outside)) {
+      AddOutsideNote(outsideNotes, need, whole->second.name, outside + ": not planned");
+      continue;
     }
-    for (const AxisSpec& a : g->whole.axes) {
-      auto found = need.ranges.find(a.name);
-      // An axis the need does not bound spans the whole axis.
-      ValueRange v = found == need.ranges.end() || found->second.whole
-                         ? ValueRange::Between(a.lo, a.hi)
-                         : found->second;
-      if (a.name == "mu" && found == need.ranges.end()) continue;
-      const QuantityInfo& q = Describe(need.kind);
-      if (q.sceneDomain && found != need.ranges.end() && !found->second.whole &&
-          (v.lo < a.lo || v.hi > a.hi))
-        throw std::invalid_argument("plan: " + need.reason + ": " + a.name + " " + v.Text() +
-                                    " is outside " + q.name + "'s domain " + a.name + " in [" +
-                                    ShortNumber(a.lo) + ", " + ShortNumber(a.hi) + "] (" +
-                                    q.sceneDomain + ")");
-      auto have = g->ranges.find(a.name);
-      g->ranges[a.name] = have == g->ranges.end() ? v : have->second.Union(v);
+    if (!outside.empty())
+      AddOutsideNote(outsideNotes, need, whole->second.name, outside + ": planned over the rest");
+    auto [slot, added] = groupOf.emplace(key, groups.size());
+    if (added) groups.push_back({need.kind, need.model, whole->second, {}, {}, {}});
+    Group* g = &groups[slot->second];
+    for (const auto& [axis, v] : ranges) {
+      auto have = g->ranges.find(axis);
+      g->ranges[axis] = have == g->ranges.end() ? v : have->second.Union(v);
     }
-    if (std::find(g->reasons.begin(), g->reasons.end(), need.reason) == g->reasons.end())
-      g->reasons.push_back(need.reason);
+    ++plan.mergeProbes;
+    if (g->reasonSet.insert(need.reason).second) g->reasons.push_back(need.reason);
   }
   for (Group& g : groups) {
     PlannedTable t;
     t.spec = g.whole;
     CutAxes(t.spec, g.ranges);
-    t.reasons = g.reasons;
+    t.reasons = std::move(g.reasons);
     t.ranges = g.ranges;
     plan.tables.push_back(std::move(t));
   }
 
-  for (const SceneNote& n : scene.notes) {
-    auto p = std::find_if(plan.notes.begin(), plan.notes.end(), [&](const PlanNote& x) {
-      return x.kind == n.kind && x.topic == n.topic && x.why == n.why;
-    });
-    if (p == plan.notes.end()) {
+  // Notes of the same kind, topic and reason merge; each lists its materials once, first seen
+  // first.
+  std::unordered_map<std::string, size_t> noteOf;  // "kind\ntopic\nwhy" -> index in plan.notes
+  std::vector<std::unordered_set<std::string>> noteMaterials;
+  auto mergeNote = [&](const SceneNote& n) {
+    ++plan.mergeProbes;
+    std::string key = std::to_string(static_cast<int>(n.kind)) + "\n" + n.topic + "\n" + n.why;
+    auto [slot, added] = noteOf.emplace(key, plan.notes.size());
+    if (added) {
       plan.notes.push_back({n.kind, n.topic, n.why, {}});
-      p = plan.notes.end() - 1;
+      noteMaterials.emplace_back();
     }
-    if (!n.material.empty() &&
-        std::find(p->materials.begin(), p->materials.end(), n.material) == p->materials.end())
-      p->materials.push_back(n.material);
-  }
+    ++plan.mergeProbes;
+    if (!n.material.empty() && noteMaterials[slot->second].insert(n.material).second)
+      plan.notes[slot->second].materials.push_back(n.material);
+  };
+  for (const SceneNote& n : scene.notes) mergeNote(n);
+  for (const SceneNote& n : outsideNotes) mergeNote(n);
   return plan;
 }
 

@@ -44,6 +44,9 @@ struct Plan {
   std::vector<PlannedTable> tables;  ///< in the order of the first need of each
   std::vector<PlanNote> notes;
   std::vector<std::string> warnings;
+  /// Entries the merge looked at to place the scene's needs, their reasons and its notes (a
+  /// lookup in a hash table counts one): the planner's work, linear in the scene's size.
+  size_t mergeProbes = 0;
 };
 
 /// Plans `scene`. Throws std::invalid_argument for a need the planner cannot build (an unknown

@@ -37,6 +37,11 @@ struct TableNeed {
   std::string model;                         ///< "ggx", ...; "none" for the Fresnel tables
   std::map<std::string, ValueRange> ranges;  ///< by axis name: "roughness", "eta", "n", "k"
   std::string reason;                        ///< who needs it and why, one line
+  std::string material;  ///< the material that needs it, e.g. "'Glass' (/materials/0)"
+  /// The scene names this table kind itself (a kiln scene's "tables"): a value outside the
+  /// kind's domain is an error. Otherwise (a table the reader derived, e.g. from a glTF IOR)
+  /// the planner leaves the table out for that value and says so in a note.
+  bool named = false;
 };
 
 /// Something in a scene that needs no table (or cannot have one yet), and why.

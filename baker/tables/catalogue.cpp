@@ -3,15 +3,17 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "baker/models/model_names.h"
 #include "baker/models/registry.h"
 #include "baker/models/sheen.h"
+#include "baker/util/did_you_mean.h"
 
 namespace kiln {
 namespace {
 
 const ModelInfo& Info(const std::string& model) {
   const ModelInfo* m = FindModel(model);
-  if (!m) throw std::invalid_argument("unknown model '" + model + "'");
+  if (!m) throw std::invalid_argument(UnknownModelMessage(model));
   return *m;
 }
 
@@ -182,9 +184,13 @@ std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt) {
 }
 
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt) {
-  for (TableSpec& s : CatalogueEntries(opt, true))
+  std::vector<std::string> names;
+  for (TableSpec& s : CatalogueEntries(opt, true)) {
     if (s.name == name) return s;
-  throw std::invalid_argument("unknown table '" + name + "' (see the README's catalogue)");
+    names.push_back(s.name);
+  }
+  throw std::invalid_argument("unknown table '" + name + "'" + DidYouMean(name, names) +
+                              " (see `kiln list --tables`)");
 }
 
 }  // namespace kiln
