@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "baker/bake/bake.h"
+#include "baker/io/exr_writer.h"
 #include "baker/io/texture_readers.h"
 #include "baker/io/texture_writers.h"
 #include "kiln/exr_loader.h"
@@ -129,7 +130,7 @@ TEST_CASE("a 6-channel table loads from either file of its KTX2, DDS and PNG16 p
     const std::string ext = kiln::FormatExtension(format);
     kiln::CommitBakedTable(dir, t, 0, false, false, 1, format);
     CHECK_FALSE(fs::exists(dir + "/ltc-test" + ext));
-    for (const std::string file : {"/ltc-test-1" + ext, "/ltc-test-2" + ext}) {
+    for (const std::string& file : {"/ltc-test-1" + ext, "/ltc-test-2" + ext}) {
       INFO(file);
       const kiln::Table back = kiln::LoadAnyTable(dir + file);
       REQUIRE(back.channels == t.channels);
