@@ -13,6 +13,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -24,6 +25,7 @@
 #include "baker/io/exr_writer.h"
 #include "baker/io/texture_readers.h"
 #include "baker/io/texture_writers.h"
+#include "cli_util.h"
 #include "kiln/exr_loader.h"
 
 namespace fs = std::filesystem;
@@ -145,4 +147,35 @@ TEST_CASE("a 6-channel table loads from either file of its KTX2, DDS and PNG16 p
     CHECK(m["tables"][0]["files"].size() == 2);
     fs::remove_all(dir);
   }
+}
+
+TEST_CASE("kiln sample, inspect and verify take either file of an ltc pair, in EXR and KTX2",
+          "[io][parts][cli]") {
+  const std::string dir = kiln::test::TempDir("ltc_pair");
+  for (const char* format : {"exr", "ktx2"}) {
+    kiln::test::CommandResult bake = kiln::test::RunKiln(
+        std::string("bake --quiet --only ltc-ggx --size 6 -j 1 --format ") +
+        format + " --out " + dir);
+    INFO(bake.err);
+    REQUIRE(bake.exitCode == 0);
+  }
+  const std::string exr1 = kiln::test::RunKiln("sample " + dir + "/ltc-ggx-1.exr 0.4 0.6").out;
+  REQUIRE(std::count(exr1.begin(), exr1.end(), ' ') == 5);  // six channels
+  for (const char* file : {"/ltc-ggx-2.exr", "/ltc-ggx-1.ktx2", "/ltc-ggx-2.ktx2"}) {
+    INFO(file);
+    CHECK(kiln::test::RunKiln("sample " + dir + file + " 0.4 0.6").out == exr1);
+  }
+  const kiln::test::CommandResult inspect =
+      kiln::test::RunKiln("inspect " + dir + "/ltc-ggx-2.exr");
+  CHECK(inspect.exitCode == 0);
+  CHECK(inspect.out.find("channel R = minv_a") != std::string::npos);
+  CHECK(inspect.out.find("channel 2:G = fresnel") != std::string::npos);
+  // A folder lists the pair once (part 1); naming part 2 checks the same table.
+  const kiln::test::CommandResult folder =
+      kiln::test::RunKiln("verify " + dir + " -j 1 --points 4");
+  INFO(folder.out << folder.err);
+  CHECK(folder.exitCode == 0);
+  CHECK(folder.out.find("1 tables, 0 over their bound") != std::string::npos);
+  CHECK(kiln::test::RunKiln("verify " + dir + "/ltc-ggx-2.exr -j 1 --points 4").exitCode == 0);
+  fs::remove_all(dir);
 }
