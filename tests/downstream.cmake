@@ -4,6 +4,8 @@
 #  2. kiln's runtime/ folder added with add_subdirectory: the same two targets.
 #  3. the whole kiln project added with add_subdirectory: configures, with kiln::kiln too (not
 #     built here: that is the whole baker; kiln's own build is that build).
+# The package also holds every shader snippet of runtime/shaders in include/kiln/shaders, and
+# tests/downstream's package build reads KILN_SHADER_DIR (the same folder).
 # Each way builds tests/downstream, runs its in-memory sample, and samples luts/ggx-dfg.exr,
 # which must print exactly what `kiln sample` prints. The package way also bakes a table with
 # kiln_bake() as a build step, samples it, and builds twice more: with nothing changed nothing
@@ -70,6 +72,25 @@ run(${work}/prefix/bin/kiln --version)
 if(NOT out MATCHES "^kiln [0-9]+\\.[0-9]+\\.[0-9]+")
   message(FATAL_ERROR "installed kiln --version printed '${out}'")
 endif()
+
+# Every shader snippet of runtime/shaders is installed next to the headers, byte for byte.
+file(GLOB shaders RELATIVE ${KILN_SOURCE_DIR}/runtime/shaders
+     ${KILN_SOURCE_DIR}/runtime/shaders/*.glsl ${KILN_SOURCE_DIR}/runtime/shaders/*.hlsl)
+if(NOT shaders MATCHES "kiln_ltc.glsl" OR NOT shaders MATCHES "kiln_lut.hlsl")
+  message(FATAL_ERROR "runtime/shaders lists '${shaders}'")
+endif()
+foreach(shader ${shaders})
+  set(installed ${work}/prefix/include/kiln/shaders/${shader})
+  if(NOT EXISTS ${installed})
+    message(FATAL_ERROR "cmake --install did not install the shader ${shader} (${installed})")
+  endif()
+  file(READ ${installed} got)
+  file(READ ${KILN_SOURCE_DIR}/runtime/shaders/${shader} want)
+  if(NOT got STREQUAL want)
+    message(FATAL_ERROR "the installed ${shader} differs from runtime/shaders/${shader}")
+  endif()
+endforeach()
+message(STATUS "package: shaders installed (${shaders})")
 
 run(${CMAKE_COMMAND} -S ${KILN_SOURCE_DIR}/tests/downstream -B ${work}/project
     -DCMAKE_BUILD_TYPE=Release -DKILN_PROJECT_DIR=${KILN_SOURCE_DIR})

@@ -1,10 +1,15 @@
-// Specification of the 16-bit PNG writer (issue #14, --format png16): unsigned normalised per
-// channel with the scale and offset in tEXt chunks; read back by an independent little PNG
-// reader (chunk CRCs; the image data inflated by zlib) within scale / 65535 of every texel.
+// Specification of the 16-bit PNG writer: --format png16 stores plain [0, 1] values (value =
+// stored / 65535, what every PNG loader returns) and refuses a channel outside [0, 1];
+// --format png16-scaled stores each channel unsigned normalised over its range, with the scale
+// and offset in tEXt chunks. Both say their samples are linear (cICP, gAMA 1.0, no sRGB/iCCP).
+// Read back by an independent little PNG reader (chunk CRCs; the image data inflated by zlib)
+// within scale / 65535 of every texel.
 #include <catch2/catch.hpp>
 #include <zlib.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
@@ -36,6 +41,8 @@ struct Png {
   std::uint32_t width = 0, height = 0;
   int bitDepth = 0, colourType = 0;
   std::map<std::string, std::string> text;
+  std::map<std::string, std::string> chunks;  ///< the last chunk of each type
+  std::vector<std::string> order;             ///< chunk types in file order
   std::string raw;  ///< the inflated IDAT: per row a filter byte and the samples
 };
 
@@ -47,6 +54,8 @@ Png Parse(const std::string& f) {
     const std::uint32_t n = Be32(f, at);
     const std::string type = f.substr(at + 4, 4), data = f.substr(at + 8, n);
     REQUIRE(Be32(f, at + 8 + n) == Crc(type + data));
+    p.chunks[type] = data;
+    p.order.push_back(type);
     if (type == "IHDR") {
       p.width = Be32(data, 0);
       p.height = Be32(data, 4);
@@ -89,10 +98,60 @@ std::vector<double> Numbers(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("a ggx-dfg PNG16 is 16-bit RGB with its scale in tEXt, within scale / 65535",
+TEST_CASE("a ggx-dfg PNG16 is 16-bit RGB of plain values: stored = round(value x 65535)",
           "[io][png16]") {
   const kiln::Table t = SmallGgxDfg();
   const Png p = Parse(kiln::EncodePng16(t));
+  CHECK(p.bitDepth == 16);
+  CHECK(p.colourType == 2);  // RGB: R = A, G = B, blue 0 (unused)
+  CHECK(Numbers(p.text.at("kiln.scale")) == std::vector<double>{1, 1});
+  CHECK(Numbers(p.text.at("kiln.offset")) == std::vector<double>{0, 0});
+  const auto meta = nlohmann::json::parse(p.text.at("kiln.json"));
+  CHECK(meta["png16"]["encoding"] == "unit");
+  for (std::size_t y = 0; y < 8; ++y)
+    for (std::size_t x = 0; x < 8; ++x) {
+      for (int c = 0; c < 2; ++c) {
+        INFO("x " << x << " y " << y << " c " << c);
+        const double want = t.data[(y * 8 + x) * 2 + c];
+        CHECK(Sample(p, 3, x, y, c) == std::lround(want * 65535));
+      }
+      CHECK(Sample(p, 3, x, y, 2) == 0);
+    }
+}
+
+TEST_CASE("png16 refuses a channel outside [0, 1], naming the channel and its range",
+          "[io][png16]") {
+  const kiln::Table t = Small3D();  // channel E, 0 .. 123
+  CHECK_THROWS_WITH(kiln::EncodePng16(t), Catch::Contains("channel 'E' spans [0, 123]") &&
+                                              Catch::Contains("png16-scaled"));
+  kiln::Table negative = SmallGgxDfg();
+  negative.data[5] = -0.25f;
+  CHECK_THROWS_WITH(kiln::EncodePng16(negative), Catch::Contains("channel 'B' spans [-0.25, "));
+}
+
+TEST_CASE("both PNG16s say their samples are linear: cICP, gAMA 1.0, no sRGB or iCCP",
+          "[io][png16]") {
+  for (bool scaled : {false, true}) {
+    INFO("scaled " << scaled);
+    const Png p = Parse(kiln::EncodePng16(SmallGgxDfg(), scaled));
+    // cICP: colour primaries 1 (BT.709), transfer 8 (linear), matrix 0 (RGB), full range.
+    CHECK(p.chunks.at("cICP") == std::string("\x01\x08\x00\x01", 4));
+    CHECK(Be32(p.chunks.at("gAMA"), 0) == 100000);  // gamma 1.0
+    CHECK(p.chunks.count("sRGB") == 0);
+    CHECK(p.chunks.count("iCCP") == 0);
+    const auto before = [&](const char* a, const char* b) {
+      return std::find(p.order.begin(), p.order.end(), a) <
+             std::find(p.order.begin(), p.order.end(), b);
+    };
+    CHECK(before("cICP", "IDAT"));
+    CHECK(before("gAMA", "IDAT"));
+  }
+}
+
+TEST_CASE("a ggx-dfg PNG16 scaled is 16-bit RGB with its scale in tEXt, within scale / 65535",
+          "[io][png16]") {
+  const kiln::Table t = SmallGgxDfg();
+  const Png p = Parse(kiln::EncodePng16(t, /*scaled=*/true));
   CHECK(p.width == 8);
   CHECK(p.height == 8);
   CHECK(p.bitDepth == 16);
@@ -123,9 +182,9 @@ TEST_CASE("a ggx-dfg PNG16 is 16-bit RGB with its scale in tEXt, within scale / 
   CHECK(highest == 65535);
 }
 
-TEST_CASE("a one-channel PNG16 is grey, a constant channel stores 0", "[io][png16]") {
+TEST_CASE("a one-channel PNG16 scaled is grey, a constant channel stores 0", "[io][png16]") {
   kiln::Table t = Small3D();
-  const Png p = Parse(kiln::EncodePng16(t));
+  const Png p = Parse(kiln::EncodePng16(t, true));
   CHECK(p.colourType == 0);
   CHECK(p.width == 4);
   CHECK(p.height == 6);  // 3 rows x 2 slices, stacked as in the EXR
@@ -133,7 +192,7 @@ TEST_CASE("a one-channel PNG16 is grey, a constant channel stores 0", "[io][png1
   CHECK(scale == 123);  // 0 .. 123
   CHECK(Sample(p, 1, 3, 5, 0) == 65535);
   for (float& v : t.data) v = 0.25f;
-  const Png c = Parse(kiln::EncodePng16(t));
+  const Png c = Parse(kiln::EncodePng16(t, true));
   CHECK(Numbers(c.text.at("kiln.scale")).at(0) == 0);
   CHECK(Numbers(c.text.at("kiln.offset")).at(0) == 0.25);
   CHECK(Sample(c, 1, 2, 2, 0) == 0);

@@ -3,6 +3,7 @@
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -362,18 +363,27 @@ ordered_json ManifestDocument(const std::string& dir, const std::vector<Table>& 
     const Table& t = tables[i];
     ordered_json e;
     e["name"] = t.name;
-    e["file"] = t.name + FormatExtension(format);
+    const std::string file = t.name + FormatExtension(format);
+    const int parts = tablePartCount(t.channels.size());
+    e["file"] = tablePartPath(file, 1, parts);
+    if (parts > 1) {
+      ordered_json files = ordered_json::array();
+      for (int p = 1; p <= parts; ++p) files.push_back(tablePartPath(file, p, parts));
+      e["files"] = files;
+    }
+    e["layout"] = kLayoutVersion;
     if (format != OutputFormat::Exr) {
       e["format"] = FormatName(format);
-      e["pixel_type"] = format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32";
-      if (format == OutputFormat::Png16) {
+      e["pixel_type"] = IsPng16(format) ? "unorm16" : half ? "float16" : "float32";
+      if (IsPng16(format)) {
         ordered_json scale = ordered_json::array(), offset = ordered_json::array();
-        for (const Png16Channel& c : Png16Scales(t)) {
+        for (const Png16Channel& c : Png16Quantisation(t, format == OutputFormat::Png16Scaled)) {
           scale.push_back(c.scale);
           offset.push_back(c.offset);
         }
         e["png16"] = {{"scale", scale},
                       {"offset", offset},
+                      {"encoding", format == OutputFormat::Png16Scaled ? "scaled" : "unit"},
                       {"decode", "value = stored / 65535 * scale + offset"}};
       }
     }
@@ -388,7 +398,21 @@ ordered_json ManifestDocument(const std::string& dir, const std::vector<Table>& 
     added[key] = std::move(e);
   }
   std::map<EntryKey, const ordered_json*> entries = old->entries;
-  for (const auto& [key, e] : added) entries[key] = &e;
+  const std::string ext = FormatExtension(format);
+  for (const auto& [key, e] : added) {
+    // The table's entry of another file name in this format (a layout-1 NAME.exr of a table now
+    // in parts, or the reverse) describes a file this bake does not write: dropped.
+    for (auto it = entries.begin(); it != entries.end();) {
+      const std::string& other = it->first.second;
+      const bool sameFormat = other.size() >= ext.size() &&
+                              other.compare(other.size() - ext.size(), ext.size(), ext) == 0;
+      if (it->first.first == key.first && sameFormat && it->first != key)
+        it = entries.erase(it);
+      else
+        ++it;
+    }
+    entries[key] = &e;
+  }
   ordered_json doc;
   doc["generator"] = kGenerator;
   doc["format"] = kFormatVersion;
@@ -410,11 +434,19 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
                              ".exr': --flip-y applies to ktx2, dds and png16 (kiln's EXR loader "
                              "reads row 0 as the first node)");
   // The long part (compressing, writing) outside the lock; then the short critical section.
-  PendingFile exr(dir + "/" + table.name + FormatExtension(format));
-  if (format == OutputFormat::Exr)
-    writeTable(exr, table, half, threads);
-  else
-    WriteTextureTable(exr, table, format, half);
+  // A table of more than 4 channels is one file per part (tablePart, tablePartPath).
+  const int parts = tablePartCount(table.channels.size());
+  std::vector<std::unique_ptr<PendingFile>> tableFiles;
+  for (int p = 1; p <= parts; ++p) {
+    tableFiles.push_back(std::make_unique<PendingFile>(
+        tablePartPath(dir + "/" + table.name + FormatExtension(format), p, parts)));
+    const Table part = parts > 1 ? tablePart(table, p) : Table();
+    const Table& written = parts > 1 ? part : table;
+    if (format == OutputFormat::Exr)
+      writeTable(*tableFiles.back(), written, half, threads);
+    else
+      WriteTextureTable(*tableFiles.back(), written, format, half);
+  }
   std::unique_ptr<PendingFile> h;
   if (header) {
     h = std::make_unique<PendingFile>(dir + "/" + table.name + ".h");
@@ -427,7 +459,8 @@ void CommitBakedTable(const std::string& dir, const Table& table, long long eval
       ManifestDocument(dir, {table}, {evals}, format, half, texelsFrom));
   const std::string text = doc->dump(2) + "\n";
   manifest.WriteBytes(text);
-  std::vector<PendingFile*> files = {&exr};
+  std::vector<PendingFile*> files;
+  for (auto& f : tableFiles) files.push_back(f.get());
   if (h) files.push_back(h.get());
   files.push_back(&manifest);
   PendingFile::CommitAll(files);
@@ -445,28 +478,42 @@ bool StoredAsHalf(const std::string& path) {
   return channels.begin() != channels.end();
 }
 
+/// The kiln.layout of the EXR file at `path` (1 when absent: files written before it).
+int StoredLayout(const std::string& path) {
+  Imf::InputFile in(path.c_str(), 1);
+  const auto* layout = in.header().findTypedAttribute<Imf::IntAttribute>("kiln.layout");
+  return layout != nullptr ? layout->value() : 1;
+}
+
 }  // namespace
 
 bool IsUpToDate(const TableSpec& spec, const std::string& dir, bool half, bool lookupError,
                 OutputFormat format) {
-  const std::string file = spec.name + FormatExtension(format), path = dir + "/" + file;
+  const std::string base = spec.name + FormatExtension(format);
+  const int parts = tablePartCount(spec.channels.size());
+  const std::string file = tablePartPath(base, 1, parts), path = dir + "/" + file;
   const std::string hash = spec.Hash();
-  if (access(path.c_str(), R_OK) != 0) return false;
+  for (int p = 1; p <= parts; ++p)
+    if (access((dir + "/" + tablePartPath(base, p, parts)).c_str(), R_OK) != 0) return false;
   const std::shared_ptr<const ManifestEntryMap> manifest = ManifestEntries(dir);
   auto it = manifest->entries.find({spec.name, file});
   if (it == manifest->entries.end()) return false;
   const ordered_json& entry = *it->second;
   if (!entry.contains("spec_hash") || entry["spec_hash"] != hash) return false;
+  // A file of another layout (kLayoutVersion: the EXR channel names, the parts) is rewritten.
+  if (entry.value("layout", 1) != kLayoutVersion) return false;
   Table stored;
   try {
+    if (format == OutputFormat::Exr && StoredLayout(path) != kLayoutVersion) return false;
     stored = LoadAnyTable(path);
     if (format == OutputFormat::Exr) {
       if (StoredAsHalf(path) != half) return false;
     } else {
       // The manifest says how the texels are stored ("float16", "float32", "unorm16").
       std::string pixel = entry.value("pixel_type", "");
-      if (pixel != (format == OutputFormat::Png16 ? "unorm16" : half ? "float16" : "float32"))
-        return false;
+      if (pixel != (IsPng16(format) ? "unorm16" : half ? "float16" : "float32")) return false;
+      // png16 and png16-scaled share the file name: the manifest says which one it is.
+      if (entry.value("format", "") != FormatName(format)) return false;
     }
   } catch (const std::exception&) {
     return false;

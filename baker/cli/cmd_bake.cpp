@@ -63,7 +63,9 @@ void RegisterBake(CLI::App& app) {
   sub->add_flag("-q,--quiet", args->quiet,
                 "print nothing but errors (no line per table on stderr, no progress bar)");
   auto* oFormat = sub->add_option("--format", args->format,
-                                  "file format: exr, ktx2, dds or png16 (16-bit unorm + scale)")
+                                  "file format: exr, ktx2, dds, png16 (16-bit unorm, plain [0, 1] "
+                                  "values) or png16-scaled (16-bit unorm, scale and offset per "
+                                  "channel)")
                       ->capture_default_str();
   auto* oLayout =
       sub->add_option("--layout", args->layout, "dfg channel layout: kiln, ue4 or filament")
@@ -87,7 +89,7 @@ void RegisterBake(CLI::App& app) {
       throw std::invalid_argument(
           "bake: --flip-y applies to --format ktx2, dds or png16 (kiln's EXR loader reads row 0 "
           "as the first node)");
-    if (format == OutputFormat::Png16 && args->half)
+    if (IsPng16(format) && args->half)
       throw std::invalid_argument("bake: --half does not apply to --format png16");
     if (oScene->count() &&
         (oFormat->count() || oLayout->count() || oGrid->count() || oFlip->count()))

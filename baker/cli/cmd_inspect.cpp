@@ -1,4 +1,5 @@
 // kiln inspect: a table's attributes and channel ranges, optionally a false-colour picture.
+#include <algorithm>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
@@ -60,19 +61,36 @@ std::string InspectJson(const std::string& file, const Table& t, const std::stri
   return doc.dump(2) + "\n";
 }
 
-/// The EXR channel that holds each storage channel of the (already loaded) table at `path`:
-/// R, G, B, A for files written since #14, the kiln names for older ones (the loader's rule).
+/// The file channel that holds each storage channel of the (already loaded) table at `path`: in
+/// an EXR of today's layout Y (1 channel) or R, G, B, A, in one of layout 1 R, G, B, A, in
+/// older ones the kiln names (the loader's rule); in KTX2, DDS and PNG16 R, G, B, A. A table
+/// stored in parts (more than 4 channels) names part 2's channels "2:R", "2:G", ...
 std::vector<std::string> ExrChannelsOf(const std::string& path, const Table& t) {
-  std::vector<std::string> rgba = exrChannelNames(t.channels.size());
-  // KTX2, DDS and PNG16 files hold the channels as R, G, B, A in storage order.
+  const int parts = tablePartCount(t.channels.size());
   char head[12] = {};
   std::ifstream(path, std::ios::binary).read(head, sizeof head);
-  if (SniffTableFile(std::string(head, sizeof head)) != TableFileKind::Exr) return rgba;
+  const bool exr = SniffTableFile(std::string(head, sizeof head)) == TableFileKind::Exr;
+  if (parts > 1 || !exr) {
+    std::vector<std::string> out;
+    for (int p = 1; p <= parts; ++p) {
+      const std::size_t first = std::size_t(p - 1) * kMaxChannelsPerFile;
+      const std::size_t count =
+          std::min<std::size_t>(kMaxChannelsPerFile, t.channels.size() - first);
+      for (const std::string& n : exr ? exrChannelNames(count) : exrLayout1ChannelNames(count))
+        out.push_back(p > 1 ? std::to_string(p) + ":" + n : n);
+    }
+    return out;
+  }
   std::set<std::string> inFile;
   Imf::InputFile file(path.c_str());
   for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
     inFile.insert(it.name());
-  if (!rgba.empty() && inFile == std::set<std::string>(rgba.begin(), rgba.end())) return rgba;
+  const std::size_t nc = t.channels.size();
+  const std::vector<std::string> today = exrFileChannels(nc), layout1 = exrLayout1ChannelNames(nc);
+  if (!today.empty() && inFile == std::set<std::string>(today.begin(), today.end()))
+    return exrChannelNames(nc);
+  if (!layout1.empty() && inFile == std::set<std::string>(layout1.begin(), layout1.end()))
+    return layout1;
   return t.channels;
 }
 

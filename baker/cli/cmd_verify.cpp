@@ -1,5 +1,8 @@
 // kiln verify: repeats the bake's lookup-error search (lookup_error.h) on each table and checks
 // the max it finds against the bound the table declares.
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
 #include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -37,6 +40,19 @@ void ClearBar() {
   std::fflush(stderr);
 }
 
+/// Whether the EXR file at `path` is part 2 or later of a wider table (kiln.part > 1): loading
+/// part 1 reads the whole table, so a folder's listing names the table once. False for a file
+/// whose header does not read (its own line reports it).
+bool IsLaterPart(const std::string& path) {
+  try {
+    Imf::InputFile in(path.c_str(), 1);
+    const auto* part = in.header().findTypedAttribute<Imf::IntAttribute>("kiln.part");
+    return part != nullptr && part->value() > 1;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 std::vector<std::string> ExrFiles(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) {
@@ -50,7 +66,8 @@ std::vector<std::string> ExrFiles(const std::string& path) {
   if (DIR* d = opendir(path.c_str())) {
     while (dirent* e = readdir(d)) {
       std::string n = e->d_name;
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0) out.push_back(path + "/" + n);
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0 && !IsLaterPart(path + "/" + n))
+        out.push_back(path + "/" + n);
     }
     closedir(d);
   }

@@ -13,6 +13,7 @@
 #include <Imath/half.h>
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -45,17 +46,28 @@ void writeExrFile(const std::string& filePath, const Table& table, bool asHalf, 
   header.compression() = Imf::ZIP_COMPRESSION;
   setKilnAttributes(header, table);
   const Imf::PixelType fileType = asHalf ? Imf::HALF : Imf::FLOAT;
-  // R, G, B, A for up to 4 channels; more (an ltc table's 6) by their kiln.channels names, which
-  // the loader reads as well.
-  const std::vector<std::string> names =
-      table.channels.size() <= 4 ? exrChannelNames(table.channels.size()) : table.channels;
-  for (const std::string& channel : names)
+  // Y for 1 channel, R, G, B(, A) for 2 to 4 (a 2-channel table's B unused, zeros): every
+  // RGBA reader opens the file (exrFileChannels). A wider table is written as parts.
+  if (table.channels.size() > static_cast<std::size_t>(kMaxChannelsPerFile))
+    throw std::runtime_error(std::to_string(table.channels.size()) +
+                             " channels in one EXR: write each tablePart");
+  const std::vector<std::string> names = exrChannelNames(table.channels.size());
+  const std::vector<std::string> fileNames = exrFileChannels(table.channels.size());
+  for (const std::string& channel : fileNames)
     header.channels().insert(channel, Imf::Channel(fileType));
 
   const std::size_t channelCount = table.channels.size();
   const Imath::Box2i window = header.dataWindow();
   Imf::FrameBuffer frameBuffer;
   std::vector<::half> halves;  // OpenEXR does not convert FLOAT to HALF on output
+  // The unused channels: one row of zeros, repeated (yStride 0) on every row.
+  const std::vector<float> zeroRow(static_cast<std::size_t>(table.imageWidth()), 0.0f);
+  const std::vector<::half> zeroHalfRow(zeroRow.size(), ::half(0.0f));
+  for (std::size_t c = names.size(); c < fileNames.size(); ++c) {
+    char* base = asHalf ? (char*)zeroHalfRow.data() : (char*)zeroRow.data();
+    frameBuffer.insert(fileNames[c], Imf::Slice(asHalf ? Imf::HALF : Imf::FLOAT, base,
+                                                asHalf ? sizeof(::half) : sizeof(float), 0));
+  }
   if (asHalf) {
     halves.reserve(table.data.size());
     for (float v : table.data) halves.push_back(::half(v));  // round to nearest even
@@ -115,6 +127,17 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
     setDouble(h, "kiln.lookup_error.cubic_rms", t.lookupError.cubicRms);
   }
   setString(h, "kiln.spec_hash", t.specHash);
+  setInt(h, "kiln.layout", kLayoutVersion);
+  const std::vector<std::string> used = exrChannelNames(t.channels.size());
+  const std::vector<std::string> file = exrFileChannels(t.channels.size());
+  if (file.size() > used.size())
+    setString(h, "kiln.unused_channels",
+              joinList(std::vector<std::string>(file.begin() + used.size(), file.end()), ','));
+  if (t.part.index > 0) {
+    setInt(h, "kiln.part", t.part.index);
+    setInt(h, "kiln.parts", t.part.count);
+    setString(h, "kiln.table_channels", joinList(t.part.tableChannels, ','));
+  }
   if (t.fitError.max >= 0) {
     setDouble(h, "kiln.fit_error.max", t.fitError.max);
     setDouble(h, "kiln.fit_error.rms", t.fitError.rms);
@@ -125,9 +148,21 @@ void setKilnAttributes(Imf::Header& h, const Table& t) {
 }
 
 void writeTable(const std::string& path, const Table& table, bool half, int threads) {
-  PendingFile file(path);
-  writeTable(file, table, half, threads);
-  PendingFile::CommitAll({&file});
+  const int count = tablePartCount(table.channels.size());
+  if (count == 1) {
+    PendingFile file(path);
+    writeTable(file, table, half, threads);
+    PendingFile::CommitAll({&file});
+    return;
+  }
+  std::vector<std::unique_ptr<PendingFile>> files;
+  std::vector<PendingFile*> commit;
+  for (int part = 1; part <= count; ++part) {
+    files.push_back(std::make_unique<PendingFile>(tablePartPath(path, part, count)));
+    writeTable(*files.back(), tablePart(table, part), half, threads);
+    commit.push_back(files.back().get());
+  }
+  PendingFile::CommitAll(commit);
 }
 
 void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
@@ -135,6 +170,10 @@ void writeTable(PendingFile& file, const Table& table, bool half, int threads) {
   std::string problem;
   if (!validateTable(table, problem))
     throw std::runtime_error("kiln: cannot write '" + path + "': invalid table: " + problem);
+  if (table.channels.size() > static_cast<std::size_t>(kMaxChannelsPerFile))
+    throw std::runtime_error("kiln: cannot write '" + path +
+                             "': " + std::to_string(table.channels.size()) +
+                             " channels in one file; write each tablePart");
   if (half) {
     for (float v : table.data) {
       if (std::fabs(v) > kHalfMax)

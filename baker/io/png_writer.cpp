@@ -15,6 +15,11 @@
 namespace kiln {
 
 namespace {
+/// gAMA's value for a gamma of 1.0 (the chunk stores 100000 times the encoding gamma).
+constexpr std::uint32_t kPngGammaOne = 100000;
+}  // namespace
+
+namespace {
 
 /// Gap between channel panels, in pixels, and its grey level.
 constexpr int kPanelGap = 4;
@@ -77,7 +82,8 @@ std::string zlibStream(const std::vector<std::uint8_t>& raw) {
 
 std::string encodePngImage(int width, int height, int bitDepth, int colourType,
                            const std::vector<std::uint8_t>& pixels,
-                           const std::vector<std::pair<std::string, std::string>>& text) {
+                           const std::vector<std::pair<std::string, std::string>>& text,
+                           bool linear) {
   if (width < 1 || height < 1)
     throw std::invalid_argument("PNG image must be at least 1 x 1 pixels");
   int samples = 0;
@@ -115,6 +121,17 @@ std::string encodePngImage(int width, int height, int bitDepth, int colourType,
   header += static_cast<char>(colourType);
   header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
   appendChunk(png, crc, "IHDR", header);
+  if (linear) {
+    std::string cicp;  // BT.709 primaries, linear transfer (8), RGB (matrix 0), full range
+    cicp += '\x01';
+    cicp += '\x08';
+    cicp += '\x00';
+    cicp += '\x01';
+    appendChunk(png, crc, "cICP", cicp);
+    std::string gamma;
+    appendBigEndian32(gamma, kPngGammaOne);
+    appendChunk(png, crc, "gAMA", gamma);
+  }
   for (const auto& [keyword, value] : text) appendChunk(png, crc, "tEXt", keyword + '\0' + value);
   appendChunk(png, crc, "IDAT", zlibStream(raw));
   appendChunk(png, crc, "IEND", std::string());

@@ -18,13 +18,16 @@ std::string encodePngRgb8(int width, int height, const std::vector<std::uint8_t>
 
 /// Encodes an image as a complete PNG file: IHDR (`bitDepth` 8 or 16, `colourType` 0 grey, 2
 /// RGB, 4 grey + alpha or 6 RGBA, no interlace), one tEXt chunk per (keyword, text) pair in
-/// order (keyword 1..79 bytes; neither may contain a NUL), one IDAT (rows with filter None,
+/// order (keyword 1..79 bytes; neither may contain a NUL); with `linear`, before them, the chunks
+/// saying the samples are linear: cICP (primaries 1 BT.709, transfer 8 linear, matrix 0, full
+/// range) and gAMA 100000 (gamma 1.0), and no sRGB or iCCP; one IDAT (rows with filter None,
 /// deflated by zlib at level 9), IEND. `pixels` holds the rows top to bottom, samples interleaved,
 /// 16-bit samples big-endian (PNG's order). Throws std::invalid_argument on a size mismatch, an
 /// empty image, an unsupported depth or type, or a bad keyword.
 std::string encodePngImage(int width, int height, int bitDepth, int colourType,
                            const std::vector<std::uint8_t>& pixels,
-                           const std::vector<std::pair<std::string, std::string>>& text);
+                           const std::vector<std::pair<std::string, std::string>>& text,
+                           bool linear = false);
 
 /// The viridis colour of t in [0, 1] (clamped; NaN maps to 0) as 8-bit RGB,
 /// from a degree-6 polynomial fit of matplotlib's viridis.

@@ -212,6 +212,12 @@ Table TableFromDescription(const ordered_json& j) {
     t.lookupError.cubicRms = Get<double>(j["lookup_error_cubic"], "rms");
   }
   t.specHash = Get<std::string>(j, "spec_hash");
+  if (j.contains("part")) {  // one part of a table of more than 4 channels
+    const ordered_json& part = j["part"];
+    t.part.index = Get<int>(part, "index");
+    t.part.count = Get<int>(part, "count");
+    t.part.tableChannels = Get<std::vector<std::string>>(part, "table_channels");
+  }
   // The checks of the EXR loader's header (kiln/table_checks.h), before any texel is allocated.
   const std::string problem = tableHeaderProblem(t);
   if (!problem.empty()) Bad("invalid table: " + problem);
@@ -447,7 +453,40 @@ Table DecodePng16(const std::string& bytes) {
   return t;
 }
 
-Table LoadAnyTable(const std::string& path) {
+namespace {
+
+/// The manifest entry `e` (of a whole table) narrowed to its part in `file` when `e` lists the
+/// table's parts ("files"): that part's channels, meanings and "part"; `e` itself otherwise.
+ordered_json PartDescription(const ordered_json& e, const std::string& file) {
+  if (!e.contains("files") || !e["files"].is_array() || e["files"].size() < 2) return e;
+  const ordered_json& files = e["files"];
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (files[i] != file) continue;
+    const Table whole = TableFromDescription(e);
+    const Table part = tablePart(whole, static_cast<int>(i) + 1);
+    ordered_json out = e;
+    out["channels"] = part.channels;
+    out["channel_meanings"] = part.channelMeanings;
+    out["part"] = {{"index", part.part.index},
+                   {"count", part.part.count},
+                   {"table_channels", part.part.tableChannels}};
+    return out;
+  }
+  return e;
+}
+
+/// Whether the manifest entry `e` describes `file` (its "file", or one of its "files").
+bool EntryNames(const ordered_json& e, const std::string& file) {
+  if (!e.is_object()) return false;
+  if (e.contains("file") && e["file"] == file) return true;
+  if (!e.contains("files") || !e["files"].is_array()) return false;
+  for (const ordered_json& f : e["files"])
+    if (f == file) return true;
+  return false;
+}
+
+/// LoadAnyTable of one file: a part of a wider table comes back as that part (EXR: whole).
+Table LoadOneFile(const std::string& path) {
   auto fail = [&](const std::string& why) {
     return std::runtime_error("cannot read '" + path + "': " + why);
   };
@@ -489,8 +528,8 @@ Table LoadAnyTable(const std::string& path) {
     CheckFormatVersion(manifest, "manifest.json");
     if (manifest.contains("tables") && manifest["tables"].is_array())
       for (const ordered_json& e : manifest["tables"])
-        if (e.is_object() && e.contains("file") && e["file"] == file) {
-          ordered_json entry = e;
+        if (EntryNames(e, file)) {
+          ordered_json entry = PartDescription(e, file);
           if (!entry.contains("generator") && manifest.contains("generator"))
             entry["generator"] = manifest["generator"];
           return DecodeDds(bytes, entry);
@@ -498,6 +537,23 @@ Table LoadAnyTable(const std::string& path) {
     throw fail("manifest.json beside it has no entry for '" + file + "'");
   } catch (const std::invalid_argument& e) {
     throw fail(e.what());
+  }
+}
+
+}  // namespace
+
+Table LoadAnyTable(const std::string& path) {
+  Table table = LoadOneFile(path);
+  if (table.part.count < 2) return table;
+  std::vector<Table> parts;
+  try {
+    for (int other = 1; other <= table.part.count; ++other)
+      if (other != table.part.index)
+        parts.push_back(LoadOneFile(tableSiblingPartPath(path, table.part.index, other)));
+    parts.push_back(std::move(table));
+    return mergeTableParts(parts);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error("cannot read '" + path + "': " + e.what());
   }
 }
 

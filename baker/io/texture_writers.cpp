@@ -92,6 +92,10 @@ nlohmann::ordered_json MetadataJson(const Table& t) {
   AppendTableDescription(j, t);
   j["flip_y"] = FlipsY(t);
   j["spec_hash"] = t.specHash;
+  j["layout"] = kLayoutVersion;
+  if (t.part.index > 0)  // one part of a table of more than 4 channels
+    j["part"] = {
+        {"index", t.part.index}, {"count", t.part.count}, {"table_channels", t.part.tableChannels}};
   return j;
 }
 
@@ -102,7 +106,9 @@ OutputFormat ParseOutputFormat(const std::string& text) {
   if (text == "ktx2") return OutputFormat::Ktx2;
   if (text == "dds") return OutputFormat::Dds;
   if (text == "png16") return OutputFormat::Png16;
-  throw std::invalid_argument("unknown --format '" + text + "' (exr, ktx2, dds or png16)");
+  if (text == "png16-scaled") return OutputFormat::Png16Scaled;
+  throw std::invalid_argument("unknown --format '" + text +
+                              "' (exr, ktx2, dds, png16 or png16-scaled)");
 }
 
 const char* FormatName(OutputFormat format) {
@@ -115,6 +121,8 @@ const char* FormatName(OutputFormat format) {
       return "dds";
     case OutputFormat::Png16:
       return "png16";
+    case OutputFormat::Png16Scaled:
+      return "png16-scaled";
   }
   return "exr";
 }
@@ -128,6 +136,7 @@ const char* FormatExtension(OutputFormat format) {
     case OutputFormat::Dds:
       return ".dds";
     case OutputFormat::Png16:
+    case OutputFormat::Png16Scaled:
       return ".png";
   }
   return ".exr";
@@ -155,6 +164,15 @@ std::vector<Png16Channel> Png16Scales(const Table& table) {
     out[c].scale = hi - lo;  // exact: both are floats
   }
   return out;
+}
+
+std::vector<Png16Channel> Png16Quantisation(const Table& table, bool scaled) {
+  if (scaled) return Png16Scales(table);
+  return std::vector<Png16Channel>(table.channels.size(), Png16Channel{1.0, 0.0});
+}
+
+bool IsPng16(OutputFormat format) {
+  return format == OutputFormat::Png16 || format == OutputFormat::Png16Scaled;
 }
 
 std::string EncodeKtx2(const Table& table, bool half) {
@@ -281,10 +299,22 @@ std::string EncodeDds(const Table& table, bool half) {
   return f;
 }
 
-std::string EncodePng16(const Table& table) {
+std::string EncodePng16(const Table& table, bool scaled) {
   CheckEncodable(table, false, "16-bit PNG");
   const std::size_t nc = table.channels.size();
-  const std::vector<Png16Channel> scales = Png16Scales(table);
+  if (!scaled) {
+    // Plain [0, 1] values: a channel beyond them is refused, naming its range.
+    const std::vector<Png16Channel> ranges = Png16Scales(table);
+    for (std::size_t c = 0; c < nc; ++c) {
+      const double lo = ranges[c].offset, hi = ranges[c].offset + ranges[c].scale;
+      if (lo < 0.0 || hi > 1.0)
+        throw std::invalid_argument("channel '" + table.channels[c] + "' spans [" + G17(lo) + ", " +
+                                    G17(hi) +
+                                    "], outside [0, 1]: png16 stores plain values in [0, 1]; "
+                                    "--format png16-scaled stores a scale and offset per channel");
+    }
+  }
+  const std::vector<Png16Channel> scales = Png16Quantisation(table, scaled);
   const int samples = nc == 1 ? 1 : nc == 4 ? 4 : 3;
   const int colourType = nc == 1 ? 0 : nc == 4 ? 6 : 2;
   const std::vector<int> rows = FileRowOrder(table, FlipsY(table));
@@ -314,13 +344,17 @@ std::string EncodePng16(const Table& table) {
     js.push_back(c.scale);
     jo.push_back(c.offset);
   }
-  meta["png16"] = {{"scale", js}, {"offset", jo}};
+  meta["png16"] = {{"scale", js}, {"offset", jo}, {"encoding", scaled ? "scaled" : "unit"}};
+  // The samples are linear (cICP, gAMA 1.0): no viewer or loader applies an sRGB curve.
+  const std::string decode = scaled ? "value = stored / 65535 * scale + offset, per channel"
+                                    : "value = stored / 65535 (linear, every channel)";
   return encodePngImage(static_cast<int>(width), static_cast<int>(rows.size()), 16, colourType,
                         pixels,
                         {{"kiln.scale", scaleText},
                          {"kiln.offset", offsetText},
-                         {"kiln.decode", "value = stored / 65535 * scale + offset, per channel"},
-                         {"kiln.json", meta.dump(-1, ' ', true)}});
+                         {"kiln.decode", decode},
+                         {"kiln.json", meta.dump(-1, ' ', true)}},
+                        true);
 }
 
 void WriteTextureTable(PendingFile& file, const Table& table, OutputFormat format, bool half) {
@@ -338,8 +372,9 @@ void WriteTextureTable(PendingFile& file, const Table& table, OutputFormat forma
         bytes = EncodeDds(table, half);
         break;
       case OutputFormat::Png16:
+      case OutputFormat::Png16Scaled:
         if (half) throw std::invalid_argument("--half does not apply to png16");
-        bytes = EncodePng16(table);
+        bytes = EncodePng16(table, format == OutputFormat::Png16Scaled);
         break;
       case OutputFormat::Exr:
         throw std::invalid_argument("EXR is written by writeTable");

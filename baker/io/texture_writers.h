@@ -11,17 +11,18 @@ namespace kiln {
 
 class PendingFile;
 
-/// The file formats `kiln bake --format` writes.
-enum class OutputFormat { Exr, Ktx2, Dds, Png16 };
+/// The file formats `kiln bake --format` writes: Png16 stores plain [0, 1] values (stored /
+/// 65535), Png16Scaled a scale and offset per channel (any range).
+enum class OutputFormat { Exr, Ktx2, Dds, Png16, Png16Scaled };
 
-/// Parses "exr", "ktx2", "dds" or "png16"; throws std::invalid_argument
-/// ("unknown --format 'x' (exr, ktx2, dds or png16)") otherwise.
+/// Parses "exr", "ktx2", "dds", "png16" or "png16-scaled"; throws std::invalid_argument
+/// ("unknown --format 'x' (exr, ktx2, dds, png16 or png16-scaled)") otherwise.
 OutputFormat ParseOutputFormat(const std::string& text);
 
-/// The --format name of `format` ("exr", "ktx2", "dds", "png16").
+/// The --format name of `format` ("exr", "ktx2", "dds", "png16", "png16-scaled").
 const char* FormatName(OutputFormat format);
 
-/// The file extension of `format`, with its dot: ".exr", ".ktx2", ".dds", ".png".
+/// The file extension of `format`, with its dot: ".exr", ".ktx2", ".dds", ".png" (both PNGs).
 const char* FormatExtension(OutputFormat format);
 
 /// The 16-bit PNG quantisation of one channel: value = stored / 65535 * scale + offset, with
@@ -31,8 +32,16 @@ struct Png16Channel {
   double scale = 0, offset = 0;
 };
 
-/// The per-channel quantisation EncodePng16 uses for `table`, in storage order.
+/// Each channel's range as a Png16Channel (offset = min, scale = max - min), in storage order:
+/// the quantisation of png16-scaled.
 std::vector<Png16Channel> Png16Scales(const Table& table);
+
+/// The quantisation EncodePng16 uses: Png16Scales when `scaled`, else scale 1 and offset 0 for
+/// every channel (plain values, value = stored / 65535).
+std::vector<Png16Channel> Png16Quantisation(const Table& table, bool scaled);
+
+/// Whether `format` is one of the 16-bit PNGs (Png16, Png16Scaled).
+bool IsPng16(OutputFormat format);
 
 /// The image rows of `table` in file order: row r of the file holds the table's image row
 /// Rows[r] (kiln order: slice k = row / size1, node i1 = row % size1); with flipY the rows of
@@ -65,11 +74,16 @@ std::string EncodeKtx2(const Table& table, bool half);
 std::string EncodeDds(const Table& table, bool half);
 
 /// A 16-bit PNG of `table`'s image (size0 x size1*size2, slices stacked as in the EXR, rows as
-/// FileRowOrder), unsigned normalised per channel (Png16Scales): grey for 1 channel, RGB for 2
-/// (blue 0) or 3, RGBA for 4. tEXt chunks: "kiln.scale" and "kiln.offset" (one %.17g number
-/// per channel, space-separated), "kiln.decode" (the formula) and "kiln.json" (as in
-/// EncodeKtx2, plus the scales). Throws std::invalid_argument for more than 4 channels.
-std::string EncodePng16(const Table& table);
+/// FileRowOrder): grey for 1 channel, RGB for 2 (blue 0, unused) or 3, RGBA for 4, quantised
+/// by Png16Quantisation: plain (`scaled` false: value = stored / 65535; a channel with a value
+/// outside [0, 1] is refused with std::invalid_argument naming the channel and its range) or
+/// with a scale and offset per channel (`scaled`). Chunks saying the samples are linear (cICP
+/// BT.709 / linear transfer, gAMA 1.0; no sRGB, no iCCP: encodePngImage's `linear`), then tEXt
+/// chunks: "kiln.scale" and "kiln.offset" (one %.17g number per channel, space-separated; 1 and
+/// 0 when plain), "kiln.decode" (the formula) and "kiln.json" (as in EncodeKtx2, plus "png16":
+/// scale, offset, encoding "unit" or "scaled"). Throws std::invalid_argument for more than 4
+/// channels.
+std::string EncodePng16(const Table& table, bool scaled = false);
 
 /// Writes `table` in `format` (not Exr: exr_writer.h) into `file`'s temporary file, after
 /// validateTable; the caller commits it (PendingFile::CommitAll). Throws std::runtime_error

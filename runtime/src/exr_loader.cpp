@@ -10,6 +10,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/ImfTestFile.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -98,6 +99,27 @@ void checkReadableFile(const std::string& path) {
   if (stream.peek() == std::ifstream::traits_type::eof()) throw Refusal("the file is empty");
 }
 
+/// Fills `table.part` from kiln.part, kiln.parts and kiln.table_channels (all three or none):
+/// part `i` of `n` parts of a table whose channels are kiln.table_channels, of which this file
+/// holds kiln.channels (channels 4 (i - 1) .. of the whole table).
+void readPartAttributes(const Imf::Header& h, Table& table) {
+  if (h.find("kiln.part") == h.end()) return;
+  const int index = requireInt(h, "kiln.part");
+  const int count = requireInt(h, "kiln.parts");
+  const std::vector<std::string> whole = splitList(requireString(h, "kiln.table_channels"), ',');
+  if (count != tablePartCount(whole.size()) || count < 2 || index < 1 || index > count)
+    throw Refusal("kiln.part " + std::to_string(index) + " of kiln.parts " + std::to_string(count) +
+                  " does not fit kiln.table_channels '" + joinList(whole, ',') + "' (" +
+                  std::to_string(kMaxChannelsPerFile) + " channels a part)");
+  const std::size_t first = static_cast<std::size_t>(index - 1) * kMaxChannelsPerFile;
+  const std::size_t last = std::min(whole.size(), first + kMaxChannelsPerFile);
+  if (std::vector<std::string>(whole.begin() + first, whole.begin() + last) != table.channels)
+    throw Refusal("part " + std::to_string(index) + " holds channels '" +
+                  joinList(table.channels, ',') + "', kiln.table_channels '" +
+                  joinList(whole, ',') + "' gives it others");
+  table.part = TablePart{index, count, whole};
+}
+
 /// Fills every metadata field of `table` from the kiln.* attributes.
 void readAttributes(const Imf::Header& h, Table& table) {
   if (h.find("kiln.format") == h.end())
@@ -149,16 +171,17 @@ void readAttributes(const Imf::Header& h, Table& table) {
   table.fitError.polygonMax = optionalDouble(h, "kiln.fit_error.polygon_max", -1.0);
   table.fitError.polygonRms = optionalDouble(h, "kiln.fit_error.polygon_rms", -1.0);
   table.fitError.method = optionalString(h, "kiln.fit_error.method");
+  readPartAttributes(h, table);
   // The checks every table file's header goes through (KTX2, DDS and PNG readers too).
   const std::string headerIssue = tableHeaderProblem(table);
   if (!headerIssue.empty()) throw Refusal(headerIssue);
 }
 
-/// Checks the image's channels and returns the EXR channel name of each
-/// storage channel: R, G, B, A (exrChannelNames) when those are the image's
-/// channels, else kiln.channels itself (files written before kiln named its
-/// channels R, G, B, A); anything else is refused. Each channel must be FLOAT
-/// or HALF and not subsampled.
+/// Checks the image's channels and returns the EXR channel name of each storage channel, in the
+/// first of the namings that matches the image's channel list exactly: exrFileChannels (Y; R, G,
+/// B with B unused; R, G, B; R, G, B, A), the first `n` of R, G, B, A (files of layout 1 named
+/// so), or kiln.channels itself (older files); anything else is refused. Each channel must be
+/// FLOAT or HALF and not subsampled.
 std::vector<std::string> checkChannels(const Imf::ChannelList& list,
                                        const std::vector<std::string>& expected) {
   std::set<std::string> inFile;
@@ -168,13 +191,24 @@ std::vector<std::string> checkChannels(const Imf::ChannelList& list,
     inFileText += (inFileText.empty() ? "" : ",") + std::string(it.name());
   }
   const std::set<std::string> declared(expected.begin(), expected.end());
-  const std::vector<std::string> rgba = exrChannelNames(expected.size());
-  const std::set<std::string> rgbaSet(rgba.begin(), rgba.end());
-  if (expected.empty() || declared.size() != expected.size() ||
-      (inFile != declared && (rgba.empty() || inFile != rgbaSet)))
+  const std::vector<std::string> fileNames = exrFileChannels(expected.size());
+  const std::vector<std::string> storage = exrChannelNames(expected.size());
+  const std::vector<std::string> rgba = exrLayout1ChannelNames(expected.size());
+  auto isList = [&](const std::vector<std::string>& names) {
+    return !names.empty() && inFile == std::set<std::string>(names.begin(), names.end());
+  };
+  std::vector<std::string> names;
+  if (isList(fileNames))
+    names = storage;
+  else if (isList(rgba))
+    names = rgba;
+  else if (!expected.empty() && declared.size() == expected.size() && inFile == declared)
+    names = expected;
+  else
     throw Refusal("channel mismatch: kiln.channels is '" + joinList(expected, ',') +
                   "' but the image has channels '" + inFileText + "' (expected '" +
-                  joinList(rgba, ',') + "' or the kiln.channels names)");
+                  joinList(fileNames, ',') + "', '" + joinList(rgba, ',') +
+                  "' or the kiln.channels names)");
   for (auto it = list.begin(); it != list.end(); ++it) {
     const Imf::Channel& channel = it.channel();
     if (channel.type != Imf::FLOAT && channel.type != Imf::HALF)
@@ -183,7 +217,7 @@ std::vector<std::string> checkChannels(const Imf::ChannelList& list,
     if (channel.xSampling != 1 || channel.ySampling != 1)
       throw Refusal("channel '" + std::string(it.name()) + "' is subsampled");
   }
-  return !rgba.empty() && inFile == rgbaSet ? rgba : expected;
+  return names;
 }
 
 /// Little-endian int32 at `p`.
@@ -386,8 +420,8 @@ void checkDataWindow(const HeaderFacts& facts) {
                   " bytes can hold with its compression");
 }
 
-/// Reads the whole table or throws.
-Table readTable(const std::string& path) {
+/// Reads one file (a whole table or one part of a wider one) or throws.
+Table readFile(const std::string& path) {
   checkReadableFile(path);
   if (!Imf::isOpenExrFile(path.c_str())) throw Refusal("not an OpenEXR file");
   checkDataWindow(checkHeader(path));
@@ -439,6 +473,32 @@ Table readTable(const std::string& path) {
   return table;
 }
 
+/// Reads the table in `path`; a part of a wider table is merged with the other parts beside it
+/// (tableSiblingPartPath), which must load and match it. Throws.
+Table readTable(const std::string& path) {
+  Table table = readFile(path);
+  if (table.part.count < 2) return table;
+  const int index = table.part.index;
+  std::vector<Table> parts;
+  for (int other = 1; other <= table.part.count; ++other) {
+    if (other == index) continue;
+    std::string sibling;
+    try {
+      sibling = tableSiblingPartPath(path, index, other);
+      parts.push_back(readFile(sibling));
+    } catch (const std::exception& e) {
+      throw Refusal("part " + std::to_string(other) + " of this table" +
+                    (sibling.empty() ? "" : " ('" + sibling + "')") + ": " + e.what());
+    }
+  }
+  parts.push_back(std::move(table));
+  try {
+    return mergeTableParts(parts);
+  } catch (const std::exception& e) {
+    throw Refusal(e.what());
+  }
+}
+
 /// Sets `error` to the one-line message for `problem`; never throws.
 void describeFailure(std::string& error, const std::string& path, const char* problem) noexcept {
   try {
@@ -451,6 +511,16 @@ void describeFailure(std::string& error, const std::string& path, const char* pr
 }  // namespace
 
 std::vector<std::string> exrChannelNames(std::size_t count) {
+  if (count == 1) return {"Y"};
+  return exrLayout1ChannelNames(count);
+}
+
+std::vector<std::string> exrFileChannels(std::size_t count) {
+  if (count == 2) return {"R", "G", "B"};
+  return exrChannelNames(count);
+}
+
+std::vector<std::string> exrLayout1ChannelNames(std::size_t count) {
   static const char* const kNames[] = {"R", "G", "B", "A"};
   if (count == 0 || count > 4) return {};
   return std::vector<std::string>(kNames, kNames + count);

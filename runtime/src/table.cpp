@@ -1,10 +1,12 @@
 // Consistency checks and list helpers for kiln::Table.
 #include "kiln/table.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <set>
+#include <stdexcept>
 
 #include "kiln/table_checks.h"
 
@@ -78,6 +80,127 @@ std::vector<std::string> splitList(const std::string& text, char separator) {
     items.push_back(text.substr(start, end - start));
     start = end + 1;
   }
+}
+
+int tablePartCount(std::size_t channels) {
+  if (channels <= static_cast<std::size_t>(kMaxChannelsPerFile)) return 1;
+  return static_cast<int>((channels + kMaxChannelsPerFile - 1) / kMaxChannelsPerFile);
+}
+
+Table tablePart(const Table& table, int index) {
+  const std::size_t nc = table.channels.size();
+  const int count = tablePartCount(nc);
+  if (index < 1 || index > count)
+    throw std::invalid_argument("part " + std::to_string(index) + " of a table of " +
+                                std::to_string(count) + " parts");
+  const std::size_t first = static_cast<std::size_t>(index - 1) * kMaxChannelsPerFile;
+  const std::size_t last = std::min(nc, first + kMaxChannelsPerFile);
+  Table out = table;
+  out.channels.assign(table.channels.begin() + first, table.channels.begin() + last);
+  if (table.channelMeanings.size() == nc)
+    out.channelMeanings.assign(table.channelMeanings.begin() + first,
+                               table.channelMeanings.begin() + last);
+  out.part = TablePart{index, count, table.channels};
+  out.data.clear();
+  if (!table.data.empty()) {
+    const std::size_t texels = table.data.size() / nc;
+    out.data.reserve(texels * (last - first));
+    for (std::size_t t = 0; t < texels; ++t)
+      for (std::size_t c = first; c < last; ++c) out.data.push_back(table.data[t * nc + c]);
+  }
+  return out;
+}
+
+namespace {
+/// Whether two axes are the same grid (name, range, size, warp, constant split).
+bool sameAxis(const TableAxis& a, const TableAxis& b) {
+  const bool sameSplit = a.axis.hasConstantSplit() == b.axis.hasConstantSplit() &&
+                         (!a.axis.hasConstantSplit() || a.axis.split == b.axis.split);
+  return a.name == b.name && a.axis.lo == b.axis.lo && a.axis.hi == b.axis.hi &&
+         a.axis.size == b.axis.size && a.axis.warp == b.axis.warp && sameSplit;
+}
+}  // namespace
+
+Table mergeTableParts(const std::vector<Table>& parts) {
+  if (parts.empty()) throw std::invalid_argument("no parts to merge");
+  const Table& head = parts.front();
+  const int count = head.part.count;
+  if (count < 2 || static_cast<int>(parts.size()) != count)
+    throw std::invalid_argument(std::to_string(parts.size()) + " parts of a table of " +
+                                std::to_string(count));
+  std::vector<const Table*> byIndex(static_cast<std::size_t>(count), nullptr);
+  for (const Table& p : parts) {
+    const std::string which = "part " + std::to_string(p.part.index) + " of '" + p.name + "'";
+    if (p.part.count != count || p.part.index < 1 || p.part.index > count ||
+        byIndex[static_cast<std::size_t>(p.part.index - 1)] != nullptr)
+      throw std::invalid_argument(which + " does not belong to a set of " + std::to_string(count) +
+                                  " distinct parts");
+    bool sameAxes = p.axes.size() == head.axes.size();
+    for (std::size_t d = 0; sameAxes && d < p.axes.size(); ++d)
+      sameAxes = sameAxis(p.axes[d], head.axes[d]);
+    if (p.name != head.name || p.specHash != head.specHash || !sameAxes ||
+        p.part.tableChannels != head.part.tableChannels)
+      throw std::invalid_argument(which + " differs from part " + std::to_string(head.part.index) +
+                                  " in name, spec hash, axes or table channels");
+    byIndex[static_cast<std::size_t>(p.part.index - 1)] = &p;
+  }
+  Table out = head;
+  out.part = TablePart{};
+  out.channels.clear();
+  out.channelMeanings.clear();
+  bool meanings = true;
+  for (const Table* p : byIndex) {
+    out.channels.insert(out.channels.end(), p->channels.begin(), p->channels.end());
+    meanings = meanings && p->channelMeanings.size() == p->channels.size();
+    out.channelMeanings.insert(out.channelMeanings.end(), p->channelMeanings.begin(),
+                               p->channelMeanings.end());
+  }
+  if (!meanings) out.channelMeanings.clear();
+  if (out.channels != head.part.tableChannels)
+    throw std::invalid_argument("the parts of '" + head.name + "' hold channels '" +
+                                joinList(out.channels, ',') + "', the table declares '" +
+                                joinList(head.part.tableChannels, ',') + "'");
+  const std::size_t nc = out.channels.size();
+  const std::size_t texels = head.data.size() / std::max<std::size_t>(1, head.channels.size());
+  out.data.assign(texels * nc, 0.0f);
+  std::size_t first = 0;
+  for (const Table* p : byIndex) {
+    const std::size_t pc = p->channels.size();
+    if (p->data.size() != texels * pc)
+      throw std::invalid_argument("part " + std::to_string(p->part.index) + " of '" + head.name +
+                                  "' holds " + std::to_string(p->data.size()) + " values, " +
+                                  std::to_string(texels * pc) + " expected");
+    for (std::size_t t = 0; t < texels; ++t)
+      for (std::size_t c = 0; c < pc; ++c) out.data[t * nc + first + c] = p->data[t * pc + c];
+    first += pc;
+  }
+  return out;
+}
+
+namespace {
+/// The position of the extension's dot in the last path component (npos: none).
+std::size_t extensionDot(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  const std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path.size();
+  return dot;
+}
+}  // namespace
+
+std::string tablePartPath(const std::string& path, int index, int count) {
+  if (count <= 1) return path;
+  const std::size_t dot = extensionDot(path);
+  return path.substr(0, dot) + "-" + std::to_string(index) + path.substr(dot);
+}
+
+std::string tableSiblingPartPath(const std::string& path, int index, int other) {
+  const std::size_t dot = extensionDot(path);
+  const std::string suffix = "-" + std::to_string(index);
+  if (dot < suffix.size() || path.compare(dot - suffix.size(), suffix.size(), suffix) != 0)
+    throw std::invalid_argument("part " + std::to_string(index) +
+                                " of a table: its file name must end in '" + suffix +
+                                "' before the extension, to find the other parts");
+  return path.substr(0, dot - suffix.size()) + "-" + std::to_string(other) + path.substr(dot);
 }
 
 std::string joinList(const std::vector<std::string>& items, char separator) {

@@ -15,6 +15,24 @@ namespace kiln {
 /// The file format version this runtime reads and writes (`kiln.format`).
 constexpr int kFormatVersion = 1;
 
+/// The file layout this runtime writes (`kiln.layout`; absent in older files: layout 1). Layout 2
+/// names a 1-channel table's EXR channel `Y`, gives a 2-channel table an unused `B` channel of
+/// zeros (R, G, B) and stores a table of more than 4 channels as parts of at most 4 (runtime/
+/// FORMAT.md "The image"). The loader reads every layout; a bake rewrites files of another one.
+constexpr int kLayoutVersion = 2;
+
+/// The most channels one file (an RGBA texture) holds; a wider table is stored as parts.
+constexpr int kMaxChannelsPerFile = 4;
+
+/// Which part of a wider table a Table holds (`kiln.part`, `kiln.parts`, `kiln.table_channels`):
+/// part `index` (1-based) of `count` holds the table's channels 4 (index - 1) .. 4 index - 1.
+/// index 0: a whole table (every table of at most 4 channels, and a merged one).
+struct TablePart {
+  int index = 0;                           ///< 1..count; 0 for a whole table
+  int count = 0;                           ///< number of parts; 0 for a whole table
+  std::vector<std::string> tableChannels;  ///< the whole table's channels, in storage order
+};
+
 /// One axis of a table with its name (`kiln.axis<i>.*`).
 struct TableAxis {
   std::string name;  ///< e.g. "mu", "roughness", "eta"
@@ -59,6 +77,7 @@ struct Table {
   LookupError lookupError;                   ///< kiln.lookup_error.*
   FitError fitError;                         ///< kiln.fit_error.* (fitted tables only)
   std::string specHash;                      ///< kiln.spec_hash (hex)
+  TablePart part;                            ///< kiln.part*: which part of a wider table
   std::vector<float> data;                   ///< the texels, see LutView
 
   /// Number of axes (kiln.dims).
@@ -99,6 +118,30 @@ bool validateTable(const Table& table, std::string& problem);
 /// Why `axis` is not Axis::valid() ("size is 0, must be >= 1", "lo 2 >= hi 1",
 /// "lo 0 <= 0 with the log warp", ...), or an empty string when it is valid.
 std::string axisProblem(const Axis& axis);
+
+/// The number of files a table of `channels` channels is stored in: 1 up to kMaxChannelsPerFile,
+/// else ceil(channels / 4) (an ltc table's 6: 2, channels 0-3 and 4-5).
+int tablePartCount(std::size_t channels);
+
+/// Part `index` (1-based, <= tablePartCount) of `table`: the same metadata with only that part's
+/// channels, meanings and texels (none when `table.data` is empty), and `part` filled in.
+/// Throws std::invalid_argument for an index out of range.
+Table tablePart(const Table& table, int index);
+
+/// The whole table from all its parts, in any order: each must be part i of the same count, with
+/// the same name, axes and spec hash, and their channels in part order must be the declared
+/// `tableChannels`. Throws std::invalid_argument with a one-line reason otherwise.
+Table mergeTableParts(const std::vector<Table>& parts);
+
+/// The file of part `index` of `count` for a table written to `path`: `path` itself when `count`
+/// <= 1, else `-<index>` inserted before the extension (`luts/ltc-ggx.exr` part 2:
+/// `luts/ltc-ggx-2.exr`).
+std::string tablePartPath(const std::string& path, int index, int count);
+
+/// The file of part `other` beside `path`, the file of part `index` (its name ends in
+/// `-<index>` before the extension, as tablePartPath writes). Throws std::invalid_argument when
+/// the name does not end so.
+std::string tableSiblingPartPath(const std::string& path, int index, int other);
 
 /// Splits `text` at every `separator`; an empty text gives an empty list.
 std::vector<std::string> splitList(const std::string& text, char separator);
