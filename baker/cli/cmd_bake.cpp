@@ -5,14 +5,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 
 #include "baker/bake/bake.h"
+#include "baker/io/atomic_write.h"
+#include "baker/io/engine_module_writer.h"
+#include "baker/io/texture_readers.h"
 #include "baker/cli/commands.h"
 #include "baker/scene/bake_scene.h"
 #include "baker/tables/catalogue.h"
 #include "baker/tables/engine_layout.h"
-#include <cstdlib>
+#include "baker/tables/engine_presets.h"
 
 namespace kiln::cli {
 namespace {
@@ -31,6 +35,25 @@ void PrepareOutputFolder(const std::string& dir) {
   CheckManifest(dir);
 }
 
+/// Writes the preset's engine source file (EnginePreset::moduleExtension) of each baked table in
+/// `dir`, from the table file just written in `format` (LoadAnyTable), all renamed into place
+/// together. Nothing for a preset without one.
+void WriteEngineModules(const EnginePreset& preset, const std::vector<TableSpec>& specs,
+                        const std::string& dir, OutputFormat format, std::FILE* log) {
+  if (preset.moduleExtension.empty()) return;
+  std::vector<std::unique_ptr<PendingFile>> files;
+  for (const TableSpec& spec : specs) {
+    const Table table = LoadAnyTable(dir + "/" + spec.name + FormatExtension(format));
+    files.push_back(std::make_unique<PendingFile>(dir + "/" + spec.name + preset.moduleExtension));
+    files.back()->WriteBytes(EngineModuleText(table, preset.moduleExtension));
+  }
+  std::vector<PendingFile*> commit;
+  for (auto& f : files) commit.push_back(f.get());
+  PendingFile::CommitAll(commit);
+  if (log)
+    for (const PendingFile* f : commit) std::fprintf(log, "wrote   %s\n", f->Path().c_str());
+}
+
 }  // namespace
 
 void RegisterBake(CLI::App& app) {
@@ -43,6 +66,7 @@ void RegisterBake(CLI::App& app) {
     double roughness = 0.5;
     std::string format = "exr", layout = "kiln", grid = "kiln";  // issue #14: engine output
     bool flipY = false;
+    std::string preset;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("--out,-o", args->out, "output folder")->capture_default_str();
@@ -65,18 +89,32 @@ void RegisterBake(CLI::App& app) {
   auto* oFormat = sub->add_option("--format", args->format,
                                   "file format: exr, ktx2, dds or png16 (16-bit unorm + scale)")
                       ->capture_default_str();
-  auto* oLayout =
-      sub->add_option("--layout", args->layout, "dfg channel layout: kiln, ue4 or filament")
-          ->capture_default_str();
+  auto* oLayout = sub->add_option("--layout", args->layout,
+                                  "dfg channel layout: kiln, ue4, filament or filament-cloth")
+                      ->capture_default_str();
   auto* oGrid = sub->add_option("--grid", args->grid,
                                 "kiln (the table's own axes) or engine (texel-centred, uniform in "
                                 "(mu, roughness): sample with texture(lut, vec2(NoV, roughness)))")
                     ->capture_default_str();
   auto* oFlip = sub->add_flag("--flip-y", args->flipY,
                               "reverse the rows (row 0 = last roughness node); not with exr");
-  sub->callback([args, oSize, oOnly, oScene, oFormat, oLayout, oGrid, oFlip] {
+  auto* oPreset = sub->add_option(
+      "--preset", args->preset,
+      "an engine's tables in its layout, grid, size and format (docs/engines.md): filament, "
+      "gltf-viewer, three or ue4; --preset help lists them");
+  sub->callback([args, oSize, oOnly, oScene, oFormat, oLayout, oGrid, oFlip, oPreset] {
+    if (oPreset->count() && args->preset == "help") {
+      std::fputs(EnginePresetHelp().c_str(), stdout);
+      return;
+    }
+    const EnginePreset* preset = oPreset->count() ? &FindEnginePreset(args->preset) : nullptr;
+    if (preset && (oLayout->count() || oGrid->count() || oFlip->count()))
+      throw std::invalid_argument(
+          "bake: --preset " + preset->name +
+          " sets the layout, grid and orientation; give --format and --size only");
     // Engine output (#14): checked before anything is baked or written.
-    const OutputFormat format = ParseOutputFormat(args->format);
+    const OutputFormat format =
+        preset && !oFormat->count() ? preset->format : ParseOutputFormat(args->format);
     EngineOptions engine;
     engine.layout = ParseDfgLayout(args->layout);
     if (args->grid != "kiln" && args->grid != "engine")
@@ -89,10 +127,6 @@ void RegisterBake(CLI::App& app) {
           "as the first node)");
     if (format == OutputFormat::Png16 && args->half)
       throw std::invalid_argument("bake: --half does not apply to --format png16");
-    if (oScene->count() &&
-        (oFormat->count() || oLayout->count() || oGrid->count() || oFlip->count()))
-      throw std::invalid_argument(
-          "bake: --format, --layout, --grid and --flip-y apply to catalogue bakes, not --scene");
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("bake: --size " + std::to_string(args->size) +
                                   " must be in [2, 4096]");
@@ -120,7 +154,14 @@ void RegisterBake(CLI::App& app) {
       PrepareOutputFolder(args->out);
       PlanOptions popt;
       popt.size = args->size;
-      int code = BakeScene(args->scene, args->out, run, popt);
+      const int size = args->size;
+      SpecAdapter adapt = [preset, engine, size](TableSpec& spec) {
+        if (preset)
+          ApplyPresetToPlanned(*preset, size, spec);
+        else
+          ApplyEngineOptionsToPlanned(spec, engine);
+      };
+      int code = BakeScene(args->scene, args->out, run, popt, adapt);
       if (code != 0) std::exit(code);
       return;
     }
@@ -128,15 +169,20 @@ void RegisterBake(CLI::App& app) {
     copt.size = args->size;
     copt.brdfRoughness = args->roughness;
     std::vector<TableSpec> specs;
-    if (!oOnly->count()) {
+    if (preset) {
+      specs = PresetSpecs(*preset, args->size,
+                          oOnly->count() ? splitList(args->only, ',') : std::vector<std::string>{});
+    } else if (!oOnly->count()) {
       specs = DefaultCatalogue(copt);
     } else {
       for (const std::string& name : splitList(args->only, ','))
         specs.push_back(CatalogueTable(name, copt));
     }
-    for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
+    if (!preset)
+      for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
     PrepareOutputFolder(args->out);
     BakeRunResult done = BakeSpecs(specs, args->out, run);
+    if (preset) WriteEngineModules(*preset, specs, args->out, format, run.log);
     if (run.log)
       std::fprintf(run.log, "%zu baked, %zu skipped (up to date) in %.2f s -> %s\n",
                    done.baked.size(), done.skipped.size(), done.seconds, args->out.c_str());

@@ -1,0 +1,207 @@
+// Engine presets: one descriptor per engine (docs/engines.md measures each against the engine's
+// own table where one can be had).
+#include "baker/tables/engine_presets.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "baker/models/sheen.h"
+#include "baker/quantities/common.h"
+#include "baker/tables/catalogue.h"
+
+namespace kiln {
+namespace {
+
+EnginePreset FilamentPreset() {
+  EnginePreset p;
+  p.name = "filament";
+  p.engine = "Filament";
+  p.source =
+      "google/filament libs/ibl/src/CubemapIBL.cpp (CubemapIBL::DFG, DFV_Multiscatter, "
+      "DFV_Charlie_Uniform), made by cmgen --ibl-dfg-multiscatter --ibl-dfg-cloth into "
+      "generated/data/dfg.inc, loaded by filament/src/DFG.cpp as RGB16F";
+  p.tables = {{"ggx-dfg", DfgLayout::FilamentCloth, "DFG_LUT"}};
+  p.muTexels = p.roughnessTexels = 128;  // FILAMENT_DFG_LUT_SIZE (filament/src/DFG.h)
+  p.format = OutputFormat::Ktx2;
+  p.moduleExtension = ".inc";
+  p.note =
+      "textureLod(light_iblDFG, vec2(NoV, perceptualRoughness), 0.0): R, G = mix weights of F0, "
+      "B = cloth DFG; rows in GL order (row 0 = roughness 0.5/128), no --flip-y";
+  return p;
+}
+
+EnginePreset GltfViewerPreset() {
+  EnginePreset p;
+  p.name = "gltf-viewer";
+  p.engine = "glTF Sample Viewer";
+  p.source =
+      "KhronosGroup/glTF-Sample-Viewer assets/images/lut_ggx.png, lut_charlie.png, "
+      "lut_sheen_E.png, sampled in source/Renderer/shaders (ibl.glsl: texture(lut, vec2(NdotV, "
+      "roughness)))";
+  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "lut_ggx"},
+              {"charlie-dfg", DfgLayout::Kiln, "lut_charlie"},
+              {"charlie-smith-albedo", DfgLayout::Kiln, "lut_sheen_E"}};
+  p.muTexels = p.roughnessTexels = 128;
+  p.format = OutputFormat::Png16;
+  p.note = "u = NdotV, v = roughness; 16-bit PNG with a per-channel scale (the viewer's are 8-bit)";
+  return p;
+}
+
+EnginePreset ThreePreset() {
+  EnginePreset p;
+  p.name = "three";
+  p.engine = "three.js";
+  p.source =
+      "mrdoob/three.js src/renderers/shaders/DFGLUTData.js (16 x 16 RG16F: scale, bias; "
+      "4096 samples per texel)";
+  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "DFG_LUT"}};
+  p.muTexels = p.roughnessTexels = 16;
+  p.transposed = true;
+  p.format = OutputFormat::Ktx2;
+  p.moduleExtension = ".js";
+  p.note =
+      "three's texture has u = roughness, v = dotNV: kiln's file keeps u = mu (sample it with "
+      "vec2(dotNV, roughness)); R = scale, G = bias";
+  return p;
+}
+
+EnginePreset Ue4Preset() {
+  EnginePreset p;
+  p.name = "ue4";
+  p.engine = "Unreal Engine 4/5";
+  p.source =
+      "EpicGames UnrealEngine Engine/Shaders/Private/BRDF.ush EnvBRDF (PreIntegratedGF: "
+      "Texture2DSampleLevel(PreIntegratedGF, ..., float2(NoV, Roughness), 0).rg)";
+  p.tables = {{"ggx-dfg", DfgLayout::Ue4, "PreIntegratedGF"}};
+  p.muTexels = 128;
+  p.roughnessTexels = 32;
+  p.format = OutputFormat::Dds;
+  p.note = "R = scale, G = bias of F0: SpecularColor * AB.x + saturate(50 * SpecularColor.g) * AB.y";
+  return p;
+}
+
+std::string Join(const std::vector<std::string>& names, const char* sep) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : sep) + n;
+  return out;
+}
+
+bool HasMuAndRoughness(const TableSpec& spec) {
+  bool mu = false, r = false;
+  for (const AxisSpec& a : spec.axes) {
+    mu = mu || a.name == "mu";
+    r = r || a.name == "roughness";
+  }
+  return mu && r;
+}
+
+/// Sets the mu and roughness axes to `muN` and `rN` nodes; with `widen`, also to the engine's
+/// [0, 1] (a sheen table's axes from its model's floors, as its catalogue entry starts).
+void SizeEngineAxes(TableSpec& spec, int muN, int rN, bool widen) {
+  for (AxisSpec& a : spec.axes) {
+    if (a.name != "mu" && a.name != "roughness") continue;
+    a.size = a.name == "mu" ? muN : rN;
+    if (!widen) continue;
+    a.hi = 1;
+    a.lo = 0;
+    if (!quantity_detail::IsSheen(spec.model)) continue;
+    if (a.name == "roughness") a.lo = kSheenTableMinRoughness;
+    if (a.name == "mu" && spec.model == "charlie-smith") a.lo = kCharlieSmithMinMu;
+  }
+}
+
+}  // namespace
+
+const std::vector<EnginePreset>& EnginePresets() {
+  static const std::vector<EnginePreset> presets = {FilamentPreset(), GltfViewerPreset(),
+                                                    ThreePreset(), Ue4Preset()};
+  return presets;
+}
+
+const EnginePreset& FindEnginePreset(const std::string& name) {
+  std::vector<std::string> names;
+  for (const EnginePreset& p : EnginePresets()) {
+    if (p.name == name) return p;
+    names.push_back(p.name);
+  }
+  throw std::invalid_argument("unknown --preset '" + name + "' (" + Join(names, ", ") +
+                              "; --preset help lists them)");
+}
+
+std::string EnginePresetHelp() {
+  std::string out;
+  for (const EnginePreset& p : EnginePresets()) {
+    std::vector<std::string> tables;
+    for (const PresetTable& t : p.tables) tables.push_back(t.table + " -> " + t.engineName);
+    out += p.name + ": " + p.engine + "\n";
+    out += "  matches:  " + p.source + "\n";
+    out += "  tables:   " + Join(tables, ", ") + "\n";
+    out += "  size:     " + std::to_string(p.muTexels) + " (mu) x " +
+           std::to_string(p.roughnessTexels) + " (roughness), texel-centred" +
+           (p.flipY ? ", rows flipped" : ", row 0 = the smallest roughness") + "\n";
+    out += std::string("  format:   ") + FormatName(p.format) + " (default; --format changes it)" +
+           (p.moduleExtension.empty() ? "" : ", and NAME" + p.moduleExtension) + "\n";
+    out += "  sampling: " + p.note + "\n";
+  }
+  return out;
+}
+
+std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
+                                   const std::vector<std::string>& only) {
+  for (const std::string& name : only) {
+    bool found = false;
+    for (const PresetTable& t : preset.tables) found = found || t.table == name;
+    if (!found) {
+      std::vector<std::string> names;
+      for (const PresetTable& t : preset.tables) names.push_back(t.table);
+      throw std::invalid_argument("--only '" + name + "' is not a table of --preset " +
+                                  preset.name + " (" + Join(names, ", ") + ")");
+    }
+  }
+  std::vector<TableSpec> specs;
+  for (const PresetTable& t : preset.tables) {
+    if (!only.empty() && std::find(only.begin(), only.end(), t.table) == only.end()) continue;
+    TableSpec spec = CatalogueTable(t.table);
+    SizeEngineAxes(spec, size > 0 ? size : preset.muTexels,
+                   size > 0 ? size : preset.roughnessTexels, false);
+    EngineOptions options;
+    options.layout = t.layout;
+    options.engineGrid = true;
+    options.flipY = preset.flipY;
+    ApplyEngineOptions(spec, options);
+    specs.push_back(spec);
+  }
+  return specs;
+}
+
+void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options) {
+  if (!HasMuAndRoughness(spec)) return;
+  const bool microfacetDfg =
+      spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model);
+  if (microfacetDfg) ApplyDfgLayout(spec, options.layout);
+  if (options.engineGrid) {
+    int muN = 2, rN = 2;
+    for (const AxisSpec& a : spec.axes) (a.name == "mu" ? muN : rN) = std::max(a.size, 2);
+    SizeEngineAxes(spec, muN, rN, true);
+    ApplyEngineGrid(spec);
+  }
+  if (options.flipY) ApplyFlipY(spec);
+}
+
+bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec) {
+  if (!HasMuAndRoughness(spec)) return false;
+  EngineOptions options;
+  options.engineGrid = true;
+  options.flipY = preset.flipY;
+  for (const PresetTable& t : preset.tables)
+    if (spec.name == t.table) options.layout = t.layout;
+  if (spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model) &&
+      options.layout == DfgLayout::Kiln)
+    options.layout = preset.tables.front().layout;  // the engine's microfacet dfg layout
+  SizeEngineAxes(spec, size > 0 ? size : preset.muTexels,
+                 size > 0 ? size : preset.roughnessTexels, true);
+  ApplyEngineOptionsToPlanned(spec, options);
+  return true;
+}
+
+}  // namespace kiln

@@ -1,0 +1,75 @@
+// Engine presets (`kiln bake --preset NAME`): for each engine, the tables it samples in the
+// layout, grid, size, orientation and file format its shaders and loaders expect, named after
+// the engine source they match (docs/engines.md). One descriptor per preset, in
+// engine_presets.cpp.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "baker/io/texture_writers.h"
+#include "baker/tables/engine_layout.h"
+#include "baker/tables/spec.h"
+
+namespace kiln {
+
+/// One table of a preset: a catalogue table in an engine's channel layout.
+struct PresetTable {
+  std::string table;                   ///< catalogue name, e.g. "ggx-dfg"
+  DfgLayout layout = DfgLayout::Kiln;  ///< its channel layout (dfg tables only)
+  std::string engineName;              ///< what the engine calls it, e.g. "DFG_LUT", "lut_ggx"
+};
+
+/// An engine preset. Every table is baked on the engine grid (texel-centred, uniform in
+/// (mu, roughness): ApplyEngineGrid), mu along the image's x (u) and roughness along y (v),
+/// unless `transposed`.
+struct EnginePreset {
+  std::string name;    ///< --preset NAME
+  std::string engine;  ///< the engine, e.g. "Filament"
+  std::string source;  ///< the engine source file(s) the tables match (repo, path)
+  std::vector<PresetTable> tables;
+  int muTexels = 128;         ///< texels along mu (the image's width)
+  int roughnessTexels = 128;  ///< texels along roughness (the image's height)
+  bool flipY = false;         ///< the engine's row 0 is roughness 1 (ApplyFlipY)
+  /// The engine's texture has roughness along u and mu along v (three.js's DFGLUTData.js):
+  /// only the engine-native writers (a JS module) transpose; the texture formats keep kiln's
+  /// order and the docs say to swap the coordinates.
+  bool transposed = false;
+  OutputFormat format = OutputFormat::Exr;  ///< the default --format of the preset
+  /// The engine's own source file written beside each table (catalogue and --only bakes):
+  /// ".inc" (Filament's dfg.inc, FilamentIncText), ".js" (a three.js module, ThreeModuleText)
+  /// or "" (none).
+  std::string moduleExtension;
+  std::string note;                         ///< one line: how the engine samples the table
+};
+
+/// Every preset, in the order `kiln bake --preset help` lists them.
+const std::vector<EnginePreset>& EnginePresets();
+
+/// The preset named `name`; throws std::invalid_argument ("unknown --preset 'x' (filament,
+/// ...; --preset help lists them)") for any other name.
+const EnginePreset& FindEnginePreset(const std::string& name);
+
+/// The text of `kiln bake --preset help`: one block per preset (name, engine, source, tables,
+/// size, orientation, format).
+std::string EnginePresetHelp();
+
+/// The specs of `preset`'s tables: each catalogue table with its mu and roughness axes at the
+/// preset's sizes (both `size` when size > 0), its layout, the engine grid and the preset's
+/// orientation (ApplyEngineOptions). With a non-empty `only`, just the preset's tables named
+/// there (catalogue names); throws std::invalid_argument for a name that is not one of them.
+std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
+                                   const std::vector<std::string>& only = {});
+
+/// A scene's planned table in the preset's form: the mu and roughness axes widened to the
+/// engine's [0, 1] (a sheen table's roughness from its floor), at `size` nodes when > 0 (else
+/// the preset's sizes), the preset's layout where a preset table of the same catalogue name has
+/// one, the engine grid and orientation. Tables without (mu, roughness) axes are left as
+/// planned. Returns true when it changed the spec.
+bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec);
+
+/// The same for `kiln bake --scene` with --layout/--grid/--flip-y and no preset: widens the
+/// axes before ApplyEngineGrid when options.engineGrid, applies the layout to microfacet dfg
+/// tables only, and leaves tables without (mu, roughness) axes on kiln's grid.
+void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options);
+
+}  // namespace kiln
