@@ -32,8 +32,9 @@ using kiln::test::TempDir;
 namespace {
 
 /// three.js's DFG LUT stores halves from 4096 Monte Carlo samples per texel: kiln's values at
-/// the same texel centres lie within this (measured 0.0107, docs/engines.md "three").
-constexpr double kThreeTolerance = 0.014;
+/// the same texel centres lie within this (measured 0.0144 at the grazing row, dotNV = 1/32,
+/// where three's scale is low; below 0.006 on every other row: docs/engines.md "three").
+constexpr double kThreeTolerance = 0.015;
 /// three's texture size (DFGLUTData.js: 16 x 16).
 constexpr int kThreeSize = 16;
 
@@ -205,7 +206,7 @@ TEST_CASE("sheen tables take the engine grid: below the 0.045 clamp they hold th
     const double clamped[2] = {mu, kiln::kSheenShaderMinRoughness};
     kiln::TableSpec catalogue = kiln::CatalogueTable("charlie-dfg");
     const double e = kiln::EvaluateSpec(catalogue, clamped, stats)[0];
-    CHECK(t.data[size_t(i)] == Approx(e).epsilon(1e-6));  // row 0: roughness 0.016 -> 0.045
+    CHECK(t.data[size_t(i)] == Approx(e).epsilon(1e-6).margin(1e-7));  // row 0: r 0.016 -> 0.045
   }
   CHECK(t.data[32 + 4] != t.data[4]);  // row 1 (roughness 0.047) is its own value
 }
@@ -217,7 +218,7 @@ TEST_CASE("--layout filament refuses sheen tables instead of writing a zero chan
                     Catch::Contains("'charlie-dfg' is a sheen table of one channel"));
   auto r = RunKiln("bake --only charlie-dfg --layout filament --size 4 --out " +
                    TempDir("preset_refuse"));
-  CHECK(r.code != 0);
+  CHECK(r.exitCode != 0);
   CHECK(r.err.find("kiln: error: ") == 0);
   CHECK(kiln::test::CountLines(r.err) == 1);
 }
@@ -246,13 +247,13 @@ TEST_CASE("presets ue4 and gltf-viewer: their tables, sizes and layouts", "[engi
 TEST_CASE("kiln bake --preset: help, the files it writes, and bad presets",
           "[engine-presets][cli]") {
   auto help = RunKiln("bake --preset help");
-  CHECK(help.code == 0);
+  CHECK(help.exitCode == 0);
   CHECK(help.out.find("three: three.js") != std::string::npos);
   CHECK(help.out.find("DFGLUTData.js") != std::string::npos);
 
   const std::string dir = TempDir("preset_three");
   auto r = RunKiln("bake --preset three -q -j 2 --out " + dir);
-  REQUIRE(r.code == 0);
+  REQUIRE(r.exitCode == 0);
   CHECK(fs::exists(dir + "/ggx-dfg-engine.ktx2"));
   REQUIRE(fs::exists(dir + "/ggx-dfg-engine.js"));
   const kiln::Table t = kiln::LoadAnyTable(dir + "/ggx-dfg-engine.ktx2");
@@ -260,11 +261,11 @@ TEST_CASE("kiln bake --preset: help, the files it writes, and bad presets",
   CHECK(MaxThreeDifference(t, ThreeReference(), true) < kThreeTolerance);
 
   auto bad = RunKiln("bake --preset unity --out " + dir);
-  CHECK(bad.code != 0);
+  CHECK(bad.exitCode != 0);
   CHECK(bad.err.find("kiln: error: ") == 0);
   CHECK(bad.err.find("unknown --preset 'unity'") != std::string::npos);
   auto mixed = RunKiln("bake --preset three --grid kiln --out " + dir);
-  CHECK(mixed.code != 0);
+  CHECK(mixed.exitCode != 0);
   CHECK(mixed.err.find("sets the layout, grid and orientation") != std::string::npos);
 }
 
@@ -273,13 +274,15 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
   const std::string dir = TempDir("preset_scene");
   const std::string scene = dir + "/steel.kiln.json";
   std::ofstream(scene) << R"({"kiln_scene": 1, "materials": [
-    {"name": "steel", "model": "ggx", "roughness": [0.2, 0.6], "tables": ["dfg"]}]})";
+    {"name": "steel", "model": "ggx", "roughness": [0.2, 0.6], "tables": ["dfg"]},
+    {"name": "chrome", "model": "ggx", "roughness": 0.1, "tables": ["dfg"]}]})";
   auto r = RunKiln("bake --scene " + scene + " --grid engine --format ktx2 --flip-y --size 4 -q "
                    "-j 2 --out " + dir + "/a");
-  REQUIRE(r.code == 0);
+  REQUIRE(r.exitCode == 0);
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(dir + "/a"))
     files.push_back(e.path().filename().string());
+  CHECK(files.size() == 2);  // the table and manifest.json
   CHECK(std::count(files.begin(), files.end(), "ggx-dfg-engine-flipy.ktx2") == 1);
   const kiln::Table t = kiln::LoadAnyTable(dir + "/a/ggx-dfg-engine-flipy.ktx2");
   CHECK(t.axes[1].axis.lo == 0.5 / 4);  // the engine grid spans [0, 1], not the scene's range
@@ -287,7 +290,7 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
 
   auto p = RunKiln("bake --scene " + scene + " --preset filament --size 4 -q -j 2 --out " + dir +
                    "/b");
-  REQUIRE(p.code == 0);
+  REQUIRE(p.exitCode == 0);
   const kiln::Table f = kiln::LoadAnyTable(dir + "/b/ggx-dfg-filament-cloth-engine.ktx2");
   CHECK(f.channels == std::vector<std::string>{"B", "A_plus_B", "DFV_Charlie"});
 }

@@ -159,7 +159,7 @@ void RegisterBake(CLI::App& app) {
         if (preset)
           ApplyPresetToPlanned(*preset, size, spec);
         else
-          ApplyEngineOptionsToPlanned(spec, engine);
+          ApplyEngineOptionsToPlanned(spec, engine, size, size);
       };
       int code = BakeScene(args->scene, args->out, run, popt, adapt);
       if (code != 0) std::exit(code);

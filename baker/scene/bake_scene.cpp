@@ -23,8 +23,12 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeRun
                          const SpecAdapter& adapt) {
   std::vector<TableSpec> specs;
   for (const PlannedTable& t : plan.tables) {
-    specs.push_back(t.spec);
-    if (adapt) adapt(specs.back());
+    TableSpec spec = t.spec;
+    if (adapt) adapt(spec);
+    // Adapted tables of two materials may coincide (the engine grid spans every range): once.
+    bool seen = false;
+    for (const TableSpec& s : specs) seen = seen || s.name == spec.name;
+    if (!seen) specs.push_back(spec);
   }
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -21,7 +21,8 @@ struct SceneBakeResult {
 using SpecAdapter = std::function<void(TableSpec&)>;
 
 /// Bakes every table of `plan`, each changed by `adapt` when given, into `dir` (created when
-/// missing) in run.format with BakeSpecs, as the overload below does with run's options.
+/// missing) in run.format with BakeSpecs, as the overload below does with run's options; a
+/// table whose adapted name an earlier one already has is baked once.
 SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeRunOptions& run,
                          const SpecAdapter& adapt = nullptr);
 

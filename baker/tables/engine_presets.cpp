@@ -174,14 +174,23 @@ std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
   return specs;
 }
 
-void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options) {
+void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options, int muTexels,
+                                 int roughnessTexels) {
   if (!HasMuAndRoughness(spec)) return;
   const bool microfacetDfg =
       spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model);
+  // On the engine grid the table spans the engine's whole (mu, roughness) square, whatever
+  // range the scene's materials asked for: it takes its kind's own name (no range suffix).
+  if (options.engineGrid) spec.name = TableName(spec.quantity, spec.model);
   if (microfacetDfg) ApplyDfgLayout(spec, options.layout);
   if (options.engineGrid) {
-    int muN = 2, rN = 2;
-    for (const AxisSpec& a : spec.axes) (a.name == "mu" ? muN : rN) = std::max(a.size, 2);
+    // The planned sizes fit the scene's narrowed ranges: the whole square takes the given
+    // sizes, or the kind's defaults.
+    int muN = muTexels, rN = roughnessTexels;
+    for (const AxisSpec& a : Describe(spec.quantity).defaultAxes(spec.model)) {
+      if (a.name == "mu" && muN <= 0) muN = std::max(a.size, 2);
+      if (a.name == "roughness" && rN <= 0) rN = std::max(a.size, 2);
+    }
     SizeEngineAxes(spec, muN, rN, true);
     ApplyEngineGrid(spec);
   }
@@ -193,14 +202,14 @@ bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec)
   EngineOptions options;
   options.engineGrid = true;
   options.flipY = preset.flipY;
+  const std::string kindName = TableName(spec.quantity, spec.model);
   for (const PresetTable& t : preset.tables)
-    if (spec.name == t.table) options.layout = t.layout;
+    if (kindName == t.table) options.layout = t.layout;
   if (spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model) &&
       options.layout == DfgLayout::Kiln)
     options.layout = preset.tables.front().layout;  // the engine's microfacet dfg layout
-  SizeEngineAxes(spec, size > 0 ? size : preset.muTexels,
-                 size > 0 ? size : preset.roughnessTexels, true);
-  ApplyEngineOptionsToPlanned(spec, options);
+  ApplyEngineOptionsToPlanned(spec, options, size > 0 ? size : preset.muTexels,
+                              size > 0 ? size : preset.roughnessTexels);
   return true;
 }
 

@@ -68,8 +68,13 @@ std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
 bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec);
 
 /// The same for `kiln bake --scene` with --layout/--grid/--flip-y and no preset: widens the
-/// axes before ApplyEngineGrid when options.engineGrid, applies the layout to microfacet dfg
-/// tables only, and leaves tables without (mu, roughness) axes on kiln's grid.
-void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options);
+/// axes before ApplyEngineGrid when options.engineGrid (the table then takes its kind's own
+/// name, e.g. ggx-dfg-engine, not the planned range's), applies the layout to microfacet dfg
+/// tables only, and leaves tables without (mu, roughness) axes on kiln's grid. On the engine
+/// grid the mu and roughness axes get `muTexels` and `roughnessTexels` nodes (each <= 0: the
+/// kind's default size, QuantityInfo::defaultAxes), not the planned ones (which fit the
+/// narrowed ranges).
+void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options, int muTexels = 0,
+                                 int roughnessTexels = 0);
 
 }  // namespace kiln
