@@ -276,8 +276,10 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
   std::ofstream(scene) << R"({"kiln_scene": 1, "materials": [
     {"name": "steel", "model": "ggx", "roughness": [0.2, 0.6], "tables": ["dfg"]},
     {"name": "chrome", "model": "ggx", "roughness": 0.1, "tables": ["dfg"]}]})";
-  auto r = RunKiln("bake --scene " + scene + " --grid engine --format ktx2 --flip-y --size 4 -q "
-                   "-j 2 --out " + dir + "/a");
+  auto r = RunKiln("bake --scene " + scene +
+                   " --grid engine --format ktx2 --flip-y --size 4 -q "
+                   "-j 2 --out " +
+                   dir + "/a");
   REQUIRE(r.exitCode == 0);
   std::vector<std::string> files;
   for (const auto& e : fs::directory_iterator(dir + "/a"))
@@ -288,8 +290,8 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
   CHECK(t.axes[1].axis.lo == 0.5 / 4);  // the engine grid spans [0, 1], not the scene's range
   CHECK(t.axes[1].axis.hi == 1 - 0.5 / 4);
 
-  auto p = RunKiln("bake --scene " + scene + " --preset filament --size 4 -q -j 2 --out " + dir +
-                   "/b");
+  auto p =
+      RunKiln("bake --scene " + scene + " --preset filament --size 4 -q -j 2 --out " + dir + "/b");
   REQUIRE(p.exitCode == 0);
   const kiln::Table f = kiln::LoadAnyTable(dir + "/b/ggx-dfg-filament-cloth-engine.ktx2");
   CHECK(f.channels == std::vector<std::string>{"B", "A_plus_B", "DFV_Charlie"});

@@ -37,8 +37,8 @@ std::string HexLines(const std::vector<uint16_t>& halves, size_t channels, const
 
 std::vector<uint16_t> HalfTexels(const Table& table, bool transpose) {
   if (table.dims() != 2)
-    throw std::invalid_argument("table '" + table.name + "' has " +
-                                std::to_string(table.dims()) + " axes; an engine LUT has 2");
+    throw std::invalid_argument("table '" + table.name + "' has " + std::to_string(table.dims()) +
+                                " axes; an engine LUT has 2");
   const size_t nx = table.axes[0].axis.size, ny = table.axes[1].axis.size;
   const size_t nc = table.channels.size();
   std::vector<uint16_t> out;

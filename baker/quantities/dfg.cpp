@@ -108,8 +108,7 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   if (IsSheen(spec.model))
     return {DirectionalAlbedo(ModelInDomain(spec.model, x[1]), x[0], opt, stats).lin};
   auto ab = SplitSumDFG(ModelAt(spec.model, x[1]), x[0], opt, stats);
-  return WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), stats, ClothMethod::Adaptive,
-                   tol);
+  return WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), stats, ClothMethod::Adaptive, tol);
 }
 
 /// Roughness 0 of a microfacet lobe: the mirror reflects at o.h = mu (SmoothDfg).

@@ -18,10 +18,14 @@ constexpr const char* kFilamentClothModel = "charlie";
 
 const char* LayoutName(DfgLayout layout) {
   switch (layout) {
-    case DfgLayout::Kiln: return "kiln";
-    case DfgLayout::Ue4: return "ue4";
-    case DfgLayout::Filament: return "filament";
-    case DfgLayout::FilamentCloth: return "filament-cloth";
+    case DfgLayout::Kiln:
+      return "kiln";
+    case DfgLayout::Ue4:
+      return "ue4";
+    case DfgLayout::Filament:
+      return "filament";
+    case DfgLayout::FilamentCloth:
+      return "filament-cloth";
   }
   return "?";
 }

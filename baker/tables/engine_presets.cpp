@@ -76,7 +76,8 @@ EnginePreset Ue4Preset() {
   p.muTexels = 128;
   p.roughnessTexels = 32;
   p.format = OutputFormat::Dds;
-  p.note = "R = scale, G = bias of F0: SpecularColor * AB.x + saturate(50 * SpecularColor.g) * AB.y";
+  p.note =
+      "R = scale, G = bias of F0: SpecularColor * AB.x + saturate(50 * SpecularColor.g) * AB.y";
   return p;
 }
 

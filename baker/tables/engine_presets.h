@@ -39,7 +39,7 @@ struct EnginePreset {
   /// ".inc" (Filament's dfg.inc, FilamentIncText), ".js" (a three.js module, ThreeModuleText)
   /// or "" (none).
   std::string moduleExtension;
-  std::string note;                         ///< one line: how the engine samples the table
+  std::string note;  ///< one line: how the engine samples the table
 };
 
 /// Every preset, in the order `kiln bake --preset help` lists them.
