@@ -36,14 +36,18 @@ EnginePreset GltfViewerPreset() {
   p.engine = "glTF Sample Viewer";
   p.source =
       "KhronosGroup/glTF-Sample-Viewer assets/images/lut_ggx.png, lut_charlie.png, "
-      "lut_sheen_E.png, sampled in source/Renderer/shaders (ibl.glsl: texture(lut, vec2(NdotV, "
-      "roughness)))";
+      "lut_sheen_E.png, sampled by source/Renderer/shaders/ibl.glsl (texture(u_GGXLUT, "
+      "vec2(NdotV, perceptualRoughness)).rg, texture(u_CharlieLUT, vec2(NdotV, "
+      "sheenRoughness)).b)";
   p.tables = {{"ggx-dfg", DfgLayout::Kiln, "lut_ggx"},
               {"charlie-dfg", DfgLayout::Kiln, "lut_charlie"},
               {"charlie-smith-albedo", DfgLayout::Kiln, "lut_sheen_E"}};
   p.muTexels = p.roughnessTexels = 128;
-  p.format = OutputFormat::Png16;
-  p.note = "u = NdotV, v = roughness; 16-bit PNG with a per-channel scale (the viewer's are 8-bit)";
+  p.format = OutputFormat::Ktx2;
+  p.note =
+      "u = NdotV, v = roughness; lut_ggx R, G = scale, bias; lut_charlie and lut_sheen_E hold "
+      "their value in R (the viewer reads lut_charlie's .b: read .r); the viewer's files are "
+      "8-bit PNGs";
   return p;
 }
 
