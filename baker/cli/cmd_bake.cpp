@@ -43,7 +43,9 @@ void WriteEngineModules(const EnginePreset& preset, const std::vector<TableSpec>
   if (preset.moduleExtension.empty()) return;
   std::vector<std::unique_ptr<PendingFile>> files;
   for (const TableSpec& spec : specs) {
-    const Table table = LoadAnyTable(dir + "/" + spec.name + FormatExtension(format));
+    const PresetTable* t = PresetTableOf(preset, spec.name);
+    const OutputFormat written = t && t->exrOnly ? OutputFormat::Exr : format;
+    const Table table = LoadAnyTable(dir + "/" + spec.name + FormatExtension(written));
     files.push_back(std::make_unique<PendingFile>(dir + "/" + spec.name + preset.moduleExtension));
     files.back()->WriteBytes(EngineModuleText(table, preset.moduleExtension));
   }
@@ -52,6 +54,26 @@ void WriteEngineModules(const EnginePreset& preset, const std::vector<TableSpec>
   PendingFile::CommitAll(commit);
   if (log)
     for (const PendingFile* f : commit) std::fprintf(log, "wrote   %s\n", f->Path().c_str());
+}
+
+/// BakeSpecs of a preset's specs: the tables marked exrOnly (PresetTable) as EXR, the others in
+/// run.format. The counts and times of the two runs added up.
+BakeRunResult BakePresetSpecs(const EnginePreset& preset, const std::vector<TableSpec>& specs,
+                              const std::string& dir, const BakeRunOptions& run) {
+  std::vector<TableSpec> texture, exr;
+  for (const TableSpec& spec : specs) {
+    const PresetTable* t = PresetTableOf(preset, spec.name);
+    (t && t->exrOnly && run.format != OutputFormat::Exr ? exr : texture).push_back(spec);
+  }
+  BakeRunResult done = BakeSpecs(texture, dir, run);
+  if (exr.empty()) return done;
+  BakeRunOptions exrRun = run;
+  exrRun.format = OutputFormat::Exr;
+  BakeRunResult more = BakeSpecs(exr, dir, exrRun);
+  done.baked.insert(done.baked.end(), more.baked.begin(), more.baked.end());
+  done.skipped.insert(done.skipped.end(), more.skipped.begin(), more.skipped.end());
+  done.seconds += more.seconds;
+  return done;
 }
 
 }  // namespace
@@ -181,8 +203,13 @@ void RegisterBake(CLI::App& app) {
     if (!preset)
       for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
     PrepareOutputFolder(args->out);
-    BakeRunResult done = BakeSpecs(specs, args->out, run);
-    if (preset) WriteEngineModules(*preset, specs, args->out, format, run.log);
+    BakeRunResult done;
+    if (preset) {
+      done = BakePresetSpecs(*preset, specs, args->out, run);
+      WriteEngineModules(*preset, specs, args->out, format, run.log);
+    } else {
+      done = BakeSpecs(specs, args->out, run);
+    }
     if (run.log)
       std::fprintf(run.log, "%zu baked, %zu skipped (up to date) in %.2f s -> %s\n",
                    done.baked.size(), done.skipped.size(), done.seconds, args->out.c_str());

@@ -30,8 +30,18 @@ std::string FilamentIncText(const Table& table);
 /// 2-channel table; throws std::invalid_argument naming the table otherwise (or as HalfTexels).
 std::string ThreeModuleText(const Table& table);
 
-/// FilamentIncText for ".inc", ThreeModuleText for ".js"; throws std::invalid_argument for any
-/// other extension.
+/// A three.js ES module with RectAreaLightTexturesLib.js's exported shape from an ltc table
+/// (channels minv_a, minv_b, minv_c, minv_d, norm, fresnel over (roughness, sqrt_one_minus_mu),
+/// roughness along x): `LTC_MAT_1` = (minv_a, minv_b, minv_c, minv_d) and `LTC_MAT_2` = (norm,
+/// fresnel, 0, 0) per texel as float arrays (%.9g; three's shader reads LTC_MAT_2's x and y
+/// only), and `RectAreaLightTexturesLib.init()` building LTC_FLOAT_1/2 and LTC_HALF_1/2 as
+/// width x height RGBA DataTextures (linear magnification, nearest minification, clamp to
+/// edge), imported from 'three'. Throws std::invalid_argument naming the table when its channels
+/// are not those.
+std::string ThreeLtcModuleText(const Table& table);
+
+/// FilamentIncText for ".inc"; for ".js" ThreeLtcModuleText of an ltc table, else
+/// ThreeModuleText; throws std::invalid_argument for any other extension.
 std::string EngineModuleText(const Table& table, const std::string& extension);
 
 }  // namespace kiln

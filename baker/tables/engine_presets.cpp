@@ -57,15 +57,21 @@ EnginePreset ThreePreset() {
   p.engine = "three.js";
   p.source =
       "mrdoob/three.js src/renderers/shaders/DFGLUTData.js (16 x 16 RG16F: scale, bias; "
-      "4096 samples per texel)";
-  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "DFG_LUT"}};
+      "4096 samples per texel) and examples/jsm/lights/RectAreaLightTexturesLib.js (LTC_MAT_1, "
+      "LTC_MAT_2: 64 x 64 RGBA, the published LTC fit)";
+  PresetTable ltc{"ltc-ggx", DfgLayout::Kiln, "LTC_MAT_1, LTC_MAT_2"};
+  ltc.engineGrid = false;
+  ltc.fixedTexels = 64;  // LUT_SIZE of three's lights_physical_pars_fragment
+  ltc.exrOnly = true;    // 6 channels
+  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "DFG_LUT"}, ltc};
   p.muTexels = p.roughnessTexels = 16;
   p.transposed = true;
   p.format = OutputFormat::Ktx2;
   p.moduleExtension = ".js";
   p.note =
-      "three's texture has u = roughness, v = dotNV: kiln's file keeps u = mu (sample it with "
-      "vec2(dotNV, roughness)); R = scale, G = bias";
+      "DFG: three's texture has u = roughness, v = dotNV: kiln's file keeps u = mu (sample it "
+      "with vec2(dotNV, roughness)), the .js has three's order; LTC: 64 x 64 at (roughness, "
+      "sqrt(1 - dotNV)) nodes, EXR (6 channels) and .js";
   return p;
 }
 
@@ -137,7 +143,13 @@ std::string EnginePresetHelp() {
   std::string out;
   for (const EnginePreset& p : EnginePresets()) {
     std::vector<std::string> tables;
-    for (const PresetTable& t : p.tables) tables.push_back(t.table + " -> " + t.engineName);
+    for (const PresetTable& t : p.tables) {
+      std::string fixed = t.fixedTexels > 0 ? std::to_string(t.fixedTexels) : "";
+      tables.push_back(
+          t.table + " -> " + t.engineName +
+          (t.engineGrid ? ""
+                        : " (" + fixed + " x " + fixed + " nodes" + (t.exrOnly ? ", exr)" : ")")));
+    }
     out += p.name + ": " + p.engine + "\n";
     out += "  matches:  " + p.source + "\n";
     out += "  tables:   " + Join(tables, ", ") + "\n";
@@ -167,6 +179,13 @@ std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
   for (const PresetTable& t : preset.tables) {
     if (!only.empty() && std::find(only.begin(), only.end(), t.table) == only.end()) continue;
     TableSpec spec = CatalogueTable(t.table);
+    if (!t.engineGrid) {
+      const int n = t.fixedTexels > 0 ? t.fixedTexels : size;
+      if (n > 0)
+        for (AxisSpec& a : spec.axes) a.size = n;
+      specs.push_back(spec);
+      continue;
+    }
     SizeEngineAxes(spec, size > 0 ? size : preset.muTexels,
                    size > 0 ? size : preset.roughnessTexels, false);
     EngineOptions options;
@@ -177,6 +196,14 @@ std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
     specs.push_back(spec);
   }
   return specs;
+}
+
+const PresetTable* PresetTableOf(const EnginePreset& preset, const std::string& specName) {
+  for (const PresetTable& t : preset.tables)
+    if (specName.rfind(t.table, 0) == 0 &&
+        (specName.size() == t.table.size() || specName[t.table.size()] == '-'))
+      return &t;
+  return nullptr;
 }
 
 void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options, int muTexels,

@@ -17,6 +17,13 @@ struct PresetTable {
   std::string table;                   ///< catalogue name, e.g. "ggx-dfg"
   DfgLayout layout = DfgLayout::Kiln;  ///< its channel layout (dfg tables only)
   std::string engineName;              ///< what the engine calls it, e.g. "DFG_LUT", "lut_ggx"
+  /// False: the table keeps its catalogue axes (an LTC table's published node-centred
+  /// (roughness, sqrt(1 - mu)) grid, which the engine's shader addresses itself).
+  bool engineGrid = true;
+  /// > 0: the texels per axis whatever --size says (the engine's shader hard-codes the size).
+  int fixedTexels = 0;
+  /// True: written as EXR whatever --format says (more than the 4 channels a texture holds).
+  bool exrOnly = false;
 };
 
 /// An engine preset. Every table is baked on the engine grid (texel-centred, uniform in
@@ -55,8 +62,10 @@ std::string EnginePresetHelp();
 
 /// The specs of `preset`'s tables: each catalogue table with its mu and roughness axes at the
 /// preset's sizes (both `size` when size > 0), its layout, the engine grid and the preset's
-/// orientation (ApplyEngineOptions). With a non-empty `only`, just the preset's tables named
-/// there (catalogue names); throws std::invalid_argument for a name that is not one of them.
+/// orientation (ApplyEngineOptions); a table with engineGrid false keeps its catalogue axes at
+/// fixedTexels (or `size`, or its own) nodes each. With a non-empty `only`, just the preset's
+/// tables named there (catalogue names); throws std::invalid_argument for a name that is not one of
+/// them.
 std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
                                    const std::vector<std::string>& only = {});
 
@@ -65,6 +74,9 @@ std::vector<TableSpec> PresetSpecs(const EnginePreset& preset, int size,
 /// the preset's sizes), the preset's layout where a preset table of the same catalogue name has
 /// one, the engine grid and orientation. Tables without (mu, roughness) axes are left as
 /// planned. Returns true when it changed the spec.
+/// The preset's entry for the spec named `specName` (a PresetSpecs result), or nullptr.
+const PresetTable* PresetTableOf(const EnginePreset& preset, const std::string& specName);
+
 bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec);
 
 /// The same for `kiln bake --scene` with --layout/--grid/--flip-y and no preset: widens the
