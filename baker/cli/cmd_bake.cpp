@@ -76,6 +76,32 @@ BakeRunResult BakePresetSpecs(const EnginePreset& preset, const std::vector<Tabl
   return done;
 }
 
+/// What `kiln bake --scene` does to each planned table: the preset's form
+/// (ApplyPresetToPlanned) with --preset, else --layout/--grid/--flip-y
+/// (ApplyEngineOptionsToPlanned), `size` (--size, 0: none) texels per engine axis.
+SpecAdapter SceneAdapter(const EnginePreset* preset, const EngineOptions& engine, int size) {
+  return [preset, engine, size](TableSpec& spec) {
+    if (preset)
+      ApplyPresetToPlanned(*preset, size, spec);
+    else
+      ApplyEngineOptionsToPlanned(spec, engine, size, size);
+  };
+}
+
+/// The specs of a catalogue bake: the preset's tables (those named in `only`, when given), else
+/// the `only` tables or the default catalogue with the engine options applied. Throws for an
+/// unknown table or an option a table refuses.
+std::vector<TableSpec> CatalogueSpecs(const EnginePreset* preset, const EngineOptions& engine,
+                                      const CatalogueOptions& copt,
+                                      const std::vector<std::string>& only) {
+  if (preset) return PresetSpecs(*preset, copt.size, only);
+  std::vector<TableSpec> specs;
+  if (only.empty()) specs = DefaultCatalogue(copt);
+  for (const std::string& name : only) specs.push_back(CatalogueTable(name, copt));
+  for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
+  return specs;
+}
+
 }  // namespace
 
 void RegisterBake(CLI::App& app) {
@@ -176,32 +202,17 @@ void RegisterBake(CLI::App& app) {
       PrepareOutputFolder(args->out);
       PlanOptions popt;
       popt.size = args->size;
-      const int size = args->size;
-      SpecAdapter adapt = [preset, engine, size](TableSpec& spec) {
-        if (preset)
-          ApplyPresetToPlanned(*preset, size, spec);
-        else
-          ApplyEngineOptionsToPlanned(spec, engine, size, size);
-      };
-      int code = BakeScene(args->scene, args->out, run, popt, adapt);
+      int code =
+          BakeScene(args->scene, args->out, run, popt, SceneAdapter(preset, engine, args->size));
       if (code != 0) std::exit(code);
       return;
     }
     CatalogueOptions copt;
     copt.size = args->size;
     copt.brdfRoughness = args->roughness;
-    std::vector<TableSpec> specs;
-    if (preset) {
-      specs = PresetSpecs(*preset, args->size,
-                          oOnly->count() ? splitList(args->only, ',') : std::vector<std::string>{});
-    } else if (!oOnly->count()) {
-      specs = DefaultCatalogue(copt);
-    } else {
-      for (const std::string& name : splitList(args->only, ','))
-        specs.push_back(CatalogueTable(name, copt));
-    }
-    if (!preset)
-      for (TableSpec& spec : specs) ApplyEngineOptions(spec, engine);
+    const std::vector<std::string> only =
+        oOnly->count() ? splitList(args->only, ',') : std::vector<std::string>{};
+    const std::vector<TableSpec> specs = CatalogueSpecs(preset, engine, copt, only);
     PrepareOutputFolder(args->out);
     BakeRunResult done;
     if (preset) {
