@@ -375,3 +375,14 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
   const kiln::Table f = kiln::LoadAnyTable(dir + "/b/ggx-dfg-filament-cloth-engine.ktx2");
   CHECK(f.channels == std::vector<std::string>{"B", "A_plus_B", "DFV_Charlie"});
 }
+
+TEST_CASE("kiln verify accepts engine-grid sheen tables: the file declares its roughness clamp",
+          "[engine-presets][sheen][cli]") {
+  const std::string dir = TempDir("preset_verify");
+  auto bake = RunKiln("bake --only charlie-dfg --grid engine --size 8 -q -j 2 --out " + dir);
+  REQUIRE(bake.exitCode == 0);
+  auto verify = RunKiln("verify " + dir + " -j 2");
+  CHECK(verify.exitCode == 0);
+  CHECK(verify.err.find("outside model") == std::string::npos);
+  CHECK(verify.out.find("0 over their bound") != std::string::npos);
+}
