@@ -369,6 +369,21 @@ TEST_CASE("kiln bake --scene takes --format, --grid, --layout, --flip-y and --pr
   CHECK(t.axes[1].axis.lo == 0.5 / 4);  // the engine grid spans [0, 1], not the scene's range
   CHECK(t.axes[1].axis.hi == 1 - 0.5 / 4);
 
+  // --layout alone: the scene's own (narrowed) grid, Filament's channels.
+  auto l =
+      RunKiln("bake --scene " + scene + " --layout filament --size 4 -q -j 2 --out " + dir + "/c");
+  REQUIRE(l.exitCode == 0);
+  int filamentFiles = 0;
+  for (const auto& e : fs::directory_iterator(dir + "/c")) {
+    const std::string name = e.path().filename().string();
+    if (name.size() < 13 || name.substr(name.size() - 13) != "-filament.exr") continue;
+    ++filamentFiles;
+    const kiln::Table c = kiln::LoadAnyTable(e.path().string());
+    CHECK(c.channels == std::vector<std::string>{"B", "A_plus_B"});
+    CHECK(c.axes[1].axis.lo > 0);  // the planned range, not the engine square
+  }
+  CHECK(filamentFiles >= 1);
+
   auto p =
       RunKiln("bake --scene " + scene + " --preset filament --size 4 -q -j 2 --out " + dir + "/b");
   REQUIRE(p.exitCode == 0);
