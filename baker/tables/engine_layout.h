@@ -1,11 +1,12 @@
 // Engine layouts of a table spec (issue #14): the DFG channel layouts engines expect
-// (--layout kiln|ue4|filament), the texel-centred grid engines sample with
+// (--layout kiln|ue4|filament|filament-cloth), the texel-centred grid engines sample with
 // texture(lut, vec2(NoV, roughness)) (--grid engine) and a flipped row order (--flip-y). Each is
 // a change of the spec, so it changes the spec hash (and the table name) of what it bakes.
 #pragma once
 #include <string>
 #include <vector>
 
+#include "baker/models/sheen.h"
 #include "baker/tables/spec.h"
 
 namespace kiln {
@@ -24,9 +25,9 @@ enum class DfgLayout {
 
 /// The sheen roughness below which an engine-grid sheen table (and the cloth channel of
 /// DfgLayout::FilamentCloth) holds the value at this roughness: Filament clamps its sheen and
-/// cloth perceptual roughness to MIN_PERCEPTUAL_ROUGHNESS = 0.045 (shading_parameters.fs,
-/// common_material.fs), below which kiln's Charlie models are not defined (models/sheen.h).
-constexpr double kSheenShaderMinRoughness = 0.045;
+/// cloth perceptual roughness to MIN_PERCEPTUAL_ROUGHNESS = 0.045 (docs/models.md "Charlie
+/// sheen"), below which kiln's Charlie models are not defined (models/sheen.h).
+constexpr double kSheenShaderMinRoughness = kCharlieMinRoughness;
 
 /// The spec param naming that clamp (written to kiln.params, part of the spec hash).
 constexpr const char* kSheenRoughnessMinParam = "sheen_roughness_min";
