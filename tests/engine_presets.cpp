@@ -128,7 +128,7 @@ TEST_CASE("every preset names its engine source, tables, sizes and format; help 
     CHECK(kiln::FindEnginePreset(p.name).name == p.name);
     CHECK(kiln::EnginePresetHelp().find(p.name + ": " + p.engine) != std::string::npos);
   }
-  CHECK(names == std::vector<std::string>{"filament", "gltf-viewer", "three", "ue4"});
+  CHECK(names == std::vector<std::string>{"filament", "gltf-viewer", "three", "ue4", "bevy"});
   CHECK_THROWS_WITH(kiln::FindEnginePreset("unity"),
                     Catch::Contains("unknown --preset 'unity'") && Catch::Contains("filament"));
 }

@@ -149,7 +149,7 @@ void RegisterBake(CLI::App& app) {
   auto* oPreset = sub->add_option(
       "--preset", args->preset,
       "an engine's tables in its layout, grid, size and format (docs/engines.md): filament, "
-      "gltf-viewer, three or ue4; --preset help lists them");
+      "gltf-viewer, three, ue4 or bevy; --preset help lists them");
   sub->callback([args, oSize, oOnly, oScene, oFormat, oLayout, oGrid, oFlip, oPreset] {
     if (oPreset->count() && args->preset == "help") {
       std::fputs(EnginePresetHelp().c_str(), stdout);
@@ -173,6 +173,8 @@ void RegisterBake(CLI::App& app) {
       throw std::invalid_argument(
           "bake: --flip-y applies to --format ktx2, dds or png16 (kiln's EXR loader reads row 0 "
           "as the first node)");
+    // A preset whose engine texture is 16-bit float stores halves in every float format.
+    const bool half = args->half || (preset && preset->half && format != OutputFormat::Png16);
     if (format == OutputFormat::Png16 && args->half)
       throw std::invalid_argument("bake: --half does not apply to --format png16");
     if (oSize->count() && (args->size < 2 || args->size > 4096))
@@ -192,7 +194,7 @@ void RegisterBake(CLI::App& app) {
     run.bake.threads = args->threads;
     run.bake.progress = !args->quiet && isatty(STDERR_FILENO);
     run.bake.measureLookupError = !args->noLookup;
-    run.half = args->half;
+    run.half = half;
     run.header = args->header;
     run.force = args->force;
     run.log = args->quiet ? nullptr : stderr;

@@ -91,6 +91,23 @@ EnginePreset Ue4Preset() {
   return p;
 }
 
+EnginePreset BevyPreset() {
+  EnginePreset p;
+  p.name = "bevy";
+  p.engine = "Bevy";
+  p.source =
+      "bevyengine/bevy crates/bevy_pbr/src/environment_map/dfg.ktx2 (64 x 64 R16G16_SFLOAT: "
+      "scale, bias), sampled by F_AB in crates/bevy_pbr/src/render/pbr_lighting.wesl";
+  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "dfg.ktx2"}};
+  p.muTexels = p.roughnessTexels = 64;  // dfg.ktx2's size
+  p.format = OutputFormat::Ktx2;
+  p.half = true;  // R16G16_SFLOAT, linearly filtered (Image::from_buffer, ImageSampler::linear)
+  p.note =
+      "textureSampleLevel(dfg_lut, dfg_lut_sampler, vec2(NdotV, perceptual_roughness), 0.0).rg "
+      "= (scale, bias) of F0; row 0 = roughness 0.5/64; half floats";
+  return p;
+}
+
 std::string Join(const std::vector<std::string>& names, const char* sep) {
   std::string out;
   for (const std::string& n : names) out += (out.empty() ? "" : sep) + n;
@@ -125,7 +142,7 @@ void SizeEngineAxes(TableSpec& spec, int muN, int rN, bool widen) {
 
 const std::vector<EnginePreset>& EnginePresets() {
   static const std::vector<EnginePreset> presets = {FilamentPreset(), GltfViewerPreset(),
-                                                    ThreePreset(), Ue4Preset()};
+                                                    ThreePreset(), Ue4Preset(), BevyPreset()};
   return presets;
 }
 
@@ -157,6 +174,7 @@ std::string EnginePresetHelp() {
            std::to_string(p.roughnessTexels) + " (roughness), texel-centred" +
            (p.flipY ? ", rows flipped" : ", row 0 = the smallest roughness") + "\n";
     out += std::string("  format:   ") + FormatName(p.format) + " (default; --format changes it)" +
+           (p.half ? ", half floats" : "") +
            (p.moduleExtension.empty() ? "" : ", and NAME" + p.moduleExtension) + "\n";
     out += "  sampling: " + p.note + "\n";
   }

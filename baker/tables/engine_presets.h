@@ -42,6 +42,10 @@ struct EnginePreset {
   /// order and the docs say to swap the coordinates.
   bool transposed = false;
   OutputFormat format = OutputFormat::Exr;  ///< the default --format of the preset
+  /// Store half floats in the EXR, KTX2 and DDS files, as if --half were given (the engine's
+  /// texture is 16-bit float and its sampler filters it linearly: Bevy's R16G16_SFLOAT; a
+  /// 32-bit float texture is not filterable in WebGPU without an optional feature).
+  bool half = false;
   /// The engine's own source file written beside each table (catalogue and --only bakes):
   /// ".inc" (Filament's dfg.inc, FilamentIncText), ".js" (a three.js module, ThreeModuleText)
   /// or "" (none).
