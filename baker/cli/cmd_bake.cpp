@@ -11,6 +11,7 @@
 #include "baker/bake/bake.h"
 #include "baker/io/atomic_write.h"
 #include "baker/io/engine_module_writer.h"
+#include "baker/io/engine_png_writer.h"
 #include "baker/io/texture_readers.h"
 #include "baker/cli/commands.h"
 #include "baker/scene/bake_scene.h"
@@ -35,25 +36,39 @@ void PrepareOutputFolder(const std::string& dir) {
   CheckManifest(dir);
 }
 
-/// Writes the preset's engine source file (EnginePreset::moduleExtension) of each baked table in
-/// `dir`, from the table file just written in `format` (LoadAnyTable), all renamed into place
-/// together. Nothing for a preset without one.
+/// Writes the preset's engine files of each baked table in `dir`, from the table file just
+/// written in `format` (LoadAnyTable): its engine source file (EnginePreset::moduleExtension)
+/// and its engine 8-bit PNG (PresetTable::pngChannels), all renamed into place together; logs
+/// how many values a PNG clamped above 1. Nothing for a preset without either.
 void WriteEngineModules(const EnginePreset& preset, const std::vector<TableSpec>& specs,
                         const std::string& dir, OutputFormat format, std::FILE* log) {
-  if (preset.moduleExtension.empty()) return;
   std::vector<std::unique_ptr<PendingFile>> files;
+  std::vector<std::string> notes;
   for (const TableSpec& spec : specs) {
     const PresetTable* t = PresetTableOf(preset, spec.name);
+    const bool png = t && !t->pngChannels.empty();
+    if (preset.moduleExtension.empty() && !png) continue;
     const OutputFormat written = t && t->exrOnly ? OutputFormat::Exr : format;
     const Table table = LoadAnyTable(dir + "/" + spec.name + FormatExtension(written));
-    files.push_back(std::make_unique<PendingFile>(dir + "/" + spec.name + preset.moduleExtension));
-    files.back()->WriteBytes(EngineModuleText(table, preset.moduleExtension));
+    if (!preset.moduleExtension.empty()) {
+      files.push_back(
+          std::make_unique<PendingFile>(dir + "/" + spec.name + preset.moduleExtension));
+      files.back()->WriteBytes(EngineModuleText(table, preset.moduleExtension));
+    }
+    if (!png) continue;
+    long long clipped = 0;
+    files.push_back(std::make_unique<PendingFile>(dir + "/" + t->engineName + ".png"));
+    files.back()->WriteBytes(EnginePng8(table, t->pngChannels, &clipped));
+    if (clipped > 0)
+      notes.push_back(t->engineName + ".png: " + std::to_string(clipped) +
+                      " values above 1 stored as 1 (8-bit)");
   }
   std::vector<PendingFile*> commit;
   for (auto& f : files) commit.push_back(f.get());
   PendingFile::CommitAll(commit);
-  if (log)
-    for (const PendingFile* f : commit) std::fprintf(log, "wrote   %s\n", f->Path().c_str());
+  if (!log) return;
+  for (const PendingFile* f : commit) std::fprintf(log, "wrote   %s\n", f->Path().c_str());
+  for (const std::string& n : notes) std::fprintf(log, "note    %s\n", n.c_str());
 }
 
 /// BakeSpecs of a preset's specs: the tables marked exrOnly (PresetTable) as EXR, the others in

@@ -39,15 +39,19 @@ EnginePreset GltfViewerPreset() {
       "lut_sheen_E.png, sampled by source/Renderer/shaders/ibl.glsl (texture(u_GGXLUT, "
       "vec2(NdotV, perceptualRoughness)).rg, texture(u_CharlieLUT, vec2(NdotV, "
       "sheenRoughness)).b)";
-  p.tables = {{"ggx-dfg", DfgLayout::Kiln, "lut_ggx"},
-              {"charlie-dfg", DfgLayout::Kiln, "lut_charlie"},
-              {"charlie-smith-albedo", DfgLayout::Kiln, "lut_sheen_E"}};
+  PresetTable ggx{"ggx-dfg", DfgLayout::Kiln, "lut_ggx"};
+  ggx.pngChannels = {0, 1};  // texture(u_GGXLUT, ...).rg
+  PresetTable charlie{"charlie-dfg", DfgLayout::Kiln, "lut_charlie"};
+  charlie.pngChannels = {2};  // texture(u_CharlieLUT, ...).b
+  PresetTable sheenE{"charlie-smith-albedo", DfgLayout::Kiln, "lut_sheen_E"};
+  sheenE.pngChannels = {0};  // texture(u_SheenELUT, ...).r
+  p.tables = {ggx, charlie, sheenE};
   p.muTexels = p.roughnessTexels = 128;
   p.format = OutputFormat::Ktx2;
   p.note =
-      "u = NdotV, v = roughness; lut_ggx R, G = scale, bias; lut_charlie and lut_sheen_E hold "
-      "their value in R (the viewer reads lut_charlie's .b: read .r); the viewer's files are "
-      "8-bit PNGs";
+      "u = NdotV, v = roughness; the float files: lut_ggx R, G = scale, bias; lut_charlie and "
+      "lut_sheen_E hold their value in R; the 8-bit lut_*.png put it where the viewer reads "
+      "(lut_charlie: .b), clamped to [0, 1]";
   return p;
 }
 
@@ -173,9 +177,13 @@ std::string EnginePresetHelp() {
     out += "  size:     " + std::to_string(p.muTexels) + " (mu) x " +
            std::to_string(p.roughnessTexels) + " (roughness), texel-centred" +
            (p.flipY ? ", rows flipped" : ", row 0 = the smallest roughness") + "\n";
+    std::vector<std::string> pngs;
+    for (const PresetTable& t : p.tables)
+      if (!t.pngChannels.empty()) pngs.push_back(t.engineName + ".png");
     out += std::string("  format:   ") + FormatName(p.format) + " (default; --format changes it)" +
            (p.half ? ", half floats" : "") +
-           (p.moduleExtension.empty() ? "" : ", and NAME" + p.moduleExtension) + "\n";
+           (p.moduleExtension.empty() ? "" : ", and NAME" + p.moduleExtension) +
+           (pngs.empty() ? "" : ", and 8-bit " + Join(pngs, ", ")) + "\n";
     out += "  sampling: " + p.note + "\n";
   }
   return out;

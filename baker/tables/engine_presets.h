@@ -24,6 +24,10 @@ struct PresetTable {
   int fixedTexels = 0;
   /// True: written as EXR whatever --format says (more than the 4 channels a texture holds).
   bool exrOnly = false;
+  /// Non-empty: a catalogue or --only bake also writes the engine's own 8-bit PNG,
+  /// `engineName + ".png"` (EnginePng8), table channel k in PNG channel pngChannels[k]
+  /// (0 = R, 1 = G, 2 = B): the channel the engine's shader reads.
+  std::vector<int> pngChannels = {};
 };
 
 /// An engine preset. Every table is baked on the engine grid (texel-centred, uniform in
