@@ -19,6 +19,7 @@
 #include "baker/cli/commands.h"
 #include "baker/io/texture_readers.h"
 #include "baker/models/registry.h"
+#include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln::cli {
@@ -174,12 +175,16 @@ void RegisterVerify(CLI::App& app) {
         continue;
       }
       // An axis over a model parameter must stay inside its range (the evaluators clamp, so the
-      // search would compare the texels with the clamped model).
+      // search would compare the texels with the clamped model), unless the file says that it
+      // clamps there itself (an engine-grid sheen table: sheen_roughness_min, engine_layout.h).
       std::string outside;
       if (const ModelInfo* m = FindModel(spec.model))
         for (const AxisSpec& a : spec.axes)
           for (const ParamInfo& q : m->params)
-            if (q.name == a.name && (a.lo < q.lo || a.hi > q.hi) && outside.empty())
+            if (q.name == a.name &&
+                ((a.name == "roughness" ? SheenRoughnessFor(spec, a.lo) : a.lo) < q.lo ||
+                 a.hi > q.hi) &&
+                outside.empty())
               outside = "axis " + a.name + " [" + FullPrecision(a.lo) + ", " + FullPrecision(a.hi) +
                         "] is outside model '" + spec.model + "''s range [" + FullPrecision(q.lo) +
                         ", " + FullPrecision(q.hi) + "]";

@@ -1,4 +1,6 @@
 // dfg: the split-sum DFG terms (Karis 2013) of a microfacet model, over (mu, roughness) -> A, B.
+#include <algorithm>
+
 #include "baker/bench/monte_carlo.h"
 #include "baker/quantities/common.h"
 #include "baker/tables/engine_layout.h"
@@ -55,17 +57,44 @@ bool DfgUsesFixedRule(const TableSpec& spec) {
   return MicrofacetFixedRuleApplies(spec) || SheenFixedRuleApplies(spec);
 }
 
+/// How the cloth channel of a FilamentCloth table is evaluated: as the bake does (the sheen
+/// fixed rule), as the lookup-error search does, or by adaptive quadrature to a tolerance.
+enum class ClothMethod { Bake, Search, Adaptive };
+
+/// `values` (the microfacet channels) with the cloth channel of a FilamentCloth spec appended:
+/// the Charlie sheen's E at (mu, SheenRoughnessFor(r)) (FilamentClothSpec). The declared error
+/// is the larger of the two parts'. Other specs: `values` unchanged.
+std::vector<double> WithCloth(const TableSpec& spec, const double* x, std::vector<double> values,
+                              IntegrationStats& stats, ClothMethod method, double tol = 0) {
+  if (!HasFilamentClothChannel(spec)) return values;
+  const TableSpec cloth = FilamentClothSpec(spec);
+  const double xc[2] = {x[0], SheenRoughnessFor(spec, x[1])};
+  IntegrationStats cs;
+  double e = 0;
+  if (method == ClothMethod::Bake) e = SheenFixedRuleAt(cloth, xc, cs)[0];
+  if (method == ClothMethod::Search) e = SheenSearchRuleAt(cloth, xc, cs)[0];
+  if (method == ClothMethod::Adaptive) {
+    IntegrationOptions opt;
+    opt.tol = tol;
+    e = DirectionalAlbedo(ModelInDomain(cloth.model, xc[1]), xc[0], opt, cs).lin;
+  }
+  stats.evals += cs.evals;
+  stats.errorEstimate = std::max(stats.errorEstimate, cs.errorEstimate);
+  values.push_back(e);
+  return values;
+}
+
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   if (SheenFixedRuleApplies(spec)) return SheenFixedRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetFixedRuleAt(spec, x, stats);
-  return DfgLayoutValues(spec, ab[0], ab[1]);
+  return WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), stats, ClothMethod::Bake);
 }
 
 /// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt).
 std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   if (SheenFixedRuleApplies(spec)) return SheenSearchRuleAt(spec, x, stats);
   std::array<double, 2> ab = MicrofacetSearchRuleAt(spec, x, stats);
-  return DfgLayoutValues(spec, ab[0], ab[1]);
+  return WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), stats, ClothMethod::Search);
 }
 
 std::string DfgFixedRuleMethod(const TableSpec& spec) {
@@ -79,14 +108,15 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   if (IsSheen(spec.model))
     return {DirectionalAlbedo(ModelInDomain(spec.model, x[1]), x[0], opt, stats).lin};
   auto ab = SplitSumDFG(ModelAt(spec.model, x[1]), x[0], opt, stats);
-  return DfgLayoutValues(spec, ab[0], ab[1]);
+  return WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), stats, ClothMethod::Adaptive, tol);
 }
 
 /// Roughness 0 of a microfacet lobe: the mirror reflects at o.h = mu (SmoothDfg).
 bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
   if (!OnSmoothLimit(spec, x)) return false;
   std::array<double, 2> ab = SmoothDfg(x[0]);
-  out = DfgLayoutValues(spec, ab[0], ab[1]);
+  IntegrationStats clothStats;  // the smooth limit declares no error of its own
+  out = WithCloth(spec, x, DfgLayoutValues(spec, ab[0], ab[1]), clothStats, ClothMethod::Bake);
   return true;
 }
 

@@ -10,18 +10,31 @@ namespace kiln {
 
 SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOptions& opt,
                          bool half, bool header, std::FILE* log, bool force) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw std::runtime_error("bake: cannot create folder '" + dir + "': " + ec.message());
-  CheckManifest(dir);  // refuse a corrupt manifest before baking anything
-  std::vector<TableSpec> specs;
-  for (const PlannedTable& t : plan.tables) specs.push_back(t.spec);
   BakeRunOptions run;
   run.bake = opt;
   run.half = half;
   run.header = header;
   run.force = force;
   run.log = log;
+  return BakePlan(plan, dir, run);
+}
+
+SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeRunOptions& run,
+                         const SpecAdapter& adapt) {
+  std::vector<TableSpec> specs;
+  for (const PlannedTable& t : plan.tables) {
+    TableSpec spec = t.spec;
+    if (adapt) adapt(spec);
+    // Adapted tables of two materials may coincide (the engine grid spans every range): once.
+    bool seen = false;
+    for (const TableSpec& s : specs) seen = seen || s.name == spec.name;
+    if (!seen) specs.push_back(spec);
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("bake: cannot create folder '" + dir + "': " + ec.message());
+  CheckManifest(dir);  // refuse a corrupt manifest before baking anything
+  std::FILE* log = run.log;
   BakeRunResult done = BakeSpecs(specs, dir, run);
   SceneBakeResult result;
   result.baked = done.baked;
@@ -35,12 +48,12 @@ SceneBakeResult BakePlan(const Plan& plan, const std::string& dir, const BakeOpt
 }
 
 int BakeScene(const std::string& scenePath, const std::string& outDir, const BakeRunOptions& run,
-              const PlanOptions& planOpt) {
+              const PlanOptions& planOpt, const SpecAdapter& adapt) {
   try {
     Plan plan = PlanSceneFile(scenePath, planOpt);
     for (const std::string& w : plan.warnings)
       std::fprintf(stderr, "kiln: warning: %s\n", w.c_str());
-    BakePlan(plan, outDir, run.bake, run.half, run.header, run.log, run.force);
+    BakePlan(plan, outDir, run, adapt);
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kiln: error: %s\n", e.what());

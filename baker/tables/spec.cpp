@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/quantities/common.h"
+#include "baker/tables/engine_layout.h"
+
 namespace kiln {
 namespace {
 
@@ -25,6 +28,18 @@ bool SmoothLimitApplies(const TableSpec& spec) {
   for (size_t d = 0; d < spec.axes.size(); ++d) x[d] = spec.axes[d].lo;
   std::vector<double> values;
   return q.smoothLimit(spec, x, values);
+}
+
+/// Where a sheen spec is evaluated: x with its roughness raised to params[sheen_roughness_min]
+/// (the engine grid's shader clamp, engine_layout.h) copied into `buf`; x itself for any other
+/// spec (a FilamentCloth ggx table clamps only its cloth channel, in the dfg kind).
+const double* SheenClampedPoint(const TableSpec& spec, const double* x, double* buf) {
+  if (!spec.params.count(kSheenRoughnessMinParam) || !quantity_detail::IsSheen(spec.model) ||
+      spec.axes.size() > 3)
+    return x;
+  for (size_t d = 0; d < spec.axes.size(); ++d)
+    buf[d] = spec.axes[d].name == "roughness" ? SheenRoughnessFor(spec, x[d]) : x[d];
+  return buf;
 }
 
 }  // namespace
@@ -199,7 +214,10 @@ bool UsesFixedRule(const TableSpec& spec) {
   return q.usesFixedRule && q.usesFixedRule(spec);
 }
 
-std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* xIn,
+                                 IntegrationStats& stats) {
+  double buf[3];
+  const double* x = SheenClampedPoint(spec, xIn, buf);
   const QuantityInfo& q = Describe(spec.quantity);
   std::vector<double> smooth;
   if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
@@ -207,8 +225,10 @@ std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, Integra
   return EvaluateSpec(spec, x, spec.tol, stats);
 }
 
-std::vector<double> SearchReference(const TableSpec& spec, const double* x,
+std::vector<double> SearchReference(const TableSpec& spec, const double* xIn,
                                     IntegrationStats& stats) {
+  double buf[3];
+  const double* x = SheenClampedPoint(spec, xIn, buf);
   const QuantityInfo& q = Describe(spec.quantity);
   std::vector<double> smooth;
   if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
@@ -218,8 +238,10 @@ std::vector<double> SearchReference(const TableSpec& spec, const double* x,
   return v;
 }
 
-std::vector<double> EvaluateSpec(const TableSpec& spec, const double* x, double tol,
+std::vector<double> EvaluateSpec(const TableSpec& spec, const double* xIn, double tol,
                                  IntegrationStats& stats) {
+  double buf[3];
+  const double* x = SheenClampedPoint(spec, xIn, buf);
   const QuantityInfo& q = Describe(spec.quantity);
   std::vector<double> smooth;
   if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
