@@ -49,7 +49,9 @@ void WriteEngineModules(const EnginePreset& preset, const std::vector<TableSpec>
     const bool png = t && !t->pngChannels.empty();
     if (preset.moduleExtension.empty() && !png) continue;
     const OutputFormat written = t && t->exrOnly ? OutputFormat::Exr : format;
-    const Table table = LoadAnyTable(dir + "/" + spec.name + FormatExtension(written));
+    // A table of more than 4 channels is written as parts; loading part 1 joins them.
+    const Table table = LoadAnyTable(tablePartPath(dir + "/" + spec.name + FormatExtension(written),
+                                                   1, tablePartCount(spec.channels.size())));
     if (!preset.moduleExtension.empty()) {
       files.push_back(
           std::make_unique<PendingFile>(dir + "/" + spec.name + preset.moduleExtension));
