@@ -287,7 +287,7 @@ TEST_CASE("sheen tables take the engine grid: below the 0.045 clamp they hold th
   CHECK(t.data[32 + 4] != t.data[4]);  // row 1 (roughness 0.047) is its own value
 }
 
-TEST_CASE("--layout filament refuses sheen tables instead of writing a zero channel",
+TEST_CASE("Layout filament (--layout filament) refuses sheen tables instead of writing a zero channel",
           "[engine-presets][sheen]") {
   kiln::TableSpec spec = kiln::CatalogueTable("charlie-dfg");
   CHECK_THROWS_WITH(kiln::ApplyDfgLayout(spec, kiln::DfgLayout::Filament),

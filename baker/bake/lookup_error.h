@@ -1,7 +1,7 @@
 // The lookup error of a table: interpolated value against the reference, found by a search that
 // ranks the cells by the interpolation error the table's own node values predict, always takes
 // the cells on the domain's corners and edges, and climbs to the local maximum inside each
-// (README "Lookup error"). The bake declares its bound from it and `kiln verify` repeats it.
+// (docs/accuracy.md "Lookup error"). The bake declares its bound from it and `kiln verify` repeats it.
 #pragma once
 #include <string>
 #include <vector>
@@ -17,7 +17,7 @@ struct LookupErrorReport {
   /// Max outside the first cell of the second axis (roughness < r_1 or eta < eta_1) of a table
   /// over mu: there (mu -> 0, roughness -> 0) or (mu -> 0, eta -> 1) is a path-dependent limit
   /// (E ~ g(mu / alpha), F ~ g(mu / sqrt(eta - 1))) that no tensor grid interpolates
-  /// (README "Lookup error"). Equal to max for other tables.
+  /// (docs/accuracy.md "Lookup error"). Equal to max for other tables.
   double maxOutsideCorner = 0;
   std::vector<double> where;            ///< the parameter values of the worst point, axis order
   double cubicMax = -1, cubicRms = -1;  ///< with the cubic filter at the probe points (alsoCubic)

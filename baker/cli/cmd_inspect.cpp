@@ -109,7 +109,7 @@ void RegisterInspect(CLI::App& app) {
       ->required();
   sub->add_option("--png", args->png, "also write a false-colour PNG of every channel");
   sub->add_flag("--json", args->json,
-                "print the attributes as one JSON object on stdout (keys: README, Command line)");
+                "print the attributes as one JSON object on stdout (keys: docs/cli.md)");
   sub->add_flag("--axes", args->axes,
                 "also print each channel's linear-interpolation error budget per axis: the max "
                 "of h^2 f''/8 from the node values (warped coordinates), where, and its profile "

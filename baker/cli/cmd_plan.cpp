@@ -27,7 +27,7 @@ void RegisterPlan(CLI::App& app) {
   sub->add_flag("--check", args->check,
                 "exit 1 when a table is missing or stale in DIR (0 when all are up to date)");
   sub->add_flag("--json", args->json,
-                "print the plan as one JSON object on stdout (keys: README, Command line)");
+                "print the plan as one JSON object on stdout (keys: docs/cli.md)");
   sub->callback([args, oSize] {
     if (oSize->count() && (args->size < 2 || args->size > 4096))
       throw std::invalid_argument("plan: --size " + std::to_string(args->size) +

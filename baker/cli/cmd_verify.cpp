@@ -96,7 +96,7 @@ void RegisterVerify(CLI::App& app) {
   sub->add_option("paths", args->paths, "tables or folders of tables")->required();
   sub->add_option("--budget", args->budget,
                   "reference evaluations of the search per table (0: the bake's budget, fewer "
-                  "for a costly reference; README \"Lookup error\")")
+                  "for a costly reference; docs/accuracy.md)")
       ->capture_default_str();
   sub->add_option("--points", args->points, "random points per table, besides the search")
       ->capture_default_str();
@@ -113,7 +113,7 @@ void RegisterVerify(CLI::App& app) {
                   "not checked against the bound)")
       ->check(CLI::IsMember({"linear", "cubic"}));
   sub->add_flag("--json", args->json,
-                "print the results as one JSON object on stdout (keys: README, Command line); "
+                "print the results as one JSON object on stdout (keys: docs/cli.md); "
                 "no progress on stderr");
   sub->add_flag("-q,--quiet", args->quiet,
                 "no progress line per table on stderr and no bar (errors only)");

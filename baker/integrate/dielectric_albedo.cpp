@@ -52,7 +52,7 @@
 // SSE2 lane pair. Each eta's sums are its own, in the walk's order: a column of one (a single
 // point: the lookup-error search, kiln verify) gives the bits the column gives. Evaluations per
 // texel 10,354 counted per eta (8,953 before: the extra threshold for eta > 1.1), of which a
-// 24-eta column walks ~430 per texel; measured cost in README ("Tables on request").
+// 24-eta column walks ~430 per texel; measured cost in docs/catalogue.md ("Tables on request").
 // On the held-out grid (tests/integrate_dielectric_rule_heldout.cpp) the entering points stay
 // within 2.7e-7 of adaptive, as before.
 // The exit side (eta < 1.1) keeps the per-point walk, with the same integrand in fewer

@@ -52,7 +52,7 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
 /// anywhere down to the horizon). A non-reciprocal one (gotanda-ggx) on (mu_l, mu_o) over [0, 1]
 /// (its f is bounded). The angle warp puts nodes uniform in the angle near mu = 1, where
 /// sin(theta) = sqrt(1 - mu^2) has a square-root point. Each 104 x 104 x 3 = 32448 texels, no
-/// more than the 32^3 before (README "The catalogue" gives the measured lookup errors).
+/// more than the 32^3 before (docs/catalogue.md gives the measured lookup errors).
 std::vector<AxisSpec> DefaultAxes(const std::string& model) {
   const ModelInfo* m = FindModel(model);
   if (m && m->reciprocal)

@@ -104,7 +104,7 @@ std::vector<AxisSpec> DefaultAxes(const std::string&) {
 /// spread follows E across the kink of total internal reflection, which the softened form does
 /// not (declared 1.3e-2 with it, 3.5e-3 / 4.3e-3 with this one on the 49 x 40 x 24 grid, 8.1e-4 /
 /// 6.9e-4 on mu 97 root4-layer-split2 x roughness 56 arcsine x eta' 41 angle, 9.4e-4 / 7.3e-4
-/// with roughness 50 arcsine; README glass).
+/// with roughness 50 arcsine; docs/catalogue.md, glass).
 template <Quantity Q>
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   const Kind& k = KindOf(Q);
@@ -265,7 +265,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.makeSpec = MakeSpec<Q>;
   q.defaultAxes = DefaultAxes<Q>;
   q.catalogue = Catalogue<Q>;
-  // In the default catalogue: all four below the 1e-3 contract (README glass).
+  // In the default catalogue: all four below the 1e-3 contract (docs/catalogue.md, glass).
   q.inDefaultCatalogue = true;
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;

@@ -49,7 +49,7 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 /// roughness (linear warp) by eta (entering: sqrt warp from 1.1, exit: linear, as the E tables).
 /// The averages are smooth in r, quadratic at r -> 0 (alpha = r^2), and curve most at r ~ 0.7:
 /// with the sqrt warp the 24 x 16 grids declared 1.7e-3 (albedo-t-avg, at r = 0.79) and 1.2e-3
-/// (albedo-r-exit-avg, r = 0.96); with the linear warp all four stay below 1e-3 (README glass).
+/// (albedo-r-exit-avg, r = 0.96); with the linear warp all four stay below 1e-3 (docs/catalogue.md, glass).
 /// Exit: 32 x 24, since the search probes every cell's centre (bake/lookup_error.cpp) and found
 /// albedo-r-exit-avg's 24 x 16 at 9.8e-4 (declared 1.5e-3; 8.3e-4 from 3 searched cells before),
 /// at roughness 0.41, eta' 0.37: 32 x 24 declares 7.3e-4 (24 x 24 1.1e-3, 32 x 20 8.7e-4).
@@ -163,7 +163,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.makeSpec = MakeSpec<Q>;
   q.defaultAxes = DefaultAxes<Q>;
   q.catalogue = Catalogue<Q>;
-  q.inDefaultCatalogue = true;  // below the 1e-3 contract, ~1-3 s each (README glass)
+  q.inDefaultCatalogue = true;  // below the 1e-3 contract, ~1-3 s each (docs/catalogue.md, glass)
   q.usesFixedRule = UsesRule;
   q.fixedRule = FixedRule;
   q.fixedRuleMethod = FixedRuleMethod;

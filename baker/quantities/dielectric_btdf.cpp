@@ -149,7 +149,7 @@ const QuantityInfo& DielectricBtdfSplitSumQuantity() {
     q.defaultAxes = DefaultAxes;
     q.catalogue = Catalogue;
     // In the default catalogue since its lookup bound is below 1e-3 (the 80 x 50 x 40 grid) and
-    // its texels cost ~1-2 s (eta columns): README "The catalogue".
+    // its texels cost ~1-2 s (eta columns): docs/catalogue.md.
     q.usesFixedRule = UsesRule;
     q.fixedRule = FixedRule;
     q.fixedRuleMethod = FixedRuleMethod;

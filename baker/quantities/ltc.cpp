@@ -42,7 +42,7 @@ constexpr double kPolygonTol = 1e-4;
 /// normal at small roughness: its microfibres reflect below the horizon, norm 1e-45 at r = 0.045)
 /// has no shape to fit; such a texel's light is below kLtcMinNorm of the polygon's radiance
 /// whatever its coefficients (its polygon error at most 2 kLtcMinNorm). None for ltc-ggx,
-/// ltc-beckmann, ltc-blinn-phong; the other tables' counts are in README "LTC tables".
+/// ltc-beckmann, ltc-blinn-phong; the other tables' counts are in docs/ltc.md.
 constexpr double kLtcMinNorm = 1e-3;
 /// kiln verify re-measures the fit error at every this many texels.
 constexpr size_t kVerifyStride = 11;
@@ -124,7 +124,7 @@ std::vector<AxisSpec> KilnAxes(const std::string& model) {
 
 /// The default catalogue: ltc-ggx, ltc-beckmann and ltc-blinn-phong, the specular models' tables
 /// in the published layout, then (issue #18, within its share of the catalogue's time)
-/// ltc-charlie-smith (glTF KHR_materials_sheen's lobe; README "LTC tables": ltc-ggx-separable
+/// ltc-charlie-smith (glTF KHR_materials_sheen's lobe; docs/ltc.md: ltc-ggx-separable
 /// with it went over the share's wall time).
 std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   std::vector<TableSpec> out;
@@ -134,7 +134,7 @@ std::vector<TableSpec> Catalogue(const CatalogueOptions&) {
   return out;
 }
 
-/// The other models with an LTC table on request, in the published layout (issue #18; README
+/// The other models with an LTC table on request, in the published layout (docs/ltc.md;
 /// "LTC tables" says which models are left out and why).
 const std::vector<std::string>& OnRequestModels() {
   static const std::vector<std::string> models = {

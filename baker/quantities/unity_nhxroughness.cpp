@@ -19,7 +19,7 @@
 // curve across the cells); the runtime's min(1, P) is 1-Lipschitz, so T keeps P's bound
 // (kiln/stored.h StoredForm::UnityLobe: the coordinates from (x, r) and the clamp).
 // 768 nodes along s: the linear-interpolation error of 15.8 exp(-e^s) is 15.8 * 0.31 h^2 / 8 at
-// h = 20 / 767, below 1e-3 (README "The catalogue" gives the measured figure).
+// h = 20 / 767, below 1e-3 (docs/catalogue.md gives the measured figure).
 #include "baker/models/unity.h"
 #include "baker/quantities/common.h"
 #include "kiln/stored.h"

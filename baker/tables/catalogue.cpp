@@ -82,7 +82,7 @@ bool IsCatalogueSheen(const std::string& model) {
 }
 }  // namespace
 
-// Sizes and warps (README "The catalogue" gives the measured lookup errors; each quantity's
+// Sizes and warps (docs/catalogue.md gives the measured lookup errors; each quantity's
 // descriptor in baker/quantities/ states its own axes):
 // - mu: near grazing a microfacet albedo is a function of mu / alpha (a layer of width
 //   alpha = r^2 at mu = 0) and a dielectric Fresnel term of mu / sqrt(eta - 1). The microfacet

@@ -1,5 +1,5 @@
 // The default catalogue: every table an engine or renderer wants from kiln's models, with the
-// sizes and warps chosen so that the lookup error stays small (README "The catalogue").
+// sizes and warps chosen so that the lookup error stays small (docs/catalogue.md).
 #pragma once
 #include <string>
 #include <vector>
@@ -35,7 +35,7 @@ const std::vector<std::string>& CatalogueSheenModels();
 /// is in the default catalogue; the others are on request. All nine are: charlie-smith's three
 /// and charlie-albedo-avg joined once charlie-smith's own node counts, the Charlie pair's
 /// average panels and the albedo's shared lookup-error search brought them within the sheen
-/// tables' share of the catalogue's time (README "Sheen").
+/// tables' share of the catalogue's time (docs/catalogue.md).
 bool SheenTableInDefaultCatalogue(const std::string& name);
 
 /// The catalogue's default axes (size and warp chosen per model; quantity descriptors choose
