@@ -18,6 +18,7 @@
 #include <limits>
 
 /// Keeps a rarely taken function out of line, so the lookup fast paths stay small.
+#ifndef KILN_NOINLINE
 #if defined(__GNUC__) || defined(__clang__)
 #define KILN_NOINLINE __attribute__((noinline))
 #elif defined(_MSC_VER)
@@ -25,15 +26,18 @@
 #else
 #define KILN_NOINLINE
 #endif
+#endif
 
 /// Inlines a small function of a lookup fast path (which compilers may otherwise keep out of
 /// line, judging it by its rarely taken branches).
+#ifndef KILN_INLINE
 #if defined(__GNUC__) || defined(__clang__)
 #define KILN_INLINE inline __attribute__((always_inline))
 #elif defined(_MSC_VER)
 #define KILN_INLINE __forceinline
 #else
 #define KILN_INLINE inline
+#endif
 #endif
 
 namespace kiln {
@@ -888,34 +892,15 @@ class LutSampler {
     for (int d = 0; d < D; ++d) cell[d] = cellOf(d, warpedOf(d, x[d], c, split), frac[d]);
   }
 
-  /// Sums w[k] * data[offset[k] + c] over the taps in order, skipping zero weights (so a node
-  /// lookup is the single product 1 * v, exact even for -0 and beside non-finite texels), and
-  /// writes every channel, saturated at the largest finite float.
-  KILN_INLINE void accumulate(const std::size_t* offset, const double* w, int taps,
-                              float* out) const noexcept {
-    const double fmax = static_cast<double>(std::numeric_limits<float>::max());
-    for (int c = 0; c < view_.channels; ++c) {
-      const float* base = view_.data + c;
-      double sum = -0.0;  // -0 + v == v for every v: the first term is taken as is
-      for (int k = 0; k < taps; ++k) {
-        const double term = w[k] * static_cast<double>(base[offset[k]]);
-        sum = sum + (w[k] != 0.0 ? term : -0.0);
-      }
-      if (sum > fmax) sum = fmax;
-      if (sum < -fmax) sum = -fmax;
-      out[c] = static_cast<float>(sum);
-    }
-  }
-
   /// Adds the tap w * v to sum, skipping a zero weight (so a node lookup is the single product
   /// 1 * v, exact even for -0 and beside non-finite texels).
   static KILN_INLINE void addTap(double& sum, double w, float v) noexcept {
     if (w != 0.0) sum = sum + w * static_cast<double>(v);
   }
 
-  /// Multilinear interpolation of D axes from their cells: 2^D taps, summed in the order and
-  /// with the weights ((w2 w1) w0) of accumulate(). Scalar code, no arrays: the weights and
-  /// offsets stay in registers.
+  /// Multilinear interpolation of D axes from their cells: 2^D taps, summed in the order of the
+  /// nodes in memory (axis 2 outermost) with the weights (w2 w1) w0, zero weights skipped.
+  /// Scalar code, no arrays: the weights and offsets stay in registers.
   template <int D>
   KILN_INLINE void linearTaps(const int* cell, const double* frac, float* out) const noexcept {
     std::size_t base = 0;
@@ -1006,25 +991,29 @@ class LutSampler {
     return count;
   }
 
-  /// Per-axis Catmull-Rom (Filter::Cubic) from the cells: up to 4^dims taps.
+  /// Per-axis Catmull-Rom (Filter::Cubic) from the cells: up to 4^D taps, summed in the order
+  /// and with the weights ((w2 w1) w0) of the linear path, straight from the per-axis stencils.
+  template <int D>
   void cubicTaps(const int* cell, const double* frac, float* out) const noexcept {
     std::size_t o[3][4] = {};
     double w[3][4] = {{1.0}, {1.0}, {1.0}};
     int count[3] = {1, 1, 1};
-    for (int d = 0; d < view_.dims; ++d) count[d] = cubicAxis(d, cell[d], frac[d], o[d], w[d]);
-    std::size_t offset[64];
-    double weight[64];
-    int k = 0;
-    for (int k2 = 0; k2 < count[2]; ++k2) {
-      for (int k1 = 0; k1 < count[1]; ++k1) {
-        const double w21 = w[2][k2] * w[1][k1];
-        for (int k0 = 0; k0 < count[0]; ++k0, ++k) {
-          weight[k] = w21 * w[0][k0];
-          offset[k] = o[2][k2] + o[1][k1] + o[0][k0];
+    for (int d = 0; d < D; ++d) count[d] = cubicAxis(d, cell[d], frac[d], o[d], w[d]);
+    const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+    for (int c = 0; c < view_.channels; ++c) {
+      const float* p = view_.data + c;
+      double sum = -0.0;  // -0 + v == v for every v: the first term is taken as is
+      for (int k2 = 0; k2 < count[2]; ++k2) {
+        for (int k1 = 0; k1 < count[1]; ++k1) {
+          const double w21 = w[2][k2] * w[1][k1];
+          const float* row = p + o[2][k2] + o[1][k1];
+          for (int k0 = 0; k0 < count[0]; ++k0) addTap(sum, w21 * w[0][k0], row[o[0][k0]]);
         }
       }
+      if (sum > fmax) sum = fmax;
+      if (sum < -fmax) sum = -fmax;
+      out[c] = static_cast<float>(sum);
     }
-    accumulate(offset, weight, k, out);
   }
 
   /// Per-axis Catmull-Rom lookup on a table of D axes.
@@ -1033,7 +1022,7 @@ class LutSampler {
     int cell[3];
     double frac[3];
     cellsAt<D>(x, cell, frac);
-    cubicTaps(cell, frac, out);
+    cubicTaps<D>(cell, frac, out);
   }
 
   /// The batch call on a valid sampler, in blocks of kBatchBlock points: the cells of a block
@@ -1047,7 +1036,7 @@ class LutSampler {
       const std::size_t m = count - b < kBatchBlock ? count - b : kBatchBlock;
       for (std::size_t k = 0; k < m; ++k) cellsAt<D>(xs + (b + k) * D, cell[k], frac[k]);
       if (filter == Filter::Cubic) {
-        for (std::size_t k = 0; k < m; ++k) cubicTaps(cell[k], frac[k], out + (b + k) * nc);
+        for (std::size_t k = 0; k < m; ++k) cubicTaps<D>(cell[k], frac[k], out + (b + k) * nc);
       } else {
         for (std::size_t k = 0; k < m; ++k) linearTaps<D>(cell[k], frac[k], out + (b + k) * nc);
       }
