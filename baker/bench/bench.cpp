@@ -496,13 +496,41 @@ class Bench {
     Add(r);
   }
 
+  /// Per filter: LutView::sample (lookup-*), a prepared LutSampler (sampler-*) and its batch
+  /// call (batch-*); the notes give each against the plain bilinear lookup timed first.
   void Lookups(const Table& t, const std::string& size) {
-    std::string note = "median of " + std::to_string(plan_.batches) + " batches of " +
-                       std::to_string(plan_.lookupCalls) + " LutView::sample calls";
-    AddTiming("lookup-linear", t.name, t.dims(), size, NAN,
-              TimeLookups(t, Filter::Linear, plan_.lookupCalls, plan_.batches), note);
-    AddTiming("lookup-cubic", t.name, t.dims(), size, NAN,
-              TimeLookups(t, Filter::Cubic, plan_.lookupCalls, plan_.batches), note);
+    const std::string batches = "median of " + std::to_string(plan_.batches) + " batches of " +
+                                std::to_string(plan_.lookupCalls) + " ";
+    struct Way {
+      const char* prefix;
+      LookupCall how;
+      const char* what;
+    };
+    const Way ways[] = {{"lookup", LookupCall::View, "LutView::sample calls"},
+                        {"sampler", LookupCall::Sampler, "LutSampler::sample calls"},
+                        {"batch", LookupCall::Batch, "points through LutSampler's batch call"}};
+    for (Filter filter : {Filter::Linear, Filter::Cubic}) {
+      for (const Way& w : ways) {
+        const CallTiming timing = TimeLookups(t, filter, plan_.lookupCalls, plan_.batches, w.how);
+        const std::string ratio =
+            plainNs_ > 0 ? "; " + Fmt3(timing.nsPerCall / plainNs_) + "x plain-bilinear"
+                         : std::string();
+        AddTiming(std::string(w.prefix) + (filter == Filter::Linear ? "-linear" : "-cubic"), t.name,
+                  t.dims(), size, NAN, timing, batches + w.what + ratio);
+      }
+    }
+  }
+
+  /// The floor: a plain bilinear lookup (call_timing.h), once per run, before the tables.
+  void PlainLookup() {
+    const CallTiming timing = TimePlainBilinear(plan_.lookupCalls, plan_.batches);
+    plainNs_ = timing.nsPerCall;
+    const std::string n = std::to_string(kPlainTableSize);
+    AddTiming("plain-bilinear", "rg-sqrt-roughness", 2, n + "x" + n, NAN, timing,
+              "median of " + std::to_string(plan_.batches) + " batches of " +
+                  std::to_string(plan_.lookupCalls) +
+                  " float bilinear lookups, 2 channels, sqrt roughness (as Cycles' "
+                  "lookup_table_read_2D)");
   }
 
   void Direct(const std::string& label, const AnyModel& m) {
@@ -516,6 +544,7 @@ class Bench {
 
   /// Per model: lookups in its 1D, 2D (and 3D) tables against evaluating and integrating it.
   void Runtime() {
+    PlainLookup();
     for (const Kind& k : plan_.kinds) {
       TableSpec spec = Sized(k.table, k.base);
       std::string model = spec.model;
@@ -559,6 +588,7 @@ class Bench {
   std::map<std::string, Reference> refs_;
   std::map<std::string, Measured> cache_;
   std::vector<BenchRow> rows_;
+  double plainNs_ = 0;  ///< ns per plain bilinear lookup (PlainLookup), 0 before it ran
 };
 
 /// The 1-minute load average (other processes share the cores), or NaN where unknown.

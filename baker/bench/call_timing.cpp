@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -45,19 +46,94 @@ CallTiming Median(long long calls, int batches, F&& batch) {
 
 }  // namespace
 
-CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int batches) {
-  LutView view = table.view();
-  int dims = view.dims;
-  std::vector<double> x(static_cast<size_t>(kInputs) * 3, 0);
+CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int batches,
+                       LookupCall how) {
+  const LutView view = table.view();
+  const LutSampler sampler(view);
+  const int dims = view.dims, nc = view.channels;
+  // Points packed by dims (the batch call's layout): point i is x[i * dims .. + dims - 1].
+  std::vector<double> x(static_cast<size_t>(kInputs) * static_cast<size_t>(dims), 0);
   uint64_t seed = 11;
   for (int i = 0; i < kInputs; ++i)
     for (int d = 0; d < dims; ++d)
-      x[i * 3 + d] = Lerp(Uniform(seed), view.axis[d].lo, view.axis[d].hi);
+      x[i * dims + d] = Lerp(Uniform(seed), view.axis[d].lo, view.axis[d].hi);
+  std::vector<float> out(static_cast<size_t>(kInputs) * static_cast<size_t>(nc));
+  if (how == LookupCall::Batch) {
+    return Median(calls, batches, [&] {
+      double sum = 0;
+      for (long long done = 0; done < calls; done += kInputs) {
+        const size_t n = static_cast<size_t>(std::min<long long>(kInputs, calls - done));
+        sampler.sample(x.data(), n, out.data(), filter);
+        for (size_t i = 0; i < n; ++i) sum += out[i * nc];
+      }
+      g_sink = g_sink + sum;
+    });
+  }
+  // One loop per way, so neither is compiled around the other's code.
+  float stack[8];
+  float* one = nc <= 8 ? stack : out.data();
+  if (how == LookupCall::Sampler) {
+    return Median(calls, batches, [&] {
+      double sum = 0;
+      for (long long i = 0; i < calls; ++i) {
+        sampler.sample(&x[(i % kInputs) * dims], one, filter);
+        sum += one[0];
+      }
+      g_sink = g_sink + sum;
+    });
+  }
   return Median(calls, batches, [&] {
     double sum = 0;
-    float out[8];
     for (long long i = 0; i < calls; ++i) {
-      view.sample(&x[(i % kInputs) * 3], out, filter);
+      view.sample(&x[(i % kInputs) * dims], one, filter);
+      sum += one[0];
+    }
+    g_sink = g_sink + sum;
+  });
+}
+
+namespace {
+
+/// A plain bilinear lookup of an n x n table of two interleaved float channels at
+/// (u, v) in [0, 1]^2 (clamped), texel centres at the ends (node-centred, as kiln's grids).
+void PlainBilinear(const float* table, int n, float u, float v, float* out) {
+  const float last = static_cast<float>(n - 1);
+  const float s = std::min(std::max(u, 0.0f), 1.0f) * last;
+  const float t = std::min(std::max(v, 0.0f), 1.0f) * last;
+  const int i = std::min(static_cast<int>(s), n - 2), j = std::min(static_cast<int>(t), n - 2);
+  const float fs = s - static_cast<float>(i), ft = t - static_cast<float>(j);
+  const float* p = table + (static_cast<size_t>(j) * n + i) * 2;
+  const float* q = p + static_cast<size_t>(n) * 2;
+  for (int c = 0; c < 2; ++c) {
+    const float a = p[c] + fs * (p[2 + c] - p[c]);
+    const float b = q[c] + fs * (q[2 + c] - q[c]);
+    out[c] = a + ft * (b - a);
+  }
+}
+
+}  // namespace
+
+CallTiming TimePlainBilinear(long long calls, int batches) {
+  const int n = kPlainTableSize;
+  std::vector<float> table(static_cast<size_t>(n) * n * 2);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const float mu = static_cast<float>(i) / (n - 1), a = static_cast<float>(j) / (n - 1);
+      table[(static_cast<size_t>(j) * n + i) * 2] = mu * (1 - a);
+      table[(static_cast<size_t>(j) * n + i) * 2 + 1] = a * a;
+    }
+  std::vector<float> mu(kInputs), r(kInputs);
+  uint64_t seed = 11;
+  for (int i = 0; i < kInputs; ++i) {
+    mu[i] = static_cast<float>(Uniform(seed));
+    r[i] = static_cast<float>(Uniform(seed));
+  }
+  return Median(calls, batches, [&] {
+    double sum = 0;
+    float out[2];
+    for (long long i = 0; i < calls; ++i) {
+      const size_t k = static_cast<size_t>(i % kInputs);
+      PlainBilinear(table.data(), n, mu[k], std::sqrt(r[k]), out);
       sum += out[0];
     }
     g_sink = g_sink + sum;

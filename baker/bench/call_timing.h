@@ -15,8 +15,25 @@ struct CallTiming {
   long long evalsPerCall = 0;  ///< integrand evaluations per call (direct integration only)
 };
 
+/// How a lookup timing calls the runtime.
+enum class LookupCall {
+  View,     ///< LutView::sample per point (prepares a LutSampler every call)
+  Sampler,  ///< one LutSampler, LutSampler::sample per point
+  Batch     ///< one LutSampler, the batch call over the 4096 points at once
+};
+
 /// `calls` lookups per batch at random points inside the table's axis ranges.
-CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int batches);
+CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int batches,
+                       LookupCall how = LookupCall::View);
+
+/// The side of the plain bilinear table of TimePlainBilinear.
+constexpr int kPlainTableSize = 128;
+
+/// `calls` lookups per batch in a plain bilinear table, the way Cycles' lookup_table_read_2D
+/// reads its tables: kPlainTableSize^2 texels of two float channels (RG), x linear in mu, y
+/// linear in sqrt(roughness), float arithmetic, clamp to edge, no warp and no validation. The
+/// floor a table lookup is measured against (random mu and roughness in [0, 1]).
+CallTiming TimePlainBilinear(long long calls, int batches);
 
 /// `calls` evaluations of f(wo, wi) per batch, wo and wi uniform in (mu, phi) above the horizon.
 CallTiming TimeEvaluate(const AnyModel& model, long long calls, int batches);

@@ -17,6 +17,29 @@
 #include <cstring>
 #include <limits>
 
+/// Keeps a rarely taken function out of line, so the lookup fast paths stay small.
+#ifndef KILN_NOINLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define KILN_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define KILN_NOINLINE __declspec(noinline)
+#else
+#define KILN_NOINLINE
+#endif
+#endif
+
+/// Inlines a small function of a lookup fast path (which compilers may otherwise keep out of
+/// line, judging it by its rarely taken branches).
+#ifndef KILN_INLINE
+#if defined(__GNUC__) || defined(__clang__)
+#define KILN_INLINE inline __attribute__((always_inline))
+#elif defined(_MSC_VER)
+#define KILN_INLINE __forceinline
+#else
+#define KILN_INLINE inline
+#endif
+#endif
+
 namespace kiln {
 
 /// How an axis spends its nodes. A warp maps the normalized coordinate
@@ -200,6 +223,10 @@ inline bool warpFromName(const char* name, Warp& warp) noexcept {
 ///           every cell. May overshoot the data range.
 ///           An axis with fewer than 3 nodes is interpolated linearly.
 enum class Filter { Linear, Cubic };
+
+/// How close (in nodes) a texel coordinate must be to an integer to be snapped onto it
+/// (Axis::texel), so that a lookup at a node reads that node alone.
+constexpr double kNodeSnap = 1e-9;
 
 /// pi, for the Angle warp.
 constexpr double kPi = 3.14159265358979323846;
@@ -527,7 +554,7 @@ struct Axis {
     if (size <= 1) return 0.0;
     const double s = warped(x, c, split) * static_cast<double>(size - 1);
     const double nearest = std::floor(s + 0.5);
-    return std::fabs(s - nearest) <= 1e-9 ? nearest : s;
+    return std::fabs(s - nearest) <= kNodeSnap ? nearest : s;
   }
 
   /// Texture coordinate of x for hardware bilinear filtering of a texture of
@@ -678,56 +705,11 @@ struct LutView {
   /// `channels` floats to out. The interpolation runs in double on the
   /// stored floats; at a node the stored value is returned bit for bit.
   /// Writes zeros when the view is not valid().
-  void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
-    if (!valid()) {
-      for (int c = 0; c < channels; ++c) out[c] = 0.0f;
-      return;
-    }
-    Stencil stencil[3];
-    const double c = layerScaleAt(x), split = splitAt(x);
-    for (int d = 0; d < 3; ++d) {
-      if (d < dims) stencil[d] = makeStencil(axis[d], x[d], filter, c, split);
-    }
-    for (int c = 0; c < channels; ++c) {
-      double sum = 0.0;
-      bool started = false;
-      for (int k2 = 0; k2 < stencil[2].count; ++k2) {
-        for (int k1 = 0; k1 < stencil[1].count; ++k1) {
-          const double w21 = stencil[2].weight[k2] * stencil[1].weight[k1];
-          if (w21 == 0.0) continue;
-          const std::size_t row = offset(0, stencil[1].index[k1], stencil[2].index[k2]);
-          for (int k0 = 0; k0 < stencil[0].count; ++k0) {
-            const double w = w21 * stencil[0].weight[k0];
-            // Zero weights are skipped so a node lookup is a single
-            // product 1 * v (exact, even for -0).
-            if (w == 0.0) continue;
-            const double v =
-                static_cast<double>(data[row +
-                                         static_cast<std::size_t>(stencil[0].index[k0]) *
-                                             static_cast<std::size_t>(channels) +
-                                         static_cast<std::size_t>(c)]);
-            sum = started ? sum + w * v : w * v;
-            started = true;
-          }
-        }
-      }
-      // A cubic may overshoot its nodes; near the largest float that would round to
-      // infinity, so the result saturates at the largest finite float instead.
-      const double fmax = static_cast<double>(std::numeric_limits<float>::max());
-      if (sum > fmax) sum = fmax;
-      if (sum < -fmax) sum = -fmax;
-      out[c] = static_cast<float>(sum);
-    }
-  }
+  /// Builds a LutSampler (validating the view) and samples through it; to look up many
+  /// points, build the LutSampler once.
+  void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept;
 
  private:
-  /// Nodes and weights one axis contributes to a lookup (at most 4).
-  struct Stencil {
-    int index[4] = {0, 0, 0, 0};
-    double weight[4] = {1.0, 0.0, 0.0, 0.0};
-    int count = 1;
-  };
-
   static int clampIndex(int i, int n) noexcept { return i < 0 ? 0 : (i >= n ? n - 1 : i); }
 
   /// Offset of channel 0 of node (i0, i1, i2) in data.
@@ -738,33 +720,253 @@ struct LutView {
             static_cast<std::size_t>(i0)) *
            static_cast<std::size_t>(channels);
   }
+};
 
-  static Stencil makeStencil(const Axis& a, double x, Filter filter, double c,
-                             double split) noexcept {
-    Stencil st;
-    const int n = a.size;
-    if (n <= 1) return st;  // single node, weight 1
-    const double s = a.texel(x, c, split);
-    int i = static_cast<int>(std::floor(s));
-    if (i > n - 2) i = n - 2;
-    if (i < 0) i = 0;
-    const double f = s - static_cast<double>(i);
-    if (filter == Filter::Linear || n < 3) {
-      st.count = 2;
-      st.index[0] = i;
-      st.index[1] = i + 1;
-      st.weight[0] = 1.0 - f;
-      st.weight[1] = f;
-      return st;
+/// A LutView prepared for many lookups: it validates the view once and holds, per axis, the
+/// constants a lookup needs (node count, lo, hi - lo, its inverse when that division is exact
+/// as a product, the node stride), so a lookup is a few flops per axis and 2^dims (linear) or up
+/// to 4^dims (cubic) loads per channel, with no validation, no allocation, no exception and no
+/// global state. It copies the view (not the data: the data must outlive the sampler).
+///
+/// Results are those of LutView::sample, bit for bit (which calls it): the same texel
+/// coordinates (Axis::texel, snapped onto nodes within kNodeSnap), the same double weights and
+/// the same order of summation, so a lookup at a node returns the stored float exactly.
+/// A const sampler may be used from any number of threads at once.
+class LutSampler {
+ public:
+  /// An invalid sampler: every lookup writes zeros (of no channel).
+  LutSampler() noexcept = default;
+
+  /// Prepares `view`; valid() is view.valid().
+  explicit LutSampler(const LutView& view) noexcept : view_(view), valid_(view.valid()) {
+    if (!valid_) return;
+    std::size_t stride = static_cast<std::size_t>(view.channels);
+    for (int d = 0; d < 3; ++d) {
+      Prepared& p = axis_[d];
+      const int n = view.size(d);
+      p.n = n;
+      p.last = static_cast<double>(n - 1);
+      p.stride = stride;
+      p.step = n > 1 ? stride : 0;
+      stride *= static_cast<std::size_t>(n);
+      if (d >= view.dims) continue;
+      const Axis& a = view.axis[d];
+      p.warp = a.warp;
+      p.lo = a.lo;
+      p.hi = a.hi;
+      p.range = a.hi - a.lo;
+      p.invRange = 1.0 / p.range;
+      // Multiplying by 1 / range gives the quotient bit for bit when range is a power of two
+      // (its inverse is then exact): the common [0, 1] axes.
+      int e = 0;
+      p.exactInverse = std::frexp(p.range, &e) == 0.5 && p.invRange * p.range == 1.0 &&
+                       std::isnormal(p.invRange);
     }
-    // Catmull-Rom weights for nodes i-1, i, i+1, i+2. Exactly (0, 1, 0, 0)
-    // at f = 0 and (0, 0, 1, 0) at f = 1.
+    coupled_ = view.dims >= 2 && isLayerWarp(view.axis[0].warp);
+    split_ = coupled_ && (view.axis[0].warp == Warp::Root4LayerSplit ||
+                          view.axis[0].warp == Warp::Root4LayerSplit2);
+  }
+
+  /// True when the view it was built from is valid() (LutView::valid).
+  bool valid() const noexcept { return valid_; }
+
+  /// The view it samples.
+  const LutView& view() const noexcept { return view_; }
+
+  /// Interpolates every channel at the point x (view().dims values in axis order, in axis
+  /// units; each is clamped to its axis, NaN maps to lo) and writes view().channels floats to
+  /// out: LutView::sample's contract and results. Zeros when the sampler is not valid().
+  void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (!valid_) {
+      for (int c = 0; c < view_.channels; ++c) out[c] = 0.0f;
+      return;
+    }
+    sampleValid(x, out, filter);
+  }
+
+  /// Batch lookup of `count` points. Layout: point k is xs[k * dims .. k * dims + dims - 1]
+  /// (dims = view().dims values per point, packed, in axis order) and its channels go to
+  /// out[k * channels .. k * channels + channels - 1] (channels = view().channels), the
+  /// interleaved layout of the table's own data. Each point gives what sample(x, out, filter)
+  /// gives; zeros for every point when the sampler is not valid().
+  void sample(const double* xs, std::size_t count, float* out,
+              Filter filter = Filter::Linear) const noexcept {
+    const std::size_t nc = static_cast<std::size_t>(view_.channels > 0 ? view_.channels : 0);
+    if (!valid_) {
+      for (std::size_t i = 0; i < count * nc; ++i) out[i] = 0.0f;
+      return;
+    }
+    if (view_.dims == 1) {
+      sampleBatch<1>(xs, count, out, filter);
+    } else if (view_.dims == 2) {
+      sampleBatch<2>(xs, count, out, filter);
+    } else {
+      sampleBatch<3>(xs, count, out, filter);
+    }
+  }
+
+ private:
+  /// Per-axis constants of a lookup (axes at d >= dims: one node, step 0).
+  struct Prepared {
+    double lo = 0.0, hi = 1.0, range = 1.0, invRange = 1.0, last = 0.0;
+    std::size_t stride = 0;  ///< floats between neighbouring nodes
+    std::size_t step = 0;    ///< stride, or 0 on an axis of one node
+    int n = 1;
+    Warp warp = Warp::Linear;
+    bool exactInverse = false;
+  };
+
+  void sampleValid(const double* x, float* out, Filter filter) const noexcept {
+    const bool cubic = filter == Filter::Cubic;
+    if (view_.dims == 1) {
+      cubic ? sampleCubic<1>(x, out) : sampleLinear<1>(x, out);
+    } else if (view_.dims == 2) {
+      cubic ? sampleCubic<2>(x, out) : sampleLinear<2>(x, out);
+    } else {
+      cubic ? sampleCubic<3>(x, out) : sampleLinear<3>(x, out);
+    }
+  }
+
+  /// Axis::warped of x on axis d (c and split: axis 0's layer scale and split point), with
+  /// (x - lo) / (hi - lo) taken from the prepared constants (the same double) for the common
+  /// warps; the others call Axis::warped out of line.
+  KILN_INLINE double warpedOf(int d, double x, double c, double split) const noexcept {
+    const Prepared& p = axis_[d];
+    const bool layer = p.warp == Warp::Root4Layer;
+    if (p.warp != Warp::Linear && p.warp != Warp::Sqrt && p.warp != Warp::Root4 && !layer)
+      return otherWarped(d, x, c, split);
+    const bool collapsed = layer && c == 0.0;
+    if (!(x > p.lo)) return collapsed ? 0.5 : 0.0;  // also catches NaN
+    if (!(x < p.hi)) return 1.0;
+    const double y = p.exactInverse ? (x - p.lo) * p.invRange : (x - p.lo) / p.range;
+    double t = y;
+    if (p.warp == Warp::Sqrt) {
+      t = std::sqrt(y);
+    } else if (p.warp == Warp::Root4) {
+      t = std::sqrt(std::sqrt(y));
+    } else if (layer) {
+      t = collapsed ? 0.5 * (std::sqrt(std::sqrt(y)) + 1.0) : Axis::layerWarp(y, c);
+    }
+    if (!(t >= 0.0)) return 0.0;
+    return t < 1.0 ? t : 1.0;
+  }
+
+  /// Axis::warped of the warps warpedOf does not inline.
+  KILN_NOINLINE double otherWarped(int d, double x, double c, double split) const noexcept {
+    return view_.axis[d].warped(x, c, split);
+  }
+
+  /// The cell of axis d at warped coordinate t: node index i in [0, N - 2] (0 when N = 1) and
+  /// fraction f in [0, 1], the floor of Axis::texel's s = t (N - 1) (snapped onto an integer
+  /// within kNodeSnap) and s - floor, from one truncation: the same numbers as texel().
+  KILN_INLINE int cellOf(int d, double t, double& f) const noexcept {
+    const Prepared& p = axis_[d];
+    f = 0.0;
+    if (p.n <= 1) return 0;
+    const double s = t * p.last;
+    int i = static_cast<int>(s);                     // s >= 0: truncation is floor
+    const double frac = s - static_cast<double>(i);  // exact
+    if (frac <= kNodeSnap) {
+      // snapped down onto node i: f = 0
+    } else if ((static_cast<double>(i) + 1.0) - s <= kNodeSnap) {
+      ++i;  // snapped up onto node i + 1
+    } else {
+      f = frac;
+    }
+    if (i > p.n - 2) {  // s = N - 1: the last cell at f = 1
+      f = static_cast<double>(i) - static_cast<double>(p.n - 2);
+      i = p.n - 2;
+    }
+    return i;
+  }
+
+  /// The cells (node index, fraction) of the D axes at x: cellOf of Axis::warped, with axis
+  /// 0's layer scale and split point at x (LutView::layerScaleAt, splitAt) when it is coupled.
+  template <int D>
+  KILN_INLINE void cellsAt(const double* x, int* cell, double* frac) const noexcept {
+    double c = 1e-12, split = 0.5;
+    if (coupled_) {
+      c = layerScaleFor(axis_[0].warp, axis_[1].lo, axis_[1].hi, x[1]);
+      if (split_) split = view_.splitAt(x);
+    }
+    for (int d = 0; d < D; ++d) cell[d] = cellOf(d, warpedOf(d, x[d], c, split), frac[d]);
+  }
+
+  /// Adds the tap w * v to sum, skipping a zero weight (so a node lookup is the single product
+  /// 1 * v, exact even for -0 and beside non-finite texels).
+  static KILN_INLINE void addTap(double& sum, double w, float v) noexcept {
+    if (w != 0.0) sum = sum + w * static_cast<double>(v);
+  }
+
+  /// Multilinear interpolation of D axes from their cells: 2^D taps, summed in the order of the
+  /// nodes in memory (axis 2 outermost) with the weights (w2 w1) w0, zero weights skipped.
+  /// Scalar code, no arrays: the weights and offsets stay in registers.
+  template <int D>
+  KILN_INLINE void linearTaps(const int* cell, const double* frac, float* out) const noexcept {
+    std::size_t base = 0;
+    for (int d = 0; d < D; ++d) base += static_cast<std::size_t>(cell[d]) * axis_[d].stride;
+    const float* p = view_.data + base;
+    const std::size_t s0 = axis_[0].step, s1 = D >= 2 ? axis_[1].step : 0,
+                      s2 = D >= 3 ? axis_[2].step : 0;
+    const double a0 = 1.0 - frac[0], b0 = frac[0];
+    const double a1 = D >= 2 ? 1.0 - frac[1] : 1.0, b1 = D >= 2 ? frac[1] : 0.0;
+    const double a2 = D >= 3 ? 1.0 - frac[2] : 1.0, b2 = D >= 3 ? frac[2] : 0.0;
+    const double w00 = D >= 3 ? a2 * a1 : a1, w01 = D >= 3 ? a2 * b1 : b1;
+    const double w10 = b2 * a1, w11 = b2 * b1;  // used when D = 3
+    const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+    for (int c = 0; c < view_.channels; ++c) {
+      double sum = -0.0;  // -0 + v == v for every v: the first term is taken as is
+      if (D == 1) {
+        addTap(sum, a0, p[c]);
+        addTap(sum, b0, p[s0 + c]);
+      } else {
+        addTap(sum, w00 * a0, p[c]);
+        addTap(sum, w00 * b0, p[s0 + c]);
+        addTap(sum, w01 * a0, p[s1 + c]);
+        addTap(sum, w01 * b0, p[s1 + s0 + c]);
+        if (D == 3) {
+          addTap(sum, w10 * a0, p[s2 + c]);
+          addTap(sum, w10 * b0, p[s2 + s0 + c]);
+          addTap(sum, w11 * a0, p[s2 + s1 + c]);
+          addTap(sum, w11 * b0, p[s2 + s1 + s0 + c]);
+        }
+      }
+      if (sum > fmax) sum = fmax;
+      if (sum < -fmax) sum = -fmax;
+      out[c] = static_cast<float>(sum);
+    }
+  }
+
+  /// Multilinear lookup on a table of D axes.
+  template <int D>
+  void sampleLinear(const double* x, float* out) const noexcept {
+    int cell[3];
+    double frac[3];
+    cellsAt<D>(x, cell, frac);
+    linearTaps<D>(cell, frac, out);
+  }
+
+  /// Catmull-Rom weights of axis d in cell i at fraction f (see Filter): up to 4 taps,
+  /// quadratically extrapolated ghost nodes folded into the real ones; linear when N < 3.
+  int cubicAxis(int d, int i, double f, std::size_t* offset, double* weight) const noexcept {
+    const Prepared& p = axis_[d];
+    const int n = p.n;
+    if (n <= 1) {
+      offset[0] = 0;
+      weight[0] = 1.0;
+      return 1;
+    }
+    if (n < 3) {
+      offset[0] = static_cast<std::size_t>(i) * p.stride;
+      offset[1] = offset[0] + p.stride;
+      weight[0] = 1.0 - f;
+      weight[1] = f;
+      return 2;
+    }
     double wm1 = 0.5 * (((-f + 2.0) * f - 1.0) * f);
     double w0 = 0.5 * ((3.0 * f - 5.0) * f * f + 2.0);
     double w1 = 0.5 * (((-3.0 * f + 4.0) * f + 1.0) * f);
     double w2 = 0.5 * ((f - 1.0) * f * f);
-    // Fold the quadratically extrapolated ghost nodes into the real ones (n >= 3 here), so
-    // that quadratics are reproduced exactly in the edge cells too.
     if (i == 0) {  // p[-1] = 3 p[0] - 3 p[1] + p[2]
       w0 += 3.0 * wm1;
       w1 -= 3.0 * wm1;
@@ -777,17 +979,82 @@ struct LutView {
       wm1 += w2;
       w2 = 0.0;
     }
-    st.count = 0;
-    const int idx[4] = {i - 1, i, i + 1, i + 2};
     const double wts[4] = {wm1, w0, w1, w2};
+    int count = 0;
     for (int k = 0; k < 4; ++k) {
-      if (idx[k] < 0 || idx[k] > n - 1) continue;
-      st.index[st.count] = idx[k];
-      st.weight[st.count] = wts[k];
-      ++st.count;
+      const int j = i - 1 + k;
+      if (j < 0 || j > n - 1) continue;
+      offset[count] = static_cast<std::size_t>(j) * p.stride;
+      weight[count] = wts[k];
+      ++count;
     }
-    return st;
+    return count;
   }
+
+  /// Per-axis Catmull-Rom (Filter::Cubic) from the cells: up to 4^D taps, summed in the order
+  /// and with the weights ((w2 w1) w0) of the linear path, straight from the per-axis stencils.
+  template <int D>
+  void cubicTaps(const int* cell, const double* frac, float* out) const noexcept {
+    std::size_t o[3][4] = {};
+    double w[3][4] = {{1.0}, {1.0}, {1.0}};
+    int count[3] = {1, 1, 1};
+    for (int d = 0; d < D; ++d) count[d] = cubicAxis(d, cell[d], frac[d], o[d], w[d]);
+    const double fmax = static_cast<double>(std::numeric_limits<float>::max());
+    for (int c = 0; c < view_.channels; ++c) {
+      const float* p = view_.data + c;
+      double sum = -0.0;  // -0 + v == v for every v: the first term is taken as is
+      for (int k2 = 0; k2 < count[2]; ++k2) {
+        for (int k1 = 0; k1 < count[1]; ++k1) {
+          const double w21 = w[2][k2] * w[1][k1];
+          const float* row = p + o[2][k2] + o[1][k1];
+          for (int k0 = 0; k0 < count[0]; ++k0) addTap(sum, w21 * w[0][k0], row[o[0][k0]]);
+        }
+      }
+      if (sum > fmax) sum = fmax;
+      if (sum < -fmax) sum = -fmax;
+      out[c] = static_cast<float>(sum);
+    }
+  }
+
+  /// Per-axis Catmull-Rom lookup on a table of D axes.
+  template <int D>
+  void sampleCubic(const double* x, float* out) const noexcept {
+    int cell[3];
+    double frac[3];
+    cellsAt<D>(x, cell, frac);
+    cubicTaps<D>(cell, frac, out);
+  }
+
+  /// The batch call on a valid sampler, in blocks of kBatchBlock points: the cells of a block
+  /// first, then its taps, so the warps of many points are in flight at once.
+  template <int D>
+  void sampleBatch(const double* xs, std::size_t count, float* out, Filter filter) const noexcept {
+    const std::size_t nc = static_cast<std::size_t>(view_.channels);
+    int cell[kBatchBlock][3];
+    double frac[kBatchBlock][3];
+    for (std::size_t b = 0; b < count; b += kBatchBlock) {
+      const std::size_t m = count - b < kBatchBlock ? count - b : kBatchBlock;
+      for (std::size_t k = 0; k < m; ++k) cellsAt<D>(xs + (b + k) * D, cell[k], frac[k]);
+      if (filter == Filter::Cubic) {
+        for (std::size_t k = 0; k < m; ++k) cubicTaps<D>(cell[k], frac[k], out + (b + k) * nc);
+      } else {
+        for (std::size_t k = 0; k < m; ++k) linearTaps<D>(cell[k], frac[k], out + (b + k) * nc);
+      }
+    }
+  }
+
+  /// Points per block of the batch call.
+  static constexpr std::size_t kBatchBlock = 32;
+
+  LutView view_{};
+  Prepared axis_[3] = {};
+  bool valid_ = false;
+  bool coupled_ = false;  ///< axis 0 has a layer warp (reads axis 1, maybe axis 2)
+  bool split_ = false;    ///< axis 0 has a split warp (LutView::splitAt)
 };
+
+inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {
+  LutSampler(*this).sample(x, out, filter);
+}
 
 }  // namespace kiln

@@ -1,0 +1,239 @@
+// LutSampler (kiln/lut.h), the prepared lookup behind LutView::sample, and its batch call: they
+// must give exactly what the generic-stencil lookup gave (tests/runtime_sample_reference.h),
+// float for float, on every committed table and on every warp, so that the speed costs no
+// accuracy and a lookup at a node still returns the stored texel bit for bit.
+#include <catch2/catch.hpp>
+#include <dirent.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kiln/exr_loader.h"
+#include "kiln/lut.h"
+#include "kiln/table.h"
+#include "runtime_sample_reference.h"
+
+using namespace kiln;
+
+namespace {
+
+std::string LutsDir() { return std::string(KILN_SOURCE_DIR) + "/luts"; }
+
+std::vector<std::string> LutFiles() {
+  std::vector<std::string> out;
+  if (DIR* d = opendir(LutsDir().c_str())) {
+    while (dirent* e = readdir(d)) {
+      std::string n = e->d_name;
+      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0) out.push_back(n);
+    }
+    closedir(d);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+uint32_t Bits(float f) {
+  uint32_t u = 0;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+/// Random lookup points of a view, `dims` values per point: mostly inside the axes, some on
+/// nodes, at the ends, outside them and NaN, and (for a layer warp) at r = 0 / eta = 1.
+std::vector<double> Points(const LutView& v, int count, uint32_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<double> xs;
+  for (int k = 0; k < count; ++k) {
+    for (int d = 0; d < v.dims; ++d) {
+      const Axis& a = v.axis[d];
+      const double pick = u(rng);
+      double x = a.lo + (a.hi - a.lo) * u(rng);
+      if (pick < 0.05)
+        x = a.lo;
+      else if (pick < 0.10)
+        x = a.hi;
+      else if (pick < 0.13)
+        x = a.lo - 0.5 * (a.hi - a.lo) * u(rng);
+      else if (pick < 0.16)
+        x = a.hi + 0.5 * (a.hi - a.lo) * u(rng);
+      else if (pick < 0.17)
+        x = std::numeric_limits<double>::quiet_NaN();
+      else if (pick < 0.20 && d == 1 && a.lo < 1.0 && 1.0 < a.hi)
+        x = 1.0;  // eta = 1
+      else if (pick < 0.30 && d != 0)
+        x = a.node(static_cast<int>(u(rng) * a.size));
+      xs.push_back(x);
+    }
+  }
+  return xs;
+}
+
+/// Every point of xs: LutSampler::sample, LutView::sample and the batch call each equal the
+/// reference bit for bit. Returns the number of mismatching floats.
+int CountMismatches(const LutView& v, const std::vector<double>& xs, Filter filter) {
+  const int nd = v.dims, nc = v.channels;
+  const size_t count = xs.size() / static_cast<size_t>(nd);
+  const LutSampler sampler(v);
+  std::vector<float> batch(count * static_cast<size_t>(nc));
+  sampler.sample(xs.data(), count, batch.data(), filter);
+  std::vector<float> ref(nc), one(nc), viaView(nc);
+  int bad = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const double* x = &xs[k * static_cast<size_t>(nd)];
+    test::ReferenceSample(v, x, ref.data(), filter);
+    sampler.sample(x, one.data(), filter);
+    v.sample(x, viaView.data(), filter);
+    for (int c = 0; c < nc; ++c) {
+      const uint32_t r = Bits(ref[c]);
+      const int wrong = (Bits(one[c]) != r) + (Bits(viaView[c]) != r) +
+                        (Bits(batch[k * static_cast<size_t>(nc) + c]) != r);
+      if (wrong && bad < 3) {
+        UNSCOPED_INFO("point " << k << " x0 " << x[0] << " channel " << c << ": reference "
+                               << ref[c] << ", sampler " << one[c] << ", view " << viaView[c]
+                               << ", batch " << batch[k * static_cast<size_t>(nc) + c]);
+      }
+      bad += wrong;
+    }
+  }
+  return bad;
+}
+
+/// A view over `data` (filled with random values, some -0) of the given axes and channels.
+LutView Synthetic(std::vector<float>& data, int channels, std::vector<Axis> axes, uint32_t seed) {
+  LutView v;
+  v.channels = channels;
+  v.dims = static_cast<int>(axes.size());
+  for (int d = 0; d < v.dims; ++d) v.axis[d] = axes[d];
+  data.assign(v.valueCount(), 0.0f);
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> u(-1.0f, 2.0f);
+  for (size_t i = 0; i < data.size(); ++i) data[i] = i % 7 == 3 ? -0.0f : u(rng);
+  v.data = data.data();
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "LutSampler, LutView::sample and the batch call equal the reference lookup bit for bit "
+    "on every committed table",
+    "[runtime][sampler][luts]") {
+  const auto files = LutFiles();
+  REQUIRE(files.size() >= 50);
+  for (const std::string& name : files) {
+    INFO(name);
+    Table t = loadTable(LutsDir() + "/" + name);
+    const LutView v = t.view();
+    REQUIRE(v.valid());
+    const std::vector<double> xs = Points(v, 3000, 7);
+    CHECK(CountMismatches(v, xs, Filter::Linear) == 0);
+    CHECK(CountMismatches(v, xs, Filter::Cubic) == 0);
+  }
+}
+
+TEST_CASE("LutSampler equals the reference lookup on every warp, coupled or not",
+          "[runtime][sampler]") {
+  struct Case {
+    const char* what;
+    std::vector<Axis> axes;
+  };
+  const std::vector<Case> cases = {
+      {"linear 1D, range not a power of two", {{0.1, 0.7, 17, Warp::Linear}}},
+      {"sqrt, square, log", {{0.0, 1.0, 9, Warp::Sqrt}, {-1.0, 3.0, 5, Warp::Square}}},
+      {"log 1D", {{0.01, 100.0, 33, Warp::Log}}},
+      {"root4, angle, arcsine",
+       {{0.0, 2.0, 12, Warp::Root4}, {0.0, 1.0, 10, Warp::Angle}, {0.0, 1.0, 7, Warp::Arcsine}}},
+      {"root4-layer over sqrt", {{0.0, 1.0, 16, Warp::Root4Layer}, {0.0, 1.0, 8, Warp::Sqrt}}},
+      {"root4-layer, range 0.5", {{0.0, 0.5, 15, Warp::Root4Layer}, {0.0, 1.0, 6, Warp::Linear}}},
+      {"layer-eta", {{0.0, 1.0, 20, Warp::LayerEta}, {0.5, 2.0, 9, Warp::Linear}}},
+      {"root4-layer-angle",
+       {{0.0, 1.0, 14, Warp::Root4LayerAngle},
+        {0.0, 1.0, 6, Warp::Sqrt},
+        {0.4, 1.6, 5, Warp::Sqrt}}},
+      {"root4-layer-split at the critical cosine",
+       {{0.0, 1.0, 17, Warp::Root4LayerSplit},
+        {0.0, 1.0, 6, Warp::Sqrt},
+        {0.3, 1.5, 7, Warp::Linear}}},
+      {"root4-layer-split at a constant",
+       {{0.0, 1.0, 25, Warp::Root4LayerSplit, 0.3}, {0.0, 1.0, 5, Warp::Sqrt}}},
+      {"root4-layer-split2",
+       {{0.0, 1.0, 33, Warp::Root4LayerSplit2},
+        {0.0, 1.0, 6, Warp::Arcsine},
+        {0.3, 1.5, 6, Warp::Angle}}},
+      {"axes of one and two nodes",
+       {{0.0, 1.0, 1, Warp::Linear}, {0.0, 1.0, 2, Warp::Sqrt}, {-2.0, 5.0, 1, Warp::Linear}}},
+  };
+  uint32_t seed = 1;
+  for (const Case& c : cases) {
+    INFO(c.what);
+    for (int channels : {1, 3}) {
+      std::vector<float> data;
+      const LutView v = Synthetic(data, channels, c.axes, ++seed);
+      REQUIRE(v.valid());
+      const std::vector<double> xs = Points(v, 4000, seed);
+      CHECK(CountMismatches(v, xs, Filter::Linear) == 0);
+      CHECK(CountMismatches(v, xs, Filter::Cubic) == 0);
+    }
+  }
+}
+
+TEST_CASE("LutSampler returns the stored texel at every node, -0 included", "[runtime][sampler]") {
+  std::vector<float> data;
+  const LutView v = Synthetic(
+      data, 2, {{0.0, 1.0, 9, Warp::Sqrt}, {0.25, 3.0, 7, Warp::Log}, {0.0, 1.0, 3, Warp::Linear}},
+      5);
+  const LutSampler sampler(v);
+  for (Filter filter : {Filter::Linear, Filter::Cubic}) {
+    for (int i2 = 0; i2 < 3; ++i2)
+      for (int i1 = 0; i1 < 7; ++i1)
+        for (int i0 = 0; i0 < 9; ++i0) {
+          const double x[3] = {v.axis[0].node(i0), v.axis[1].node(i1), v.axis[2].node(i2)};
+          float out[2];
+          sampler.sample(x, out, filter);
+          for (int c = 0; c < 2; ++c) REQUIRE(Bits(out[c]) == Bits(v.at(i0, i1, i2, c)));
+        }
+  }
+}
+
+TEST_CASE("The batch call reads packed points and writes interleaved channels",
+          "[runtime][sampler]") {
+  // A 1D table of 3 nodes over [0, 2] with 2 channels: (0, 10), (1, 20), (4, 30).
+  const float data[] = {0, 10, 1, 20, 4, 30};
+  LutView v;
+  v.data = data;
+  v.channels = 2;
+  v.dims = 1;
+  v.axis[0] = Axis{0.0, 2.0, 3, Warp::Linear};
+  const double xs[] = {0.0, 0.5, 1.5, 2.0};
+  float out[8];
+  LutSampler(v).sample(xs, 4, out);
+  const float expect[] = {0, 10, 0.5f, 15, 2.5f, 25, 4, 30};
+  for (int i = 0; i < 8; ++i) CHECK(out[i] == expect[i]);
+}
+
+TEST_CASE("An invalid view samples to zeros, one point or a batch", "[runtime][sampler]") {
+  const float data[] = {1, 2, 3, 4};
+  LutView v;
+  v.data = data;
+  v.channels = 2;
+  v.dims = 1;
+  v.axis[0] = Axis{1.0, 1.0, 2, Warp::Linear};  // lo == hi: invalid
+  const LutSampler sampler(v);
+  CHECK_FALSE(sampler.valid());
+  const double xs[] = {1.0, 0.5, 2.0};
+  float out[6] = {9, 9, 9, 9, 9, 9};
+  sampler.sample(xs, 3, out);
+  for (float f : out) CHECK(f == 0.0f);
+  float one[2] = {9, 9};
+  sampler.sample(xs, one, Filter::Cubic);
+  CHECK(one[0] == 0.0f);
+  CHECK(one[1] == 0.0f);
+  CHECK_FALSE(LutSampler().valid());
+}
