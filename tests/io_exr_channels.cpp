@@ -26,7 +26,10 @@
 #include "baker/bake/bake.h"
 #include "baker/io/exr_writer.h"
 #include "baker/tables/catalogue.h"
+#include "exr_rgba.h"
 #include "kiln/exr_loader.h"
+
+using kiln::test::ReadRgba;
 
 namespace fs = std::filesystem;
 
@@ -73,17 +76,6 @@ std::vector<std::string> exrChannelList(const std::string& path) {
   return names;
 }
 
-/// The whole image through OpenEXR's RgbaInputFile, row by row.
-std::vector<Imf::Rgba> readRgba(const std::string& path, int& width, int& height) {
-  Imf::RgbaInputFile in(path.c_str());
-  const Imath::Box2i w = in.dataWindow();
-  width = w.max.x - w.min.x + 1;
-  height = w.max.y - w.min.y + 1;
-  std::vector<Imf::Rgba> pixels(std::size_t(width) * std::size_t(height));
-  in.setFrameBuffer(pixels.data() - w.min.x - w.min.y * width, 1, std::size_t(width));
-  in.readPixels(w.min.y, w.max.y);
-  return pixels;
-}
 
 }  // namespace
 
@@ -108,7 +100,7 @@ TEST_CASE(
   }
 
   int width = 0, height = 0;
-  const std::vector<Imf::Rgba> px = readRgba(path, width, height);
+  const std::vector<Imf::Rgba> px = ReadRgba(path, width, height);
   REQUIRE(width == 8);
   REQUIRE(height == 8);
   for (std::size_t i = 0; i < px.size(); ++i) {
@@ -139,7 +131,7 @@ TEST_CASE("a one-channel table is the luminance channel Y: (E, E, E, 1) through 
   kiln::writeTable(path, t, /*half=*/true);
   CHECK(exrChannelList(path) == std::vector<std::string>{"Y"});
   int width = 0, height = 0;
-  const std::vector<Imf::Rgba> px = readRgba(path, width, height);
+  const std::vector<Imf::Rgba> px = ReadRgba(path, width, height);
   REQUIRE(px.size() == 5);
   for (std::size_t i = 0; i < px.size(); ++i) {
     INFO("texel " << i);

@@ -18,7 +18,10 @@
 #include <string>
 #include <vector>
 
+#include "exr_rgba.h"
 #include "kiln/exr_loader.h"
+
+using kiln::test::ReadRgba;
 
 namespace {
 
@@ -44,17 +47,6 @@ int intAttribute(const std::string& path, const char* name, int fallback) {
   return a != nullptr ? a->value() : fallback;
 }
 
-/// The whole image through RgbaInputFile, row by row from the first row of the file.
-std::vector<Imf::Rgba> readRgba(const std::string& path, int& width, int& height) {
-  Imf::RgbaInputFile in(path.c_str());
-  const Imath::Box2i w = in.dataWindow();
-  width = w.max.x - w.min.x + 1;
-  height = w.max.y - w.min.y + 1;
-  std::vector<Imf::Rgba> pixels(std::size_t(width) * std::size_t(height));
-  in.setFrameBuffer(pixels.data() - w.min.x - w.min.y * width, 1, std::size_t(width));
-  in.readPixels(w.min.y, w.max.y);
-  return pixels;
-}
 
 }  // namespace
 
@@ -77,7 +69,7 @@ TEST_CASE("every committed luts/*.exr reads through RgbaInputFile as kiln's load
     parts += part > 0;
 
     int width = 0, height = 0;
-    const std::vector<Imf::Rgba> px = readRgba(path, width, height);
+    const std::vector<Imf::Rgba> px = ReadRgba(path, width, height);
     REQUIRE(width == table.imageWidth());
     REQUIRE(height == table.imageHeight());
     std::size_t mismatches = 0;

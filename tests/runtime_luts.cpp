@@ -9,27 +9,16 @@
 
 #include "baker/tables/spec.h"
 #include "cli_util.h"
+#include "committed_luts.h"
 #include "kiln/exr_loader.h"
 #include "test_util.h"
 
 using namespace kiln;
+using kiln::test::LutsDir;
+using kiln::test::LutFiles;
 
 namespace {
 
-std::string LutsDir() { return std::string(KILN_SOURCE_DIR) + "/luts"; }
-
-std::vector<std::string> LutFiles() {
-  std::vector<std::string> out;
-  if (DIR* d = opendir(LutsDir().c_str())) {
-    while (dirent* e = readdir(d)) {
-      std::string n = e->d_name;
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0) out.push_back(n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 /// One file per table, as the manifest's "file" names it (part 1 of a table stored in parts,
 /// whose loading reads the other parts too).

@@ -14,29 +14,18 @@
 #include <string>
 #include <vector>
 
+#include "committed_luts.h"
 #include "kiln/exr_loader.h"
 #include "kiln/lut.h"
 #include "kiln/table.h"
 #include "runtime_sample_reference.h"
 
 using namespace kiln;
+using kiln::test::LutsDir;
+using kiln::test::LutFiles;
 
 namespace {
 
-std::string LutsDir() { return std::string(KILN_SOURCE_DIR) + "/luts"; }
-
-std::vector<std::string> LutFiles() {
-  std::vector<std::string> out;
-  if (DIR* d = opendir(LutsDir().c_str())) {
-    while (dirent* e = readdir(d)) {
-      std::string n = e->d_name;
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0) out.push_back(n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
-}
 
 uint32_t Bits(float f) {
   uint32_t u = 0;
