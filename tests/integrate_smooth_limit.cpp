@@ -10,7 +10,7 @@
 #include "baker/bake/bake.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/fresnel.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
 #include "cli_util.h"
 #include "kiln/exr_loader.h"

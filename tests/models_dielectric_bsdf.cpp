@@ -11,7 +11,7 @@
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/models/dielectric_bsdf.h"
 #include "baker/models/registry.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
 #include "test_util.h"
 

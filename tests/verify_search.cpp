@@ -12,7 +12,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/bake/lookup_error.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
 #include "kiln/exr_loader.h"

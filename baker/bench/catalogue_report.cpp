@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "baker/bake/bake.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {

@@ -6,7 +6,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/integrate/hemisphere.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 
 namespace kiln::cli {
 

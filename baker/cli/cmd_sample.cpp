@@ -9,7 +9,7 @@
 
 #include "baker/cli/commands.h"
 #include "baker/io/texture_readers.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "kiln/exr_loader.h"
 #include "kiln/stored.h"
 

@@ -1,6 +1,6 @@
 // albedo: the directional albedo E(mu) of any model at rho = 1, F = 1, over (mu, roughness);
 // E_rho, E_rho2 for a model with a rho^2 term (E = rho E_rho + rho^2 E_rho2).
-#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/monte_carlo.h"
 #include "baker/quantities/common.h"
 #include "baker/quantities/unity_tables.h"
 #include "baker/quantities/ward_tables.h"

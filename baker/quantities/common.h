@@ -7,7 +7,7 @@
 
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
 

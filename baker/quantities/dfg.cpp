@@ -1,7 +1,7 @@
 // dfg: the split-sum DFG terms (Karis 2013) of a microfacet model, over (mu, roughness) -> A, B.
 #include <algorithm>
 
-#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/monte_carlo.h"
 #include "baker/quantities/common.h"
 #include "baker/tables/engine_layout.h"
 

@@ -3,7 +3,7 @@
 // dielectrics do, eta >= 1.3 (ice 1.31, water 1.33): as eta -> 1 the Fresnel layer at grazing
 // (width sqrt(eta^2 - 1)) meets the GGX layer (width alpha) and E depends on both ratios, which
 // no table of this size interpolates; eta = 1 exactly has no reflection at all (F = 0).
-#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/monte_carlo.h"
 #include "baker/models/fresnel.h"
 #include "baker/quantities/common.h"
 #include "kiln/stored.h"

@@ -1,20 +1,20 @@
-// The registry: list.inc's kinds, each described by its own file.
+// The registry: tables/quantity_list.inc's kinds, each described by its own file.
 #include <stdexcept>
 
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
 
 namespace kiln {
 
 #define KILN_QUANTITY(id) const QuantityInfo& id##Quantity();
-#include "baker/quantities/list.inc"
+#include "baker/tables/quantity_list.inc"
 #undef KILN_QUANTITY
 
 const std::vector<const QuantityInfo*>& AllQuantities() {
   static const std::vector<const QuantityInfo*> all = [] {
     std::vector<const QuantityInfo*> v = {
 #define KILN_QUANTITY(id) &id##Quantity(),
-#include "baker/quantities/list.inc"
+#include "baker/tables/quantity_list.inc"
 #undef KILN_QUANTITY
     };
     // Describe() indexes by the enum: each descriptor must carry its own id, in list order.

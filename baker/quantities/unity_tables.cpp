@@ -7,7 +7,7 @@
 #include "baker/integrate/quantities.h"
 #include "baker/models/lafortune.h"
 #include "baker/models/unity.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {

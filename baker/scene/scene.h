@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 
 namespace kiln {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "baker/integrate/hemisphere.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "kiln/table.h"
 
 namespace kiln {

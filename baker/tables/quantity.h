@@ -23,10 +23,10 @@ struct IntegrationStats;
 struct MonteCarloEstimator;
 struct Table;
 
-/// Every table kind, in registry order (baker/quantities/list.inc).
+/// Every table kind, in registry order (baker/tables/quantity_list.inc).
 enum class Quantity {
 #define KILN_QUANTITY(id) id,
-#include "baker/quantities/list.inc"
+#include "baker/tables/quantity_list.inc"
 #undef KILN_QUANTITY
 };
 
@@ -111,7 +111,7 @@ struct QuantityInfo {
                            IntegrationStats& stats) = nullptr;
 
   // --- kiln bench --------------------------------------------------------------------------
-  /// The Monte Carlo estimator the bench compares kiln with (bench/monte_carlo.h); null: none.
+  /// The Monte Carlo estimator the bench compares kiln with (quantities/monte_carlo.h); null: none.
   const MonteCarloEstimator* monteCarlo = nullptr;
 
   // --- Rule version and the lookup-error search's reference (issue #13) --------------------

@@ -1,4 +1,4 @@
-#include "baker/bench/monte_carlo.h"
+#include "baker/quantities/monte_carlo.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
