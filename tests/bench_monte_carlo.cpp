@@ -1,11 +1,12 @@
-// The peers' estimators of `kiln bench` (baker/quantities/monte_carlo.h) converge to kiln's exact
-// integrals: same conventions (alpha = r^2, height-correlated Smith), same texels.
+// The peers' estimators of `kiln bench` (baker/quantities/monte_carlo.h,
+// baker/bench/estimate_table.h) converge to kiln's exact integrals: same conventions (alpha = r^2,
+// height-correlated Smith), same texels.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 
-#include "baker/quantities/monte_carlo.h"
+#include "baker/bench/estimate_table.h"
 #include "baker/integrate/quantities.h"
 #include "baker/tables/catalogue.h"
 

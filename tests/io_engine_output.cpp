@@ -10,6 +10,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
+#include "baker/io/texture_writers.h"
 #include "baker/tables/engine_layout.h"
 #include "cli_util.h"
 #include "io_texture_util.h"

@@ -93,7 +93,7 @@ void CheckManifest(const std::string& dir);
 /// table whose texels were derived from another's (`texelsFrom`, BakeStats::derivedFrom) has
 /// "texels_from" (that table's name) after its "integrand_evaluations" (then 0).
 /// EXR rows cannot be flipped (kiln's loader reads row 0 as the first node): a table with
-/// flip_y (engine_layout.h) is refused in EXR.
+/// flip_y (tables/engine_layout.h ApplyFlipY) is refused in EXR.
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
                       bool header, int threads = 1, OutputFormat format = OutputFormat::Exr,
                       const std::string& texelsFrom = "");

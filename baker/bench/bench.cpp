@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "baker/bench/call_timing.h"
-#include "baker/quantities/monte_carlo.h"
+#include "baker/bench/estimate_table.h"
 #include "baker/bench/reference.h"
 #include "baker/bake/bake.h"
 #include "baker/io/atomic_write.h"

@@ -15,7 +15,6 @@
 
 #include "baker/io/bounded_json.h"
 #include "baker/io/texture_writers.h"
-#include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
 #include "kiln/table_checks.h"
 

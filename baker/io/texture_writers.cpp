@@ -15,12 +15,10 @@
 #include "baker/io/atomic_write.h"
 #include "baker/io/png_writer.h"
 #include "baker/io/table_json.h"
-#include "baker/tables/engine_layout.h"
+#include "baker/io/half_float.h"
 
 namespace kiln {
 namespace {
-
-constexpr float kHalfMax = 65504.0f;
 
 void Put32(std::string& out, std::uint32_t v) {
   for (int k = 0; k < 4; ++k) out += static_cast<char>((v >> (8 * k)) & 0xFFu);
@@ -140,6 +138,12 @@ const char* FormatExtension(OutputFormat format) {
       return ".png";
   }
   return ".exr";
+}
+
+bool FlipsY(const Table& table) {
+  for (const std::string& kv : splitList(table.params, ';'))
+    if (kv == "flip_y=1") return true;
+  return false;
 }
 
 std::vector<int> FileRowOrder(const Table& table, bool flipY) {

@@ -43,6 +43,10 @@ std::vector<Png16Channel> Png16Quantisation(const Table& table, bool scaled);
 /// Whether `format` is one of the 16-bit PNGs (Png16, Png16Scaled).
 bool IsPng16(OutputFormat format);
 
+/// True when `table`'s params carry flip_y=1 (its rows are written in reverse order within
+/// each axis-2 slice: tables/engine_layout.h ApplyFlipY).
+bool FlipsY(const Table& table);
+
 /// The image rows of `table` in file order: row r of the file holds the table's image row
 /// Rows[r] (kiln order: slice k = row / size1, node i1 = row % size1); with flipY the rows of
 /// each axis-2 slice are reversed (the slices stay in order).

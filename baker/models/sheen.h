@@ -10,6 +10,7 @@
 // and concentrate at grazing half vectors (integrate/fixed_rule_sheen.h places panels there).
 #pragma once
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "baker/models/brdf.h"
@@ -32,6 +33,12 @@ constexpr double kSheenTableMinRoughness = kCharlieMinRoughness;
 /// fitted Lambda (finite but ~1e8 at mu = 0) and the clamp V <= 1 make E(mu) jump within
 /// mu ~ 1e-8..1e-5 (docs/models.md "Sheen"), a layer of the fit no renderer looks up.
 constexpr double kCharlieSmithMinMu = 1e-4;
+
+/// True when `model` is the id of a sheen lobe (charlie, charlie-smith, ashikhmin-velvet):
+/// light-space integrals, no smooth limit.
+inline bool IsSheen(const std::string& model) {
+  return model == "charlie" || model == "charlie-smith" || model == "ashikhmin-velvet";
+}
 
 /// Neubelt & Pettineo 2013 visibility V = 1 / (4 (mu_l + mu_o - mu_l mu_o)), as Filament's
 /// V_Neubelt (no clamp). mu_o, mu_l in [0, 1], not both 0.

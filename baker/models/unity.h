@@ -37,6 +37,22 @@ inline Vec3 UnitySafeHalf(Vec3 wo, Vec3 wi) {
 /// The range the shader scales unity_NHxRoughness's texels by (LUT_RANGE in BRDF3_Direct).
 constexpr double kUnityNHxRoughnessRange = 16;
 
+/// The "1" of UnityBRDF2's GGX denominator d = n.h^2 (a^2 - 1) + 1.00001 (BRDF2_Unity_PBS): it
+/// keeps d >= 1e-5 at a = 0.
+constexpr double kUnityBRDF2GgxOne = 1.00001;
+
+/// sqrt(0.1): the l.h where UnityBRDF2's max(0.1, l.h^2) turns (at the mirror l.h = mu, so the
+/// kink of its albedo E(mu)).
+constexpr double kUnityBRDF2LhKink = 0.31622776601683794;
+
+/// The alpha of the GGX polar CDF that samples UnityBRDF1's half vectors: 1e-7^(1/4), the width
+/// of its capped lobe.
+constexpr double kUnityBRDF1SamplerAlpha = 0.01778279410038923;
+
+/// The alpha of the GGX polar CDF that samples UnityBRDF2's half vectors: sqrt(1e-5), the width
+/// the 1.00001 of its denominator leaves.
+constexpr double kUnityBRDF2SamplerAlpha = 0.0031622776601683794;
+
 /// The texel unity_NHxRoughness holds at x = (R.L)^4 in [0, 1] and perceptual roughness r in
 /// [0, 1], as the shader reads it before its * 16 (docs/models.md "unity-brdf3"):
 ///   T = min(1, (n + 2) / (2 pi^2) x^(n / 4) / 16),  n = UnitySpecPower(r) / 4
@@ -96,7 +112,7 @@ struct UnityBRDF1 {
 
   // Half-vector integration through GGX's polar CDF at alpha_q = max(a, 1e-7^(1/4)), the width
   // of the capped lobe: q = D_GGX(alpha_q) cos(theta_h), and the weight f mu_l 4 (o.h)/(2 pi q).
-  GGXDistribution Sampler() const { return GGXDistribution{std::max(a, 0.01778279410038923)}; }
+  GGXDistribution Sampler() const { return GGXDistribution{std::max(a, kUnityBRDF1SamplerAlpha)}; }
   PolarParam FromV(double v) const { return Sampler().FromV(v); }
   double VFromTheta(double theta) const { return Sampler().VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const {
@@ -124,7 +140,7 @@ struct UnityBRDF2 {
   double Value(Vec3 wo, Vec3 wi) const {
     Vec3 h = UnitySafeHalf(wo, wi);
     double nh = Clamp(CosTheta(h), 0.0, 1.0), lh = Clamp(Dot(wi, h), 0.0, 1.0);
-    double a2 = a * a, d = nh * nh * (a2 - 1) + 1.00001;
+    double a2 = a * a, d = nh * nh * (a2 - 1) + kUnityBRDF2GgxOne;
     double term = a2 / (std::max(0.1, lh * lh) * (a + 0.5) * (d * d) * 4);
     return rs * term / Pi * fresnel(lh);
   }
@@ -135,7 +151,7 @@ struct UnityBRDF2 {
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 
   // GGX's polar CDF at alpha_q = max(a, sqrt(1e-5)), the width the 1.00001 leaves.
-  GGXDistribution Sampler() const { return GGXDistribution{std::max(a, 0.0031622776601683794)}; }
+  GGXDistribution Sampler() const { return GGXDistribution{std::max(a, kUnityBRDF2SamplerAlpha)}; }
   PolarParam FromV(double v) const { return Sampler().FromV(v); }
   double VFromTheta(double theta) const { return Sampler().VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const {

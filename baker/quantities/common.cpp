@@ -277,12 +277,6 @@ std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec) {
          Short(kFixedRuleBound) + " abs";
 }
 
-bool IsSheen(const std::string& model) {
-  const ModelInfo* m = FindModel(model);
-  if (!m) return false;
-  return model == "charlie" || model == "charlie-smith" || model == "ashikhmin-velvet";
-}
-
 bool DiffuseFixedRuleApplies(const TableSpec& spec) {
   const ModelInfo* m = FindModel(spec.model);
   return m && !m->specular() && !IsSheen(spec.model) && spec.axes.size() == 2 &&
@@ -390,7 +384,7 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   const bool unity2 = albedo.model == "unity-brdf2";
   std::vector<double> r =
       IsSpecular(albedo.model)
-          ? FixedCosineAverageChannels(e, layer, nodes, unity2 ? std::sqrt(0.1) : -1,
+          ? FixedCosineAverageChannels(e, layer, nodes, unity2 ? kUnityBRDF2LhKink : -1,
                                        unity2 ? layer : 0)
       : IsSheen(albedo.model)
           ? FixedCosineAverageChannels(e, albedo.model == "ashikhmin-velvet" ? 1e-4 : 1e-2, nodes,

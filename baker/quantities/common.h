@@ -123,10 +123,6 @@ std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
 /// The method text of the diffuse fixed rule.
 std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 
-/// True when `model` is known and a sheen lobe (models/sheen.h: charlie, charlie-smith,
-/// ashikhmin-velvet): light-space integrals, no smooth limit.
-bool IsSheen(const std::string& model);
-
 /// True when the sheen fixed rule (integrate/fixed_rule_sheen.h) applies: a sheen model (IsSheen),
 /// axes (mu, roughness).
 bool SheenFixedRuleApplies(const TableSpec& spec);

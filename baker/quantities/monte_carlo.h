@@ -16,13 +16,13 @@
 //     phi_l = 2 pi u1, cos theta_l = sqrt(1 - u2) (u2 = 0 is the normal: no sample lies on the
 //     horizon, where some models' f is not finite); the sample weight is pi f(v, l).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "baker/bake/bake.h"
 #include "baker/math/quadrature.h"  // GaussLegendre01
 #include "baker/models/registry.h"
 #include "baker/tables/spec.h"
@@ -53,7 +53,14 @@ PointSet HammersleyPoints(int n);
 /// The n x n Gauss-Legendre product rule on the unit square (N = n^2 points).
 PointSet GaussLegendrePoints(int n);
 
-/// One texel's estimates (the table bake below runs the same code). alpha is the GGX alpha.
+/// The GGX alpha the estimators sample at roughness r: r^2 of r clamped to [0, 1], at least
+/// MinAlpha (as MakeModel clamps it).
+inline double MonteCarloAlpha(double r) {
+  return std::max(AlphaFromPerceptual(Clamp(r, 0.0, 1.0)), MinAlpha);
+}
+
+/// One texel's estimates (bench/estimate_table.h's table bake runs the same code). alpha is the
+/// GGX alpha.
 std::array<double, 2> EstimateDFG(const PointSet& points, double mu, double alpha);
 double EstimateFresnelAlbedo(const PointSet& points, double mu, double alpha, double eta);
 RhoParts EstimateDiffuseAlbedo(const PointSet& points, const AnyModel& model, double mu);
@@ -79,21 +86,5 @@ extern const MonteCarloEstimator kDiffuseAlbedoMonteCarlo;
 /// True when EstimateTable can bake `spec`: its quantity has an estimator that supports it
 /// (today dfg of model ggx, fresnel-albedo, and albedo of a diffuse model).
 bool EstimatorSupports(const TableSpec& spec);
-
-/// Bakes `spec`'s texels (the same nodes, layout and metadata as BakeTable, no lookup-error
-/// check) with the estimator over `points`, on `threads` threads (0: all cores) with oneTBB, one
-/// task per row. `method` names the estimator in the table's kiln.method. stats->evals counts
-/// integrand evaluations (texels x points). Throws std::invalid_argument if !EstimatorSupports.
-Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::string& method,
-                    int threads, BakeStats* stats = nullptr);
-
-/// The same GGX DFG estimate as EstimateTable with n Hammersley points, written the way engine
-/// tools usually write it (Filament's libs/ibl DFV, the UE4 and LearnOpenGL listings): every
-/// texel draws its own points and half vectors (radical inverse, cos/sin of the azimuth, the GGX
-/// inversion) inside its sample loop, nothing shared between texels. The same sums in double, so
-/// the texels agree with EstimateTable's to rounding. Quantity dfg of ggx only (else throws
-/// std::invalid_argument); oneTBB over rows on `threads` threads.
-Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads,
-                               BakeStats* stats = nullptr);
 
 }  // namespace kiln

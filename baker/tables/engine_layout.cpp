@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "baker/models/sheen.h"
-#include "baker/quantities/common.h"
 
 namespace kiln {
 namespace {
@@ -35,7 +34,7 @@ bool HasFilamentChannels(const TableSpec& spec) {
          spec.channels[1] == kFilamentChannels[1];
 }
 
-bool IsSheenSpec(const TableSpec& spec) { return quantity_detail::IsSheen(spec.model); }
+bool IsSheenSpec(const TableSpec& spec) { return IsSheen(spec.model); }
 
 }  // namespace
 
@@ -140,12 +139,6 @@ void ApplyEngineOptions(TableSpec& spec, const EngineOptions& options) {
   ApplyDfgLayout(spec, options.layout);
   if (options.engineGrid) ApplyEngineGrid(spec);
   if (options.flipY) ApplyFlipY(spec);
-}
-
-bool FlipsY(const Table& table) {
-  for (const std::string& kv : splitList(table.params, ';'))
-    if (kv == "flip_y=1") return true;
-  return false;
 }
 
 }  // namespace kiln

@@ -79,7 +79,8 @@ void ApplyEngineGrid(TableSpec& spec);
 
 /// Marks the spec as written with its rows in reverse order within each axis-2 slice (row 0 =
 /// the last node of axis 1): params["flip_y"] = 1 (so the spec hash changes) and "-flipy"
-/// appended to the name. The texels in memory stay in kiln order; the writers flip (FlipsY).
+/// appended to the name. The texels in memory stay in kiln order; the writers flip
+/// (io/texture_writers.h FlipsY).
 void ApplyFlipY(TableSpec& spec);
 
 /// What `kiln bake --layout/--grid/--flip-y` asks for.
@@ -92,8 +93,5 @@ struct EngineOptions {
 /// ApplyDfgLayout, then ApplyEngineGrid and ApplyFlipY when asked (so a name reads
 /// <table>[-filament][-engine][-flipy]); throws as they do. The defaults change nothing.
 void ApplyEngineOptions(TableSpec& spec, const EngineOptions& options);
-
-/// True when `table`'s params carry flip_y=1 (ApplyFlipY).
-bool FlipsY(const Table& table);
 
 }  // namespace kiln

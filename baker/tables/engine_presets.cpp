@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include "baker/models/sheen.h"
-#include "baker/quantities/common.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {
@@ -136,7 +135,7 @@ void SizeEngineAxes(TableSpec& spec, int muN, int rN, bool widen) {
     if (!widen) continue;
     a.hi = 1;
     a.lo = 0;
-    if (!quantity_detail::IsSheen(spec.model)) continue;
+    if (!IsSheen(spec.model)) continue;
     if (a.name == "roughness") a.lo = kSheenTableMinRoughness;
     if (a.name == "mu" && spec.model == "charlie-smith") a.lo = kCharlieSmithMinMu;
   }
@@ -235,8 +234,7 @@ const PresetTable* PresetTableOf(const EnginePreset& preset, const std::string& 
 void ApplyEngineOptionsToPlanned(TableSpec& spec, const EngineOptions& options, int muTexels,
                                  int roughnessTexels) {
   if (!HasMuAndRoughness(spec)) return;
-  const bool microfacetDfg =
-      spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model);
+  const bool microfacetDfg = spec.quantity == Quantity::Dfg && !IsSheen(spec.model);
   // On the engine grid the table spans the engine's whole (mu, roughness) square, whatever
   // range the scene's materials asked for: it takes its kind's own name (no range suffix).
   if (options.engineGrid) spec.name = TableName(spec.quantity, spec.model);
@@ -263,8 +261,7 @@ bool ApplyPresetToPlanned(const EnginePreset& preset, int size, TableSpec& spec)
   const std::string kindName = TableName(spec.quantity, spec.model);
   for (const PresetTable& t : preset.tables)
     if (kindName == t.table) options.layout = t.layout;
-  if (spec.quantity == Quantity::Dfg && !quantity_detail::IsSheen(spec.model) &&
-      options.layout == DfgLayout::Kiln)
+  if (spec.quantity == Quantity::Dfg && !IsSheen(spec.model) && options.layout == DfgLayout::Kiln)
     options.layout = preset.tables.front().layout;  // the engine's microfacet dfg layout
   ApplyEngineOptionsToPlanned(spec, options, size > 0 ? size : preset.muTexels,
                               size > 0 ? size : preset.roughnessTexels);

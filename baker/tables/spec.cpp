@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "baker/quantities/common.h"
+#include "baker/models/sheen.h"
 #include "baker/tables/engine_layout.h"
 
 namespace kiln {
@@ -34,8 +34,7 @@ bool SmoothLimitApplies(const TableSpec& spec) {
 /// (the engine grid's shader clamp, engine_layout.h) copied into `buf`; x itself for any other
 /// spec (a FilamentCloth ggx table clamps only its cloth channel, in the dfg kind).
 const double* SheenClampedPoint(const TableSpec& spec, const double* x, double* buf) {
-  if (!spec.params.count(kSheenRoughnessMinParam) || !quantity_detail::IsSheen(spec.model) ||
-      spec.axes.size() > 3)
+  if (!spec.params.count(kSheenRoughnessMinParam) || !IsSheen(spec.model) || spec.axes.size() > 3)
     return x;
   for (size_t d = 0; d < spec.axes.size(); ++d)
     buf[d] = spec.axes[d].name == "roughness" ? SheenRoughnessFor(spec, x[d]) : x[d];
