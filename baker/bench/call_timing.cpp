@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/integrate/quantities.h"
+#include "baker/math/splitmix.h"
 
 namespace kiln {
 namespace {
@@ -15,14 +16,6 @@ constexpr int kInputs = 4096;
 
 /// Keeps results alive so the timed loops are not optimised away.
 volatile double g_sink = 0;
-
-double Uniform(uint64_t& s) {
-  uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (z >> 11) * (1.0 / 9007199254740992.0);
-}
 
 /// Median ns per call of `batch` (which makes `calls` calls) over `batches` runs.
 template <class F>
@@ -56,7 +49,7 @@ CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int b
   uint64_t seed = 11;
   for (int i = 0; i < kInputs; ++i)
     for (int d = 0; d < dims; ++d)
-      x[i * dims + d] = Lerp(Uniform(seed), view.axis[d].lo, view.axis[d].hi);
+      x[i * dims + d] = Lerp(SplitMixUniform(seed), view.axis[d].lo, view.axis[d].hi);
   std::vector<float> out(static_cast<size_t>(kInputs) * static_cast<size_t>(nc));
   if (how == LookupCall::Batch) {
     return Median(calls, batches, [&] {
@@ -125,8 +118,8 @@ CallTiming TimePlainBilinear(long long calls, int batches) {
   std::vector<float> mu(kInputs), r(kInputs);
   uint64_t seed = 11;
   for (int i = 0; i < kInputs; ++i) {
-    mu[i] = static_cast<float>(Uniform(seed));
-    r[i] = static_cast<float>(Uniform(seed));
+    mu[i] = static_cast<float>(SplitMixUniform(seed));
+    r[i] = static_cast<float>(SplitMixUniform(seed));
   }
   return Median(calls, batches, [&] {
     double sum = 0;
@@ -144,8 +137,8 @@ CallTiming TimeEvaluate(const AnyModel& model, long long calls, int batches) {
   std::vector<Vec3> wo(kInputs), wi(kInputs);
   uint64_t seed = 12;
   for (int i = 0; i < kInputs; ++i) {
-    wo[i] = DirectionFromMuPhi(Uniform(seed), 2 * Pi * Uniform(seed));
-    wi[i] = DirectionFromMuPhi(Uniform(seed), 2 * Pi * Uniform(seed));
+    wo[i] = DirectionFromMuPhi(SplitMixUniform(seed), 2 * Pi * SplitMixUniform(seed));
+    wi[i] = DirectionFromMuPhi(SplitMixUniform(seed), 2 * Pi * SplitMixUniform(seed));
   }
   return Median(calls, batches, [&] {
     double sum = 0;

@@ -1,4 +1,5 @@
 #include "baker/bench/reference.h"
+#include "baker/math/splitmix.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -16,15 +17,6 @@ namespace {
 
 int Threads(int requested) {
   return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-}
-
-/// SplitMix64 step: the fixed-seed stream of the random lookup points.
-double NextUniform(uint64_t& s) {
-  uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (z >> 11) * (1.0 / 9007199254740992.0);
 }
 
 /// Runs f(i) for i in [0, n) on `threads` threads, summing the integrand evaluations f returns.
@@ -86,7 +78,7 @@ Reference ComputeReference(const TableSpec& spec, const ReferenceOptions& opt) {
   uint64_t seed = 0x6B696C6E62656E63ull;  // "kilnbenc"
   for (size_t j = 0; j < ref.randomPoints; ++j)
     for (size_t d = 0; d < dims; ++d)
-      texel.push_back(NextUniform(seed) * std::max(0, axes[d].size - 1));
+      texel.push_back(SplitMixUniform(seed) * std::max(0, axes[d].size - 1));
   size_t count = texel.size() / std::max<size_t>(dims, 1);
   ref.points.resize(texel.size());
   ref.inCorner.assign(count, 0);

@@ -103,10 +103,9 @@ std::vector<double> FixedCosineAverageChannels(E&& e, double layer, int nodes = 
 template <class E>
 std::vector<double> FixedCosineAverageAngle(E&& e, double layer, int nodes = kCosineAverageNodes) {
   const GaussRule01& rule = CachedGaussLegendre01(nodes);
-  const double halfPi = 1.5707963267948966;
   std::vector<double> breaks = {0};
-  for (double b = std::clamp(layer, 1e-4, 0.1); b < halfPi; b *= 4) breaks.push_back(b);
-  breaks.push_back(halfPi);
+  for (double b = std::clamp(layer, 1e-4, 0.1); b < HalfPi; b *= 4) breaks.push_back(b);
+  breaks.push_back(HalfPi);
   std::vector<double> sum;
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];

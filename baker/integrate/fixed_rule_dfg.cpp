@@ -107,7 +107,6 @@
 namespace kiln {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxNodes = 64;
 /// Nodes the kernel evaluates at once; inner panels have a multiple of this.
 constexpr int kLanes = 4;
@@ -219,7 +218,7 @@ const std::vector<GaussRule>& OuterRules(int n) {
   auto r = new std::vector<GaussRule>(kOuterLevels);  // kept for the process lifetime
   const GaussRule& g = Gauss(n);
   for (int k = 0; k < kOuterLevels; ++k) {
-    const double Y = std::max(k, 1) * kOuterStep, sigma = kPi / 2 / std::sinh(Y);
+    const double Y = std::max(k, 1) * kOuterStep, sigma = Pi / 2 / std::sinh(Y);
     GaussRule& o = (*r)[k];
     o.n = g.n;
     for (int i = 0; i < g.n; ++i) {
@@ -522,15 +521,15 @@ std::array<double, 2> Rule(int mode, double mu, double alpha, double eta,
   const double st = std::sqrt(std::max(0.0, 1 - mu * mu));
   const double L = std::sqrt(a2 * st * st + mu * mu);
   const double ozs = mu / L, oxs = a * st / L;  // stretched view o'
-  const double pref = 16 / (kPi * (1 + ozs));   // 4 / (pi (1 + o'_z)) times the kernel's 1/4
+  const double pref = 16 / (Pi * (1 + ozs));    // 4 / (pi (1 + o'_z)) times the kernel's 1/4
   const double muLo = MuLambda(mu, a);
   // Scale 3 (file comment): the pole of g at mu_l = -sMask (height-correlated), or G1(l)'s branch
   // points at mu_l = +-i alpha (separable), graded for at alpha / 2.
   const double sMask = mode == kSeparable ? a / 2 : mu > 0 ? mu * a / (mu + 2 * muLo) : 0;
   const double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
   const int outerLevel = std::min(
-      kOuterLevels - 1, static_cast<int>(std::ceil(std::asinh(kPi / (2 * sigma)) / kOuterStep)));
-  static const double kYFloor = std::asinh(kPi / (2 * kSigmaFloor));
+      kOuterLevels - 1, static_cast<int>(std::ceil(std::asinh(Pi / (2 * sigma)) / kOuterStep)));
+  static const double kYFloor = std::asinh(Pi / (2 * kSigmaFloor));
   const double outerShare = kOuterBase + (1 - kOuterBase) * outerLevel * kOuterStep / kYFloor;
   const int nOuter =
       std::min(opt.outerNodes, static_cast<int>(std::ceil(opt.outerNodes * outerShare - 1e-9)));

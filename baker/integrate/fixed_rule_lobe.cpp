@@ -26,8 +26,6 @@
 namespace kiln {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 struct Lobe {
   double mu, s, n;
   long long count = 0;
@@ -36,7 +34,7 @@ struct Lobe {
     ++count;
     const double sp = std::sin(psi), cp = std::cos(psi), v = s * sp;
     if (!(v > 0)) return 0;
-    const double phi = 2 * s * (mu * sp * (kPi - std::atan2(cp, mu * sp)) + cp);
+    const double phi = 2 * s * (mu * sp * (Pi - std::atan2(cp, mu * sp)) + cp);
     return std::exp(n * std::log(v)) * phi * s * cp;
   }
 };
@@ -87,7 +85,7 @@ struct TwinLobe {
     ++count;
     const double sp = std::sin(psi), cp = std::cos(psi), v = s * sp;
     if (!(v > 0)) return 0;
-    const double phi = 2 * s * (mu * sp * (kPi - 2 * std::atan2(cp, mu * sp)) + 2 * cp);
+    const double phi = 2 * s * (mu * sp * (Pi - 2 * std::atan2(cp, mu * sp)) + 2 * cp);
     return std::min(16.0, c * std::exp(n * std::log(v))) * phi * s * cp;
   }
 };
@@ -99,7 +97,7 @@ double FixedRuleUnityBRDF3Albedo(double mu, double n, long long* evals) {
   k.mu = std::min(1.0, std::max(0.0, mu));
   k.s = std::sqrt((1 - k.mu) * (1 + k.mu));
   k.n = std::max(n, 0.0);
-  k.c = (k.n + 2) / (2 * kPi * kPi);
+  k.c = (k.n + 2) / (2 * Pi * Pi);
   // The clamp: c v^n = 16 at v_c = e^t, t = ln(16 / c) / n (v_c >= 1: no clamp, c <= 16).
   const double t = k.c > 16 ? std::log(16 / k.c) / k.n : 0;
   const bool clamps = k.c > 16;
@@ -122,8 +120,8 @@ double FixedRuleUnityBRDF3Albedo(double mu, double n, long long* evals) {
   }
   double integral = 0;
   if (k.s > 0) {
-    const double w = 1 / std::sqrt(k.n + 1), half = kPi / 2;
-    if (12 * w < kPi / 4) {
+    const double w = 1 / std::sqrt(k.n + 1), half = Pi / 2;
+    if (12 * w < Pi / 4) {
       // The clamp's kink at psi_c = asin(v_c / s) (cos psi_c = sqrt((s - v_c)(s + v_c)) / s,
       // s - v_c = -mu^2 / (1 + s) - expm1(t) without cancellation): a panel boundary.
       double psiC = half;
@@ -143,14 +141,14 @@ double FixedRuleUnityBRDF3Albedo(double mu, double n, long long* evals) {
         integral += GradedToEnd(k, half, 3 * w, k.mu, 12);
       }
     } else {
-      integral += GradedToZero(k, kPi / 4, 1e-10, 48);
+      integral += GradedToZero(k, Pi / 4, 1e-10, 48);
       for (int p = 0; p < 3; ++p)
-        integral += Plain(k, kPi / 4 + kPi / 16 * p, kPi / 4 + kPi / 16 * (p + 1), 12);
-      integral += GradedToEnd(k, half, kPi / 16, k.mu, 12);
+        integral += Plain(k, Pi / 4 + Pi / 16 * p, Pi / 4 + Pi / 16 * (p + 1), 12);
+      integral += GradedToEnd(k, half, Pi / 16, k.mu, 12);
     }
   }
   if (evals) *evals += k.count;
-  return closed + integral / kPi;
+  return closed + integral / Pi;
 }
 
 double FixedRuleMirrorLobeAlbedo(double mu, double n, long long* evals) {
@@ -161,19 +159,19 @@ double FixedRuleMirrorLobeAlbedo(double mu, double n, long long* evals) {
   const double closed = k.mu * (1 - std::exp((k.n + 2) * std::log(std::max(k.s, 1e-300))));
   double integral = 0;
   if (k.s > 0) {
-    const double w = 1 / std::sqrt(k.n + 1), half = kPi / 2;
-    if (12 * w < kPi / 4) {
+    const double w = 1 / std::sqrt(k.n + 1), half = Pi / 2;
+    if (12 * w < Pi / 4) {
       const double lo = half - 12 * w;
       for (int p = 0; p < 4; ++p) integral += Plain(k, lo + 3 * w * p, lo + 3 * w * (p + 1), 12);
     } else {
-      integral += GradedToZero(k, kPi / 4, 1e-10, 48);
+      integral += GradedToZero(k, Pi / 4, 1e-10, 48);
       for (int p = 0; p < 3; ++p)
-        integral += Plain(k, kPi / 4 + kPi / 16 * p, kPi / 4 + kPi / 16 * (p + 1), 12);
-      integral += GradedToEnd(k, half, kPi / 16, k.mu, 12);
+        integral += Plain(k, Pi / 4 + Pi / 16 * p, Pi / 4 + Pi / 16 * (p + 1), 12);
+      integral += GradedToEnd(k, half, Pi / 16, k.mu, 12);
     }
   }
   if (evals) *evals += k.count;
-  return closed + (k.n + 2) / (2 * kPi) * integral;
+  return closed + (k.n + 2) / (2 * Pi) * integral;
 }
 
 }  // namespace kiln

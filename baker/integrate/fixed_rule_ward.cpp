@@ -31,7 +31,6 @@
 namespace kiln {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kXCap = 6.5;
 
 /// int_a^{a+L} f by `nodes` Gauss nodes, geometrically graded towards the right end at scale e
@@ -95,22 +94,22 @@ struct Ward {
       if (w92) d = -1 - cStar;
       if (gm) d = -1 - cP;
       const double e = d < 1e300 ? std::max(std::sqrt(2 * d), opt.gradeFloor) : 1e300;
-      const double half = kPi / 2;
+      const double half = Pi / 2;
       double sum = GradedRight([&](double p, double) { return kAt(p); }, 0, half, 1e300, n);
       sum += GradedRight([&](double p, double) { return kAt(p); }, half, half, e, n);
-      return sum / kPi;
+      return sum / Pi;
     }
     // A cut at pe: p = pe (1 - w^2), w in [0, 1] (w = 0 at the cut), dp = 2 pe w dw.
     const double pe = std::acos(cStar);
     double dp = 1e300;  // the distance in p from pe to the nearest singularity beyond it
-    if (w92) dp = kPi - pe;
-    if (gm) dp = cP > -1 ? std::acos(cP) - pe : (kPi - pe) + std::sqrt(2 * (-1 - cP));
+    if (w92) dp = Pi - pe;
+    if (gm) dp = cP > -1 ? std::acos(cP) - pe : (Pi - pe) + std::sqrt(2 * (-1 - cP));
     const double ew = dp < 1e300 ? std::max(std::sqrt(dp / pe), opt.gradeFloor) : 1e300;
     auto inW = [&](double w) { return kAt(pe * (1 - w * w)) * 2 * pe * w; };
     // w in [1/2, 1] plain (away from the cut); w in [0, 1/2] graded towards w = 0.
     double sum = GradedRight([&](double w, double) { return inW(w); }, 0.5, 0.5, 1e300, n);
     sum += GradedRight([&](double, double dist) { return inW(dist); }, 0, 0.5, ew, n);
-    return sum / kPi;
+    return sum / Pi;
   }
 
   /// int over [x0, x1] of exp(-x^2) 2x Inner(x), mapped x = x0 + L u^2 (towards x0) or

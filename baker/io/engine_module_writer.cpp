@@ -1,6 +1,8 @@
 // Engine source files of a table: Filament's dfg.inc and a three.js DFGLUTData-shaped module.
 #include "baker/io/engine_module_writer.h"
 
+#include "baker/io/half_float.h"
+
 #include <Imath/half.h>
 
 #include <cmath>
@@ -10,8 +12,6 @@
 namespace kiln {
 namespace {
 
-/// The largest finite half float.
-constexpr float kHalfMax = 65504.0f;
 /// Texels per line of the generated arrays (Filament's cmgen writes 4).
 constexpr int kTexelsPerLine = 4;
 

@@ -19,14 +19,12 @@
 
 #include "baker/io/atomic_write.h"
 #include "baker/io/errno_ostream.h"
+#include "baker/io/half_float.h"
 #include "kiln/exr_loader.h"
 
 namespace kiln {
 
 namespace {
-
-/// Largest finite half-precision value.
-constexpr float kHalfMax = 65504.0f;
 
 void setString(Imf::Header& h, const std::string& name, const std::string& value) {
   h.insert(name, Imf::StringAttribute(value));

@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "baker/math/constants.h"
+
 namespace kiln {
 
 template <int N>
@@ -17,7 +19,7 @@ inline void GaussLegendre01(int n, std::vector<double>& nodes, std::vector<doubl
   nodes.assign(n, 0);
   weights.assign(n, 0);
   for (int i = 0; i < n; ++i) {
-    double x = std::cos(3.14159265358979323846 * (i + 0.75) / (n + 0.5)), dp = 1;
+    double x = std::cos(Pi * (i + 0.75) / (n + 0.5)), dp = 1;
     for (int it = 0; it < 100; ++it) {
       double p0 = 1, p1 = x;
       for (int k = 2; k <= n; ++k) {

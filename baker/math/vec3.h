@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace kiln {
+#include "baker/math/constants.h"
 
-constexpr double Pi = 3.14159265358979323846;
-constexpr double InvPi = 0.31830988618379067154;
+namespace kiln {
 
 /// A direction or point in the shading frame; the surface normal is (0, 0, 1).
 struct Vec3 {

@@ -43,8 +43,9 @@ struct GotandaGGXDiffuse {
     PairGeometry g(wo, wi);
     if (g.Below()) return {};
     double s = sigma, s2 = s * s, mu_o = g.mu_o, mu_l = g.mu_l;
-    double Fr = (1 - (0.542026 * s2 + 0.303573 * s) / (s2 + 1.36053)) *
-                (1 - std::pow(1 - mu_o, 5 - 4 * s2) / (s2 + 1.36053)) *
+    double den = s2 + 1.36053;  // the fit's denominator, shared by its first two factors
+    double Fr = (1 - (0.542026 * s2 + 0.303573 * s) / den) *
+                (1 - std::pow(1 - mu_o, 5 - 4 * s2) / den) *
                 ((-0.733996 * s * s2 + 1.50912 * s2 - 1.16402 * s) *
                      std::pow(1 - mu_o, 1 + 1 / (39 * s2 * s2 + 1)) +
                  1);

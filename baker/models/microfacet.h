@@ -67,7 +67,6 @@ struct BeckmannDistribution {
     if (s == 0) return 0;
     double a = mu / (alpha * s);
     if (!std::isfinite(a)) return 0;
-    constexpr double InvSqrtPi = 0.56418958354775628695;
     return std::max(0.0, (-mu * std::erfc(a) + alpha * s * std::exp(-a * a) * InvSqrtPi) / 2);
   }
   double Lambda(double mu) const { return mu > 0 ? MuLambda(mu) / mu : INFINITY; }
