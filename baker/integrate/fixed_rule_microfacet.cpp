@@ -54,12 +54,11 @@
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
 #include "baker/models/roughness.h"
+#include "baker/models/unity.h"
 
 namespace kiln {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kInvSqrtPi = 0.56418958354775628695;
 constexpr int kMaxNodes = 64;
 /// Grading is skipped for structures of weight below this (fixed_rule_dfg.cpp).
 constexpr double kNegligible = 1e-9;
@@ -94,7 +93,7 @@ inline double MuLambdaBeckmann(double mu, double sin, double a) {
   if (!(sin > 0)) return 0;
   double x = mu / (a * sin);
   if (!(x < 27)) return 0;  // exp(-x^2) underflows: Lambda is 0 to double precision
-  return std::max(0.0, (a * sin * std::exp(-x * x) * kInvSqrtPi - mu * std::erfc(x)) / 2);
+  return std::max(0.0, (a * sin * std::exp(-x * x) * InvSqrtPi - mu * std::erfc(x)) / 2);
 }
 
 /// What one evaluation needs: the view, the model, the Fresnel index.
@@ -125,8 +124,8 @@ void AddUnity(Context& k, double t, double C, double S, double q, double M2, dou
   if (4 * oh * oh < 0.001) {
     // D at the scaled n.h: cos^2 theta_h' = (4 oh^2 / 0.001) C^2 / M2.
     const double cos2 = 4 * oh * oh / 0.001 * C * C / M2, d = cos2 * (a * a - 1) + 1;
-    const double dggx = M2 * M2 / (kPi * aq * aq * q * q * q * q);
-    r = a * a / (kPi * (d * d + 1e-7)) / dggx;
+    const double dggx = M2 * M2 / (Pi * aq * aq * q * q * q * q);
+    r = a * a / (Pi * (d * d + 1e-7)) / dggx;
   } else {
     const double x = C * C * a * a + aq * aq * S * S;
     r = a * a * aq * aq * q * q * q * q / (x * x + 1e-7 * M2 * M2);
@@ -152,9 +151,10 @@ void AddUnity2(Context& k, double t, double C, double S, double q, double M2, do
   const double oh = (k.st * aq * S * c + mu * C) / std::sqrt(M2);
   double r;
   if (4 * oh * oh < 0.001) {
-    const double cos2 = 4 * oh * oh / 0.001 * C * C / M2, d = cos2 * (a * a - 1) + 1.00001;
-    const double dggx = M2 * M2 / (kPi * aq * aq * q * q * q * q);
-    r = a * a / (kPi * d * d) / dggx;
+    const double cos2 = 4 * oh * oh / 0.001 * C * C / M2,
+                 d = cos2 * (a * a - 1) + kUnityBRDF2GgxOne;
+    const double dggx = M2 * M2 / (Pi * aq * aq * q * q * q * q);
+    r = a * a / (Pi * d * d) / dggx;
   } else {
     const double x = 1e-5 * M2 + aq * aq * S * S + a * a * C * C;
     r = a * a * aq * aq * q * q * q * q / (x * x);
@@ -253,7 +253,7 @@ void Segment(Context& k, double c, double pw, double t0, double t1, double eL, d
 
 /// unity-brdf2's kink levels of o.h: Unity_SafeNormalize's sqrt(0.001) / 2 and max(0.1, l.h^2)'s
 /// sqrt(0.1).
-constexpr double kUnity2Levels[2] = {kUnitySafeOh, 0.31622776601683794};
+constexpr double kUnity2Levels[2] = {kUnitySafeOh, kUnityBRDF2LhKink};
 
 /// o.h along the azimuth with cos p = c. The stretch is isotropic, so the azimuth is h's own and
 /// o.h = mu cos(theta) + s_o c sin(theta) = A cos(theta - theta0), A = sqrt(mu^2 + s_o^2 c^2),
@@ -267,7 +267,7 @@ int Unity2Crossings(const Context& k, double c, double t1, double level, double*
   int n = 0;
   for (int i = 0; i < 2; ++i) {
     const double th = i == 0 ? th0 - d : th0 + d;
-    if (!(th > 0 && th < kPi / 2)) continue;
+    if (!(th > 0 && th < Pi / 2)) continue;
     const double tq = std::tan(std::atan(std::tan(th) / k.a) / 2);
     if (tq > 0 && tq < t1) {
       t[n] = tq;
@@ -371,41 +371,50 @@ std::vector<double> UnityBRDF2OuterBreaks(const Context& k, double sigma, double
   return out;
 }
 
-/// The rule: (sumV, sumB) times the prefactor (Fresnel: sumV is E).
-std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long long* evals) {
-  const double mu = k.mu, st = k.st, a = k.a, a2 = a * a;
-  const double pref = 16 / (kPi * (1 + k.ozs));
+/// The scales of one view that place Rule2's nodes: the masking pole's distance sMask below the
+/// horizon, the factor weightScale of the weights that pick light azimuths, the outer map's
+/// width sigma and the Fresnel layer eps = sqrt(eta^2 - 1) (0: no Fresnel).
+struct RuleScales {
+  double sMask = 0, weightScale = 1, sigma = 0, eps = 0;
+};
+
+/// Rule2's RuleScales for the view and model of `k`.
+RuleScales ScalesOf(const Context& k) {
+  const double mu = k.mu, st = k.st, a = k.a;
+  RuleScales s;
   // Masking pole of g at mu_l = -sMask: ~ min(alpha, mu) height-correlated, ~ alpha separable.
   const double muLo = k.gDenO - mu;
-  double sMask = k.model.separable ? a / 2 : (mu > 0 ? mu * a / (mu + 2 * muLo) : 0);
+  s.sMask = k.model.separable ? a / 2 : (mu > 0 ? mu * a / (mu + 2 * muLo) : 0);
   // unity-brdf1: V's pole in mu_l at -(a mu + 1e-5) / (2 mu (1 - a) + a).
   if (k.model.ndf == FixedRuleNdf::UnityBRDF1)
-    sMask = (k.unityA * mu + 1e-5) / (2 * mu * (1 - k.unityA) + k.unityA);
+    s.sMask = (k.unityA * mu + 1e-5) / (2 * mu * (1 - k.unityA) + k.unityA);
   // unity-brdf2: g is linear in mu_l (no masking pole), and up to 1 / (0.1 (a + 0.5)) times
   // GGX's: the weights that pick light azimuths scale by it.
-  double weightScale = 1;
   if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
-    sMask = 0;
-    weightScale = 1 / (0.1 * (k.unityA + 0.5));
+    s.sMask = 0;
+    s.weightScale = 1 / (0.1 * (k.unityA + 0.5));
   }
-  double sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
-  double eps = 0;
+  s.sigma = std::min(1e3, std::max(st > 0 ? mu / st : 1e3, kSigmaFloor));
   if (k.eta > 0) {
-    eps = std::sqrt((k.eta - 1) * (k.eta + 1));
-    sigma = std::min(sigma, std::max((mu + eps) / (2 * a), kFresnelSigmaFloor));
+    s.eps = std::sqrt((k.eta - 1) * (k.eta + 1));
+    s.sigma = std::min(s.sigma, std::max((mu + s.eps) / (2 * a), kFresnelSigmaFloor));
   }
-  static const double kYRef = std::asinh(kPi / (2 * kSigmaFloor));
-  const double Y = std::asinh(kPi / (2 * sigma));
+  return s;
+}
+
+/// Rule2's outer nodes in y (the azimuth is p = pi/2 - sigma sinh(y) folded, y in [0, Y]) and
+/// their weights in y: one Gauss panel over [0, Y]; unity-brdf2 splits it where a kink of its
+/// o.h levels meets the cut (UnityBRDF2OuterBreaks): there the inner integral is not smooth in
+/// the azimuth.
+void OuterNodes(const Context& k, const MicrofacetRuleOptions& opt, double sigma,
+                std::vector<double>& ys, std::vector<double>& wys) {
+  static const double kYRef = std::asinh(Pi / (2 * kSigmaFloor));
+  const double Y = std::asinh(Pi / (2 * sigma));
   const int nOuter = std::min(
       kMaxNodes, static_cast<int>(std::ceil(
                      opt.outerNodes * (kOuterBase + (1 - kOuterBase) * std::min(Y, kYRef) / kYRef) +
                      opt.outerNodes * std::max(0.0, Y - kYRef) / kYRef - 1e-9)));
   const GaussRule01& go = Gauss(nOuter);
-  const double invMu = mu > 0 ? 1 / mu : 0;
-  // The outer nodes (y, weight in y): one Gauss panel over [0, Y]; unity-brdf2 splits it where a
-  // kink of its o.h levels meets the cut (UnityBRDF2OuterBreaks): there the inner integral is not
-  // smooth in the azimuth.
-  std::vector<double> ys, wys;
   std::vector<double> breaks = {0.0, Y};
   if (k.model.ndf == FixedRuleNdf::UnityBRDF2) breaks = UnityBRDF2OuterBreaks(k, sigma, Y);
   for (size_t b = 0; b + 1 < breaks.size(); ++b)
@@ -419,136 +428,173 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
         wys.push_back(go.w[io] * len);
       }
     }
+}
+
+/// Both sides of one outer node's cut (0: cos p > 0, 1: cos p < 0): t at the cut (tm), dt/dt'
+/// there (d), the masking scale e2 at the cut and, for the opposite side, e0
+/// (fixed_rule_dfg.cpp).
+struct CutSides {
+  double tm[2], d[2], e2[2], e0[2];
+};
+
+/// The CutSides of the outer node whose azimuth has |cos p| = cx.
+CutSides SidesOf(const Context& k, double sMask, double cx) {
+  const double mu = k.mu, a = k.a, a2 = a * a;
+  const double invMu = mu > 0 ? 1 / mu : 0;
+  const double X = k.st * cx, R = std::sqrt(mu * mu + X * X), RX = R + X;
+  const double iT[2] = {mu * (1 / RX), std::min(RX * invMu, 1e150)};
+  CutSides s;
+  for (int side = 0; side < 2; ++side) {
+    const double iu = a * iT[side], m = 1 + a2 * iT[side] * iT[side];
+    const double t1 = 1 / (iu + std::sqrt(iu * iu + 1));
+    const double u = sMask * a * (1 + iT[side] * iT[side]) / (2 * R * m);  // e2 / (dt/dt')
+    s.tm[side] = side == 1 && mu == 0 ? 0 : t1;
+    s.d[side] = (1 + t1 * t1) / 2;
+    s.e2[side] = u * s.d[side];
+    s.e0[side] = t1 + u / 2;
+  }
+  return s;
+}
+
+/// unity-brdf1's panels of one azimuth (c = cos p, weight pw) over [0, t1] when its
+/// Unity_SafeNormalize kink, where o.h = sqrt(0.001) / 2, lies inside (o.h runs monotonically
+/// from mu at t = 0 to the cut): a panel boundary there, each side graded towards its own
+/// structure (eStart at 0, eEnd at t1). Returns false, adding nothing, when the kink is not
+/// inside.
+bool UnityBRDF1KinkPanels(Context& k, const MicrofacetRuleOptions& opt, double c, double pw,
+                          double t1, double eStart, double eEnd) {
+  const double mu = k.mu, st = k.st, a = k.a;
+  auto ohAt = [&](double t) {
+    const double C = 1 - t * t, aS = a * 2 * t;
+    return (st * aS * c + mu * C) / std::sqrt(aS * aS + C * C);
+  };
+  const double f0 = ohAt(0) - kUnitySafeOh, f1 = ohAt(t1) - kUnitySafeOh;
+  if (!((f0 < 0) != (f1 < 0) && f0 != 0 && f1 != 0)) return false;
+  double lo = 0, hi = t1;
+  for (int i = 0; i < 60; ++i) {
+    const double m = (lo + hi) / 2;
+    ((ohAt(m) - kUnitySafeOh < 0) == (f0 < 0) ? lo : hi) = m;
+  }
+  const double tk = (lo + hi) / 2;
+  const int n = opt.bulkNodes + opt.gradedNodes;
+  // Inside (o.h < sqrt(0.001) / 2) D reads n.h scaled by o.h / (sqrt(0.001) / 2): its
+  // peak sits on the kink and falls off within w = max(a^2, sqrt(1e-7)) in n.h^2, a
+  // layer of width w h0 / (2 |d(o.h)/dt|) in t on the inside of tk.
+  const double dt = 1e-7 * t1, slope = std::abs(ohAt(tk + dt) - ohAt(tk - dt)) / (2 * dt);
+  const double ua = k.unityA * k.unityA;
+  const double eK = std::max(
+      std::max(ua, 3.1622776601683794e-4) * kUnitySafeOh / (2 * std::max(slope, 1e-300)), 1e-12);
+  const bool insideLow = f0 < 0;  // [0, tk] is inside
+  // [0, tk]
+  if (insideLow) {
+    const double half = tk / 2;
+    if (eStart < half / 8)
+      GradedPanel(k, c, pw, 0, 1, half, eStart, opt.deficitNodes, opt.nodesPerEFold);
+    else
+      PlainPanel(k, c, pw, 0, half, n);
+    GradedPanel(k, c, pw, tk, -1, tk - half, eK, opt.gradedNodes, opt.nodesPerEFold);
+  } else if (eStart < tk / 8) {
+    GradedPanel(k, c, pw, 0, 1, tk, eStart, opt.deficitNodes, opt.nodesPerEFold);
+  } else {
+    PlainPanel(k, c, pw, 0, tk, n);
+  }
+  // [tk, t1]
+  const double rest = t1 - tk;
+  if (!insideLow) {
+    const double half = rest / 2;
+    GradedPanel(k, c, pw, tk, 1, half, eK, opt.gradedNodes, opt.nodesPerEFold);
+    if (eEnd < kGradeBelow * half)
+      GradedPanel(k, c, pw, t1, -1, rest - half, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+    else
+      PlainPanel(k, c, pw, tk + half, rest - half, n);
+  } else if (eEnd < kGradeBelow * rest) {
+    GradedPanel(k, c, pw, t1, -1, rest, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+  } else {
+    PlainPanel(k, c, pw, tk, rest, n);
+  }
+  return true;
+}
+
+/// The inner panels of one side of one outer node (|cos p| = cx, weight pw in y, prefactor
+/// pref): plain panels where the azimuth's weight is small, else panels graded towards the
+/// structures at t = 0 (the opposite side's masking, the Fresnel layer) and at the cut (GGX's
+/// tail, Fresnel in the tail, the masking pole).
+void SidePanels(Context& k, const MicrofacetRuleOptions& opt, const RuleScales& s,
+                const CutSides& cut, int side, double cx, double pw, double pref) {
+  const double mu = k.mu, st = k.st, a = k.a;
+  const double t1 = std::min(cut.tm[side], k.tCap);
+  const bool capped = t1 < cut.tm[side];  // the cut and its structures lie beyond the NDF's end
+  if (!(t1 > 0)) return;
+  const double c = side == 0 ? cx : -cx, kOn = 2 * k.oxs * c;
+  const double weight = s.weightScale * kWeightBound * pref / 4 * pw * t1 * t1 *
+                        (4.0 / 3 * std::abs(kOn) * t1 + 2 * k.ozs);
+  if (weight < kTinyWeight) {
+    PlainPanel(k, c, pw, 0, t1, kTinyNodes);
+    return;
+  }
+  if (weight < kLightWeight) {
+    PlainPanel(k, c, pw, 0, t1, opt.lightNodes);
+    return;
+  }
+  const double onMaxQ = k.oxs * 2 * t1 * c + k.ozs * (1 - t1 * t1);
+  const double floorW = kNegligible * cut.d[side] * (1 + t1 * t1);
+  // GGX's tail: branch points at t = 1 +- i alpha; Blinn-Phong's r has C^(2/alpha^2 - 2), a
+  // branch point at t = 1 itself (the cut's distance from it, down to 1e-5).
+  const double eTail = k.model.ndf == FixedRuleNdf::BlinnPhong && k.blinnK > 0 && !capped
+                           ? std::max(1 - t1, 1e-5)
+                           : (1 - t1) + a,
+               len = kTailPanel * t1;
+  double eEnd = INFINITY;
+  if (onMaxQ * eTail > floorW && eTail < kGradeBelow * len) eEnd = eTail;
+  // Fresnel in the GGX tail: o.h ~ mu + 2 alpha sin_o |cos p| / C there, which crosses the
+  // layer o.h ~ eps at C ~ alpha / eps (a 1/C decay of 1 - F beyond it).
+  const double eFT = (1 - t1) + a * (1 + 2 * st * std::abs(c) / std::max(s.eps, 1e-300));
+  if (k.eta > 0 && onMaxQ * eFT > floorW && eFT < kGradeBelow * len) eEnd = std::min(eEnd, eFT);
+  if (!capped && s.sMask > 0 && cut.e2[side] < kGradeBelow * len && onMaxQ * cut.e2[side] > floorW)
+    eEnd = std::min(eEnd, cut.e2[side]);
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
+    UnityBRDF2Azimuth(k, c, pw, t1, eEnd, opt);
+    return;
+  }
+  double eStart = INFINITY;
+  const double eMask = cut.e0[1 - side];
+  if (s.sMask > 0 && cut.tm[1 - side] > 0 && eMask < t1 / 8 && eMask * eMask * k.ozs > kNegligible)
+    eStart = eMask;
+  if (k.eta > 0 && st > 0 && cx > 0) {
+    const double eF = (mu + s.eps) / (2 * a * st * cx);
+    if (eF < t1 / 8) eStart = std::min(eStart, eF);
+  }
+  if (k.model.ndf == FixedRuleNdf::UnityBRDF1 && mu < 2 * kUnitySafeOh &&
+      UnityBRDF1KinkPanels(k, opt, c, pw, t1, eStart, eEnd))
+    return;
+  double split = 0;
+  if (eStart < INFINITY) {
+    split = t1 / 2;
+    GradedPanel(k, c, pw, 0, 1, split, eStart, opt.deficitNodes, opt.nodesPerEFold);
+  }
+  if (eEnd < INFINITY) {
+    const double mid = t1 - len - split;
+    PlainPanel(k, c, pw, split, mid, split > 0 ? opt.deficitNodes : opt.bulkNodes);
+    GradedPanel(k, c, pw, t1, -1, len, eEnd, opt.gradedNodes, opt.nodesPerEFold);
+  } else {
+    PlainPanel(k, c, pw, split, t1 - split,
+               split > 0 ? opt.bulkNodes : opt.bulkNodes + opt.gradedNodes);
+  }
+}
+
+/// The rule: (sumV, sumB) times the prefactor (Fresnel: sumV is E). The outer nodes
+/// (OuterNodes) pick light azimuths, each side of each (SidesOf) gets its inner panels
+/// (SidePanels).
+std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long long* evals) {
+  const double pref = 16 / (Pi * (1 + k.ozs));
+  const RuleScales s = ScalesOf(k);
+  std::vector<double> ys, wys;
+  OuterNodes(k, opt, s.sigma, ys, wys);
   for (size_t io = 0; io < ys.size(); ++io) {
     const double y = ys[io];
-    const double cx = std::sin(sigma * std::sinh(y)), pw = wys[io] * sigma * std::cosh(y);
-    // Both sides (0: cos p > 0, 1: cos p < 0): t at the cut, dt/dt' there, the masking scale e2
-    // at the cut and, for the opposite side, e0 (fixed_rule_dfg.cpp).
-    const double X = st * cx, R = std::sqrt(mu * mu + X * X), RX = R + X;
-    const double iT[2] = {mu * (1 / RX), std::min(RX * invMu, 1e150)};
-    double tm[2], d[2], e2[2], e0[2];
-    for (int side = 0; side < 2; ++side) {
-      const double iu = a * iT[side], m = 1 + a2 * iT[side] * iT[side];
-      const double t1 = 1 / (iu + std::sqrt(iu * iu + 1));
-      const double u = sMask * a * (1 + iT[side] * iT[side]) / (2 * R * m);  // e2 / (dt/dt')
-      tm[side] = side == 1 && mu == 0 ? 0 : t1;
-      d[side] = (1 + t1 * t1) / 2;
-      e2[side] = u * d[side];
-      e0[side] = t1 + u / 2;
-    }
-    for (int side = 0; side < 2; ++side) {
-      const double t1 = std::min(tm[side], k.tCap);
-      const bool capped = t1 < tm[side];  // the cut and its structures lie beyond the NDF's end
-      if (!(t1 > 0)) continue;
-      const double c = side == 0 ? cx : -cx, kOn = 2 * k.oxs * c;
-      const double weight = weightScale * kWeightBound * pref / 4 * pw * t1 * t1 *
-                            (4.0 / 3 * std::abs(kOn) * t1 + 2 * k.ozs);
-      if (weight < kTinyWeight) {
-        PlainPanel(k, c, pw, 0, t1, kTinyNodes);
-        continue;
-      }
-      if (weight < kLightWeight) {
-        PlainPanel(k, c, pw, 0, t1, opt.lightNodes);
-        continue;
-      }
-      const double onMaxQ = k.oxs * 2 * t1 * c + k.ozs * (1 - t1 * t1);
-      const double floorW = kNegligible * d[side] * (1 + t1 * t1);
-      // GGX's tail: branch points at t = 1 +- i alpha; Blinn-Phong's r has C^(2/alpha^2 - 2), a
-      // branch point at t = 1 itself (the cut's distance from it, down to 1e-5).
-      const double eTail = k.model.ndf == FixedRuleNdf::BlinnPhong && k.blinnK > 0 && !capped
-                               ? std::max(1 - t1, 1e-5)
-                               : (1 - t1) + a,
-                   len = kTailPanel * t1;
-      double eEnd = INFINITY;
-      if (onMaxQ * eTail > floorW && eTail < kGradeBelow * len) eEnd = eTail;
-      // Fresnel in the GGX tail: o.h ~ mu + 2 alpha sin_o |cos p| / C there, which crosses the
-      // layer o.h ~ eps at C ~ alpha / eps (a 1/C decay of 1 - F beyond it).
-      const double eFT = (1 - t1) + a * (1 + 2 * st * std::abs(c) / std::max(eps, 1e-300));
-      if (k.eta > 0 && onMaxQ * eFT > floorW && eFT < kGradeBelow * len) eEnd = std::min(eEnd, eFT);
-      if (!capped && sMask > 0 && e2[side] < kGradeBelow * len && onMaxQ * e2[side] > floorW)
-        eEnd = std::min(eEnd, e2[side]);
-      if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
-        UnityBRDF2Azimuth(k, c, pw, t1, eEnd, opt);
-        continue;
-      }
-      double eStart = INFINITY;
-      const double eMask = e0[1 - side];
-      if (sMask > 0 && tm[1 - side] > 0 && eMask < t1 / 8 && eMask * eMask * k.ozs > kNegligible)
-        eStart = eMask;
-      if (k.eta > 0 && st > 0 && cx > 0) {
-        const double eF = (mu + eps) / (2 * a * st * cx);
-        if (eF < t1 / 8) eStart = std::min(eStart, eF);
-      }
-      // unity-brdf1: Unity_SafeNormalize's kink where o.h = sqrt(0.001) / 2 (o.h runs
-      // monotonically from mu at t = 0 to the cut): a panel boundary there, each side graded
-      // towards its own structure.
-      if (k.model.ndf == FixedRuleNdf::UnityBRDF1 && mu < 2 * kUnitySafeOh) {
-        auto ohAt = [&](double t) {
-          const double C = 1 - t * t, aS = a * 2 * t;
-          return (st * aS * c + mu * C) / std::sqrt(aS * aS + C * C);
-        };
-        const double f0 = ohAt(0) - kUnitySafeOh, f1 = ohAt(t1) - kUnitySafeOh;
-        if ((f0 < 0) != (f1 < 0) && f0 != 0 && f1 != 0) {
-          double lo = 0, hi = t1;
-          for (int i = 0; i < 60; ++i) {
-            const double m = (lo + hi) / 2;
-            ((ohAt(m) - kUnitySafeOh < 0) == (f0 < 0) ? lo : hi) = m;
-          }
-          const double tk = (lo + hi) / 2;
-          const int n = opt.bulkNodes + opt.gradedNodes;
-          // Inside (o.h < sqrt(0.001) / 2) D reads n.h scaled by o.h / (sqrt(0.001) / 2): its
-          // peak sits on the kink and falls off within w = max(a^2, sqrt(1e-7)) in n.h^2, a
-          // layer of width w h0 / (2 |d(o.h)/dt|) in t on the inside of tk.
-          const double dt = 1e-7 * t1, slope = std::abs(ohAt(tk + dt) - ohAt(tk - dt)) / (2 * dt);
-          const double ua = k.unityA * k.unityA;
-          const double eK = std::max(
-              std::max(ua, 3.1622776601683794e-4) * kUnitySafeOh / (2 * std::max(slope, 1e-300)),
-              1e-12);
-          const bool insideLow = f0 < 0;  // [0, tk] is inside
-          // [0, tk]
-          if (insideLow) {
-            const double half = tk / 2;
-            if (eStart < half / 8)
-              GradedPanel(k, c, pw, 0, 1, half, eStart, opt.deficitNodes, opt.nodesPerEFold);
-            else
-              PlainPanel(k, c, pw, 0, half, n);
-            GradedPanel(k, c, pw, tk, -1, tk - half, eK, opt.gradedNodes, opt.nodesPerEFold);
-          } else if (eStart < tk / 8) {
-            GradedPanel(k, c, pw, 0, 1, tk, eStart, opt.deficitNodes, opt.nodesPerEFold);
-          } else {
-            PlainPanel(k, c, pw, 0, tk, n);
-          }
-          // [tk, t1]
-          const double rest = t1 - tk;
-          if (!insideLow) {
-            const double half = rest / 2;
-            GradedPanel(k, c, pw, tk, 1, half, eK, opt.gradedNodes, opt.nodesPerEFold);
-            if (eEnd < kGradeBelow * half)
-              GradedPanel(k, c, pw, t1, -1, rest - half, eEnd, opt.gradedNodes, opt.nodesPerEFold);
-            else
-              PlainPanel(k, c, pw, tk + half, rest - half, n);
-          } else if (eEnd < kGradeBelow * rest) {
-            GradedPanel(k, c, pw, t1, -1, rest, eEnd, opt.gradedNodes, opt.nodesPerEFold);
-          } else {
-            PlainPanel(k, c, pw, tk, rest, n);
-          }
-          continue;
-        }
-      }
-      double split = 0;
-      if (eStart < INFINITY) {
-        split = t1 / 2;
-        GradedPanel(k, c, pw, 0, 1, split, eStart, opt.deficitNodes, opt.nodesPerEFold);
-      }
-      if (eEnd < INFINITY) {
-        const double mid = t1 - len - split;
-        PlainPanel(k, c, pw, split, mid, split > 0 ? opt.deficitNodes : opt.bulkNodes);
-        GradedPanel(k, c, pw, t1, -1, len, eEnd, opt.gradedNodes, opt.nodesPerEFold);
-      } else {
-        PlainPanel(k, c, pw, split, t1 - split,
-                   split > 0 ? opt.bulkNodes : opt.bulkNodes + opt.gradedNodes);
-      }
-    }
+    const double cx = std::sin(s.sigma * std::sinh(y)), pw = wys[io] * s.sigma * std::cosh(y);
+    const CutSides cut = SidesOf(k, s.sMask, cx);
+    for (int side = 0; side < 2; ++side) SidePanels(k, opt, s, cut, side, cx, pw, pref);
   }
   if (evals) *evals += k.count;
   return {pref * (k.sumV - k.sumB), pref * k.sumB};
@@ -562,11 +608,11 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   k.a = std::max(alpha, MinAlpha);
   if (model.ndf == FixedRuleNdf::UnityBRDF1) {
     k.unityA = std::max(alpha, 0.002);
-    k.a = std::max(k.unityA, 0.01778279410038923);  // alpha_q: UnityBRDF1::Sampler
+    k.a = std::max(k.unityA, kUnityBRDF1SamplerAlpha);  // alpha_q: UnityBRDF1::Sampler
   }
   if (model.ndf == FixedRuleNdf::UnityBRDF2) {
     k.unityA = std::max(alpha, 0.0);
-    k.a = std::max(k.unityA, 0.0031622776601683794);  // alpha_q: UnityBRDF2::Sampler
+    k.a = std::max(k.unityA, kUnityBRDF2SamplerAlpha);  // alpha_q: UnityBRDF2::Sampler
   }
   k.st = std::sqrt(std::max(0.0, 1 - k.mu * k.mu));
   const double L = std::sqrt(k.a * k.a * k.st * k.st + k.mu * k.mu);

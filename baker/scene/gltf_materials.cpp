@@ -41,6 +41,19 @@ class MaterialReader {
   void Read();
 
  private:
+  /// The base lobe's roughness values, how they were read, and whether the material is fully
+  /// metallic (no dielectric layer at all).
+  struct BaseLobe {
+    ValueRange rough;
+    std::string roughWhat;
+    bool fullyMetallic = false;
+  };
+  bool ReadUnlit(const std::vector<std::string>& present);
+  BaseLobe ReadBaseLobe();
+  void ReadClearcoat();
+  void ReadDielectricLayer(const BaseLobe& b);
+  void ReadSpecularAndSheen(const BaseLobe& b);
+  void ReadTablelessExtensions();
   const Json* Ext(const std::string& name) const {
     const Json* ext = JsonReader::Find(m_, "extensions");
     const Json* e = ext ? JsonReader::Find(*ext, name) : nullptr;
@@ -89,14 +102,9 @@ class MaterialReader {
   Scene& scene_;
 };
 
-void MaterialReader::Read() {
-  r_.Object(m_, at_);
-  const Json* extensions = JsonReader::Find(m_, "extensions");
-  if (extensions) r_.Object(*extensions, PointerChild(at_, "extensions"));
-  std::vector<std::string> present;
-  if (extensions)
-    for (auto it = extensions->begin(); it != extensions->end(); ++it) present.push_back(it.key());
-
+/// Notes on the extensions kiln does not know; for an unlit material the notes that it needs
+/// no table, and true (nothing more to read).
+bool MaterialReader::ReadUnlit(const std::vector<std::string>& present) {
   for (const std::string& name : present)
     if (!IsKnownMaterialExtension(name))
       Note(Kind::Unknown, name,
@@ -109,34 +117,42 @@ void MaterialReader::Read() {
     for (const std::string& name : present)
       if (name != "KHR_materials_unlit" && IsKnownMaterialExtension(name))
         Note(Kind::NoEffect, name, "ignored on an unlit material");
-    return;
+    return true;
   }
 
-  // The base GGX lobe: its roughness values and whether a dielectric layer exists at all.
-  ValueRange rough;
-  std::string roughWhat;
-  bool fullyMetallic = false;
+  return false;
+}
+
+/// The base GGX lobe (metallic-roughness or specular-glossiness): its tables and what the
+/// layers above it need of it.
+MaterialReader::BaseLobe MaterialReader::ReadBaseLobe() {
+  BaseLobe b;
   if (const Json* sg = Ext("KHR_materials_pbrSpecularGlossiness")) {
     std::string at = ExtAt("KHR_materials_pbrSpecularGlossiness"), what;
     ValueRange gloss = Factor(*sg, at, "glossinessFactor", 1, "specularGlossinessTexture", what);
-    rough = gloss.whole ? gloss : ValueRange::Between(1 - gloss.hi, 1 - gloss.lo);
-    roughWhat = "roughness 1 - glossiness (" + what + ")";
+    b.rough = gloss.whole ? gloss : ValueRange::Between(1 - gloss.hi, 1 - gloss.lo);
+    b.roughWhat = "roughness 1 - glossiness (" + what + ")";
   } else {
     static const Json kDefaults = Json::object();
     const Json* pbr = JsonReader::Find(m_, "pbrMetallicRoughness");
     std::string at = PointerChild(at_, "pbrMetallicRoughness");
     if (pbr) r_.Object(*pbr, at);
     const Json& p = pbr ? *pbr : kDefaults;
-    rough = Factor(p, at, "roughnessFactor", 1, "metallicRoughnessTexture", roughWhat);
+    b.rough = Factor(p, at, "roughnessFactor", 1, "metallicRoughnessTexture", b.roughWhat);
     std::string metalWhat;
     ValueRange metal = Factor(p, at, "metallicFactor", 1, "metallicRoughnessTexture", metalWhat);
-    fullyMetallic = metal.Single() && metal.lo == 1;
+    b.fullyMetallic = metal.Single() && metal.lo == 1;
   }
-  Need(Quantity::Dfg, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
-  Need(Quantity::Albedo, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
-  Need(Quantity::AlbedoAvg, {{"roughness", rough}}, "base GGX lobe, " + roughWhat);
-  if (!fullyMetallic) Note(Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly");
+  Need(Quantity::Dfg, {{"roughness", b.rough}}, "base GGX lobe, " + b.roughWhat);
+  Need(Quantity::Albedo, {{"roughness", b.rough}}, "base GGX lobe, " + b.roughWhat);
+  Need(Quantity::AlbedoAvg, {{"roughness", b.rough}}, "base GGX lobe, " + b.roughWhat);
+  if (!b.fullyMetallic) Note(Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly");
 
+  return b;
+}
+
+/// KHR_materials_clearcoat: the coat's GGX lobe.
+void MaterialReader::ReadClearcoat() {
   if (const Json* cc = Ext("KHR_materials_clearcoat")) {
     std::string at = ExtAt("KHR_materials_clearcoat"), what;
     ValueRange coat = Factor(*cc, at, "clearcoatFactor", 0, "clearcoatTexture", what);
@@ -149,8 +165,14 @@ void MaterialReader::Read() {
       Need(Quantity::Dfg, {{"roughness", cr}}, "clearcoat GGX lobe, " + rWhat);
     }
   }
+}
 
-  // The dielectric layer: IOR, transmission, volume, dispersion.
+/// The dielectric layer (KHR_materials_ior, _transmission, _volume, _dispersion) over the base
+/// lobe `b`: its Fresnel albedo and, when it transmits, the rough glass interface's tables.
+void MaterialReader::ReadDielectricLayer(const BaseLobe& b) {
+  const ValueRange& rough = b.rough;
+  const std::string& roughWhat = b.roughWhat;
+  const bool fullyMetallic = b.fullyMetallic;
   const Json* iorExt = Ext("KHR_materials_ior");
   const Json* tr = Ext("KHR_materials_transmission");
   const Json* vol = Ext("KHR_materials_volume");
@@ -247,7 +269,11 @@ void MaterialReader::Read() {
              "attenuation is Beer-Lambert (closed form); refraction uses the dielectric table");
     }
   }
+}
 
+/// KHR_materials_specular (over the base lobe `b`) and KHR_materials_sheen.
+void MaterialReader::ReadSpecularAndSheen(const BaseLobe& b) {
+  const bool fullyMetallic = b.fullyMetallic;
   if (Ext("KHR_materials_specular")) {
     if (fullyMetallic)
       Note(Kind::NoEffect, "KHR_materials_specular",
@@ -291,6 +317,11 @@ void MaterialReader::Read() {
                 "sheen albedo scaling (charlie-smith E; its dfg is the same integral), " + what);
     }
   }
+}
+
+/// The extensions that need no table of their own: iridescence, anisotropy, emissive
+/// strength, diffuse transmission.
+void MaterialReader::ReadTablelessExtensions() {
   if (const Json* ir = Ext("KHR_materials_iridescence")) {
     std::string what;
     ValueRange f = Factor(*ir, ExtAt("KHR_materials_iridescence"), "iridescenceFactor", 0,
@@ -323,6 +354,22 @@ void MaterialReader::Read() {
       Note(Kind::NoTable, "KHR_materials_diffuse_transmission",
            "Lambertian transmission: its albedo is the color exactly");
   }
+}
+
+void MaterialReader::Read() {
+  r_.Object(m_, at_);
+  const Json* extensions = JsonReader::Find(m_, "extensions");
+  if (extensions) r_.Object(*extensions, PointerChild(at_, "extensions"));
+  std::vector<std::string> present;
+  if (extensions)
+    for (auto it = extensions->begin(); it != extensions->end(); ++it) present.push_back(it.key());
+
+  if (ReadUnlit(present)) return;
+  const BaseLobe b = ReadBaseLobe();
+  ReadClearcoat();
+  ReadDielectricLayer(b);
+  ReadSpecularAndSheen(b);
+  ReadTablelessExtensions();
 }
 
 }  // namespace
