@@ -138,7 +138,7 @@ void SizeEngineAxes(TableSpec& spec, int muN, int rN, bool widen) {
     a.lo = 0;
     if (!quantity_detail::IsSheen(spec.model)) continue;
     if (a.name == "roughness") a.lo = kSheenTableMinRoughness;
-    if (a.name == "mu" && spec.model == "charlie-smith") a.lo = kCharlieSmithMinMu;
+    if (a.name == "mu") a.lo = DiffuseMuAxis(spec.model).lo;  // charlie-smith's kCharlieSmithMinMu
   }
 }
 
