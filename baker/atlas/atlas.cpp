@@ -108,7 +108,8 @@ double AtlasAlbedo(const AtlasSide& side, double mu, double r, double tol, std::
   const bool onlyF0 = p.f0 && !p.eta && !p.rho && !p.k && !p.rs && !p.nu && !p.nv;
   const bool onlyEta = p.eta && !p.f0 && !p.rho && !p.k && !p.rs && !p.nu && !p.nv;
   const bool none = !p.f0 && !p.eta && !p.rho && !p.k && !p.rs && !p.nu && !p.nv;
-  if (onlyEta && side.model == "ggx" && *p.eta >= 1) {
+  const ModelInfo* info = FindModel(side.model);
+  if (onlyEta && info && info->fresnelTables && *p.eta >= 1) {
     TableSpec spec = SideSpec(Quantity::FresnelAlbedo, side, p, tol);
     if (method) *method = spec.Method();
     return factor * EvaluateSpec(spec, x, stats)[0];

@@ -13,7 +13,7 @@ namespace kiln::cli {
 namespace {
 
 void PrintModels() {
-  std::vector<ModelInfo> all = AllModels();
+  std::vector<ModelInfo> all(AllModels().begin(), AllModels().end());
   all.insert(all.end(), AllBsdfModels().begin(), AllBsdfModels().end());
   for (const ModelInfo& m : all) {
     std::string line = m.id;

@@ -53,6 +53,7 @@
 
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
+#include "baker/models/registry.h"
 #include "baker/models/roughness.h"
 #include "baker/models/unity.h"
 
@@ -680,23 +681,33 @@ const MicrofacetRuleOptions kSearchFresnel = {16, 14, 6, 2, 6, 6};
 
 }  // namespace
 
+bool FixedRuleModelFor(const ModelInfo& model, FixedRuleModel* out) {
+  if (model.rule != RuleFamily::Microfacet) return false;
+  FixedRuleNdf ndf = FixedRuleNdf::GGX;
+  switch (model.microfacetNdf) {
+    case MicrofacetNdf::GGX:
+      ndf = FixedRuleNdf::GGX;
+      break;
+    case MicrofacetNdf::Beckmann:
+      ndf = FixedRuleNdf::Beckmann;
+      break;
+    case MicrofacetNdf::BlinnPhong:
+      ndf = FixedRuleNdf::BlinnPhong;
+      break;
+    case MicrofacetNdf::UnityBRDF1:
+      ndf = FixedRuleNdf::UnityBRDF1;
+      break;
+    case MicrofacetNdf::UnityBRDF2:
+      ndf = FixedRuleNdf::UnityBRDF2;
+      break;
+  }
+  if (out) *out = FixedRuleModel{ndf, model.separableSmith};
+  return true;
+}
+
 bool FixedRuleModelFor(const char* model, FixedRuleModel* out) {
-  static const struct {
-    const char* name;
-    FixedRuleModel m;
-  } kModels[] = {{"ggx", {FixedRuleNdf::GGX, false}},
-                 {"ggx-separable", {FixedRuleNdf::GGX, true}},
-                 {"beckmann", {FixedRuleNdf::Beckmann, false}},
-                 {"beckmann-separable", {FixedRuleNdf::Beckmann, true}},
-                 {"blinn-phong", {FixedRuleNdf::BlinnPhong, false}},
-                 {"unity-brdf1", {FixedRuleNdf::UnityBRDF1, false}},
-                 {"unity-brdf2", {FixedRuleNdf::UnityBRDF2, false}}};
-  for (const auto& e : kModels)
-    if (std::strcmp(e.name, model) == 0) {
-      if (out) *out = e.m;
-      return true;
-    }
-  return false;
+  const ModelInfo* m = FindModel(model);
+  return m && FixedRuleModelFor(*m, out);
 }
 
 MicrofacetRuleOptions TunedMicrofacetRuleOptions(const FixedRuleModel& model) {

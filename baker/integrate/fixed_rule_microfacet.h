@@ -33,7 +33,12 @@ struct FixedRuleModel {
   bool separable = false;
 };
 
-/// The fixed rule's model for a registry model name, or false when it has none.
+struct ModelInfo;
+
+/// The fixed rule's model for a model descriptor (its microfacetNdf and separableSmith), or
+/// false when the model's rule family is not Microfacet.
+bool FixedRuleModelFor(const ModelInfo& model, FixedRuleModel* out);
+/// The same for a model id (looked up in the registry); false for an unknown id.
 bool FixedRuleModelFor(const char* model, FixedRuleModel* out);
 
 /// Node counts of the microfacet fixed rule (the roles of FixedRuleOptions in fixed_rule_dfg.h).

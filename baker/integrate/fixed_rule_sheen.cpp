@@ -174,10 +174,15 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
 
 }  // namespace
 
-SheenRuleOptions SheenRuleOptionsFor(const std::string& model, bool search) {
-  if (model == "charlie-smith")
+SheenRuleOptions SheenRuleOptionsFor(SheenRule rule, bool search) {
+  if (rule == SheenRule::FittedSmith)
     return search ? kCharlieSmithSearchRuleOptions : kCharlieSmithRuleOptions;
   return search ? kSearchSheenRuleOptions : SheenRuleOptions{};
+}
+
+SheenRuleOptions SheenRuleOptionsFor(const std::string& model, bool search) {
+  const ModelInfo* m = FindModel(model);
+  return SheenRuleOptionsFor(m ? m->sheenRule : SheenRule::Neubelt, search);
 }
 
 bool IsSheenModel(const AnyModel& model) {

@@ -67,6 +67,8 @@ constexpr double kCharlieSmithSearchCharge = 1.25;
 /// The options of the bake rule (search = false) or the search's rule (search = true) for a
 /// sheen model id ("charlie-smith" takes its own; the others the shared defaults).
 SheenRuleOptions SheenRuleOptionsFor(const std::string& model, bool search);
+/// The same for a sheen model's node counts as its descriptor names them (ModelInfo::sheenRule).
+SheenRuleOptions SheenRuleOptionsFor(SheenRule rule, bool search);
 
 /// The bake rule's evaluations per search-rule evaluation, rounded down from the measured 1.22
 /// (charlie-smith) to 1.27 so that the charge never overstates the saving

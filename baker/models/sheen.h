@@ -34,12 +34,6 @@ constexpr double kSheenTableMinRoughness = kCharlieMinRoughness;
 /// mu ~ 1e-8..1e-5 (docs/models.md "Sheen"), a layer of the fit no renderer looks up.
 constexpr double kCharlieSmithMinMu = 1e-4;
 
-/// True when `model` is the id of a sheen lobe (charlie, charlie-smith, ashikhmin-velvet):
-/// light-space integrals, no smooth limit.
-inline bool IsSheen(const std::string& model) {
-  return model == "charlie" || model == "charlie-smith" || model == "ashikhmin-velvet";
-}
-
 /// Neubelt & Pettineo 2013 visibility V = 1 / (4 (mu_l + mu_o - mu_l mu_o)), as Filament's
 /// V_Neubelt (no clamp). mu_o, mu_l in [0, 1], not both 0.
 inline double NeubeltVisibility(double mu_o, double mu_l) {

@@ -123,6 +123,10 @@ struct UnityBRDF1 {
   int ThetaKinks(double, double*) const { return 0; }
 };
 
+/// Where unity-brdf2's albedo E(mu) has its kink, sqrt(0.1) (Unity's max(0.1, LdotH^2) at the
+/// mirror, LdotH = mu): the constant split point of that table's mu axis.
+constexpr double kUnityBRDF2MuKink = kUnityBRDF2LhKink;
+
 /// BRDF2_Unity_PBS's specular lobe (UNITY_BRDF_GGX branch, linear colour space), perceptual
 /// roughness r, a = r^2 (no minimum):
 ///   d = n.h^2 (a^2 - 1) + 1.00001

@@ -90,12 +90,11 @@ std::string FixedRuleMethod(const TableSpec& spec) {
   return AverageFixedRuleMethod(AlbedoSpecFor(spec));
 }
 
-/// The rule's version: the Charlie pair's averages take their own mu panels (AverageFixedRule):
-/// "3"; the others as their E's (MicrofacetFixedRuleVersion).
+/// The rule's version: the model's own (ModelInfo::averageRuleVersion: the Charlie pair's mu
+/// panels "3", unity-brdf2's panels about E's kink), else its E's (MicrofacetFixedRuleVersion).
 const char* AvgFixedRuleVersion(const TableSpec& spec) {
-  if (spec.model == "charlie" || spec.model == "charlie-smith") return "3";
-  // unity-brdf2: panels graded about E's kink at mu = sqrt(0.1) (AverageFixedRule).
-  if (spec.model == "unity-brdf2") return "unity-brdf2-kink-1";
+  const ModelInfo* m = ModelOf(spec);
+  if (m && m->averageRuleVersion) return m->averageRuleVersion;
   return MicrofacetFixedRuleVersion(spec);
 }
 

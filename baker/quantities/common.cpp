@@ -103,6 +103,13 @@ double Param(const TableSpec& spec, const char* key, double def) {
   return it == spec.params.end() ? def : it->second;
 }
 
+const ModelInfo* ModelOf(const TableSpec& spec) { return FindModel(spec.model); }
+
+RuleFamily RuleOf(const TableSpec& spec) {
+  const ModelInfo* m = ModelOf(spec);
+  return m ? m->rule : RuleFamily::None;
+}
+
 std::string ClosedFormMethod() { return "closed form (exact evaluation at each node)"; }
 
 std::string AdaptiveMethod(bool specular, bool averaged, double tol) {
@@ -115,9 +122,31 @@ std::string AdaptiveMethod(bool specular, bool averaged, double tol) {
   return base + " to " + Full17(tol) + " abs";
 }
 
+namespace {
+
+/// The dfg kernel of a Microfacet-family model (Generic for any other).
+MicrofacetKernel KernelOf(const TableSpec& spec) {
+  const ModelInfo* m = ModelOf(spec);
+  return m && m->rule == RuleFamily::Microfacet ? m->kernel : MicrofacetKernel::Generic;
+}
+
+/// A mu x roughness table.
+bool OverMuAndRoughness(const TableSpec& spec) {
+  return spec.axes.size() == 2 && spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
+}
+
+/// The microfacet fixed rule's model of a Microfacet-family spec.
+FixedRuleModel RuleModelOf(const TableSpec& spec) {
+  FixedRuleModel m;
+  if (const ModelInfo* info = ModelOf(spec)) FixedRuleModelFor(*info, &m);
+  return m;
+}
+
+}  // namespace
+
 bool GgxFixedRuleApplies(const TableSpec& spec) {
-  return spec.model == "ggx" && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
-         spec.axes[1].name == "roughness";
+  return KernelOf(spec) == MicrofacetKernel::GgxHeightCorrelated && spec.axes.size() == 2 &&
+         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
 }
 
 std::array<double, 2> GgxFixedRuleAt(const double* x, IntegrationStats& stats) {
@@ -145,24 +174,20 @@ std::string GgxFixedRuleMethod(const TableSpec&) {
 const char* MicrofacetFixedRuleVersion(const TableSpec& spec) {
   // 3: ggx-separable by the GGX kernel; beckmann, beckmann-separable, blinn-phong at fewer nodes;
   // charlie-smith by its own node counts (kCharlieSmithRuleOptions).
-  return spec.model == "ggx-separable" || spec.model == "beckmann" ||
-                 spec.model == "beckmann-separable" || spec.model == "blinn-phong" ||
-                 spec.model == "charlie-smith"
-             ? "3"
-             : "2";
+  const ModelInfo* m = ModelOf(spec);
+  return m ? m->fixedRuleVersion : "2";
 }
 
 bool MicrofacetFixedRuleApplies(const TableSpec& spec) {
-  return FixedRuleModelFor(spec.model.c_str(), nullptr) && spec.axes.size() == 2 &&
-         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
+  return RuleOf(spec) == RuleFamily::Microfacet && OverMuAndRoughness(spec);
 }
 
 std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double* x,
                                             IntegrationStats& stats) {
-  if (spec.model == "ggx") return GgxFixedRuleAt(x, stats);
-  if (spec.model == "ggx-separable") return GgxSeparableFixedRuleAt(x, stats);
-  FixedRuleModel m;
-  FixedRuleModelFor(spec.model.c_str(), &m);
+  const MicrofacetKernel kernel = KernelOf(spec);
+  if (kernel == MicrofacetKernel::GgxHeightCorrelated) return GgxFixedRuleAt(x, stats);
+  if (kernel == MicrofacetKernel::GgxSeparable) return GgxSeparableFixedRuleAt(x, stats);
+  const FixedRuleModel m = RuleModelOf(spec);
   // alpha as MakeModel derives it from the roughness clamped to the model's range [0, 1].
   double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
   std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, Clamp(x[0], 0.0, 1.0), alpha, &stats.evals);
@@ -172,14 +197,15 @@ std::array<double, 2> MicrofacetFixedRuleAt(const TableSpec& spec, const double*
 
 std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double* x,
                                              IntegrationStats& stats) {
-  if (spec.model == "ggx" || spec.model == "ggx-separable") {  // the kernel: the bake's rule
-    std::array<double, 2> ab =
-        spec.model == "ggx" ? GgxFixedRuleAt(x, stats) : GgxSeparableFixedRuleAt(x, stats);
+  const MicrofacetKernel kernel = KernelOf(spec);
+  if (kernel != MicrofacetKernel::Generic) {  // the kernel: the bake's rule
+    std::array<double, 2> ab = kernel == MicrofacetKernel::GgxHeightCorrelated
+                                   ? GgxFixedRuleAt(x, stats)
+                                   : GgxSeparableFixedRuleAt(x, stats);
     stats.errorEstimate = 0;
     return ab;
   }
-  FixedRuleModel m;
-  FixedRuleModelFor(spec.model.c_str(), &m);
+  const FixedRuleModel m = RuleModelOf(spec);
   double alpha = std::max(AlphaFromPerceptual(Clamp(x[1], 0.0, 1.0)), MinAlpha);
   long long evals = 0;
   std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, Clamp(x[0], 0.0, 1.0), alpha,
@@ -190,8 +216,9 @@ std::array<double, 2> MicrofacetSearchRuleAt(const TableSpec& spec, const double
 }
 
 std::string MicrofacetFixedRuleMethod(const TableSpec& spec) {
-  if (spec.model == "ggx") return GgxFixedRuleMethod(spec);
-  if (spec.model == "ggx-separable")
+  const MicrofacetKernel kernel = KernelOf(spec);
+  if (kernel == MicrofacetKernel::GgxHeightCorrelated) return GgxFixedRuleMethod(spec);
+  if (kernel == MicrofacetKernel::GgxSeparable)
     return "visible-normal space (Heitz 2018), separable Smith as G1(l): fixed Gauss-Legendre "
            "rule, panels placed at the integrand's analytic scales, exact horizon cut; declared "
            "error " +
@@ -220,7 +247,9 @@ std::array<double, 3> FresnelAlbedoPoint(const TableSpec& spec, const double* x)
 }  // namespace
 
 bool FresnelAlbedoFixedRuleApplies(const TableSpec& spec) {
-  if (spec.model != "ggx") return false;
+  // The GGX kernel with exact Fresnel: the models whose exact-Fresnel albedo kinds are baked.
+  const ModelInfo* m = ModelOf(spec);
+  if (!m || !m->fresnelTables) return false;
   bool hasMu = false, etaAxis = false;
   for (const AxisSpec& a : spec.axes) {
     if (a.name == "mu") hasMu = true;
@@ -278,9 +307,8 @@ std::string FresnelAlbedoFixedRuleMethod(const TableSpec& spec) {
 }
 
 bool DiffuseFixedRuleApplies(const TableSpec& spec) {
-  const ModelInfo* m = FindModel(spec.model);
-  return m && !m->specular() && !IsSheen(spec.model) && spec.axes.size() == 2 &&
-         spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
+  // Only a model that names the diffuse rule: never one chosen by what it is not.
+  return RuleOf(spec) == RuleFamily::Diffuse && OverMuAndRoughness(spec);
 }
 
 std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
@@ -311,14 +339,18 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec) {
 }
 
 bool SheenFixedRuleApplies(const TableSpec& spec) {
-  return IsSheen(spec.model) && spec.axes.size() == 2 && spec.axes[0].name == "mu" &&
-         spec.axes[1].name == "roughness";
+  return RuleOf(spec) == RuleFamily::Sheen && OverMuAndRoughness(spec);
+}
+
+SheenRule SheenRuleOf(const TableSpec& spec) {
+  const ModelInfo* m = ModelOf(spec);
+  return m ? m->sheenRule : SheenRule::Neubelt;
 }
 
 std::vector<double> SheenFixedRuleAt(const TableSpec& spec, const double* x,
                                      IntegrationStats& stats) {
   double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0],
-                                  SheenRuleOptionsFor(spec.model, false), &stats.evals);
+                                  SheenRuleOptionsFor(SheenRuleOf(spec), false), &stats.evals);
   stats.errorEstimate = kSheenRuleBound;
   return {e};
 }
@@ -327,16 +359,16 @@ std::vector<double> SheenSearchRuleAt(const TableSpec& spec, const double* x,
                                       IntegrationStats& stats) {
   long long evals = 0;
   double e = FixedRuleSheenAlbedo(ModelInDomain(spec.model, x[1]), x[0],
-                                  SheenRuleOptionsFor(spec.model, true), &evals);
+                                  SheenRuleOptionsFor(SheenRuleOf(spec), true), &evals);
   const double charge =
-      spec.model == "charlie-smith" ? kCharlieSmithSearchCharge : kSearchSheenCharge;
+      SheenRuleOf(spec) == SheenRule::FittedSmith ? kCharlieSmithSearchCharge : kSearchSheenCharge;
   stats.evals += std::llround(static_cast<double>(evals) * charge);
   stats.errorEstimate = kSearchRuleBound;
   return {e};
 }
 
 std::string SheenFixedRuleMethod(const TableSpec& spec) {
-  SheenRuleOptions opt = SheenRuleOptionsFor(spec.model, false);
+  SheenRuleOptions opt = SheenRuleOptionsFor(SheenRuleOf(spec), false);
   return "light space: fixed tensor Gauss-Legendre rule over ln(mu_l + c) x ln(pi - phi + c), "
          "c = max(mu_o, 1e-7) (" +
          std::to_string(opt.tNodes) + " x " + std::to_string(opt.sNodes) +
@@ -379,16 +411,14 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   // 2.5e-7 for charlie-smith, of 20 nodes per panel from 1e-4), and charlie-smith's E has
   // Lambda(mu)'s C1 switch at mu = 1/2: a panel boundary there (SheenAverageKink).
   const int nodes = search ? kSearchAverageNodes : kCosineAverageNodes;
-  // unity-brdf2: E's kink at mu = sqrt(0.1) (max(0.1, LdotH^2)), smoothed over ~alpha: panels
-  // graded on both sides of it from alpha.
-  const bool unity2 = albedo.model == "unity-brdf2";
+  // A specular model's kink of E (ModelInfo::averageKink, unity-brdf2's at mu = sqrt(0.1)),
+  // smoothed over ~alpha: panels graded on both sides of it from alpha.
+  const ModelInfo& m = Info(albedo.model);
+  const bool kink = m.averageKink > 0;
   std::vector<double> r =
-      IsSpecular(albedo.model)
-          ? FixedCosineAverageChannels(e, layer, nodes, unity2 ? kUnityBRDF2LhKink : -1,
-                                       unity2 ? layer : 0)
-      : IsSheen(albedo.model)
-          ? FixedCosineAverageChannels(e, albedo.model == "ashikhmin-velvet" ? 1e-4 : 1e-2, nodes,
-                                       albedo.model == "charlie-smith" ? 0.5 : -1)
+      m.specular() ? FixedCosineAverageChannels(e, layer, nodes, m.averageKink, kink ? layer : 0)
+      : m.rule == RuleFamily::Sheen
+          ? FixedCosineAverageChannels(e, m.averageSheenLayer, nodes, m.averageKink)
           : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
   return r;

@@ -20,6 +20,10 @@ TableSpec Shell(Quantity q, const std::string& name, const std::string& model,
 
 /// The model's info; throws std::invalid_argument("unknown model '...'") when there is none.
 const ModelInfo& Info(const std::string& model);
+/// The descriptor of the spec's model, or nullptr ("none", an unknown id).
+const ModelInfo* ModelOf(const TableSpec& spec);
+/// The fixed-rule family the spec's model names (None for no model or an unknown one).
+RuleFamily RuleOf(const TableSpec& spec);
 
 /// True when `model` is known and has a rho^2 term (its tables get a second channel).
 bool HasRho2(const std::string& model);
@@ -126,6 +130,8 @@ std::string DiffuseFixedRuleMethod(const TableSpec& spec);
 /// True when the sheen fixed rule (integrate/fixed_rule_sheen.h) applies: a sheen model (IsSheen),
 /// axes (mu, roughness).
 bool SheenFixedRuleApplies(const TableSpec& spec);
+/// The sheen rule's node counts the spec's model names (Neubelt for a non-sheen one).
+SheenRule SheenRuleOf(const TableSpec& spec);
 
 /// E(mu) of the sheen fixed rule at x = (mu, roughness) (cosine included, F = 1; also the cloth
 /// DFG); sets stats.errorEstimate to kSheenRuleBound. A roughness outside the model's domain

@@ -95,7 +95,7 @@ bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& ou
 std::string Method(const TableSpec& spec) { return AdaptiveMethod(true, false, spec.tol); }
 
 std::string SceneProblem(const ModelInfo& m) {
-  return m.id == "ggx"
+  return m.fresnelTables
              ? ""
              : std::string(QuantityName(Quantity::FresnelAlbedo)) + " is baked for ggx only";
 }

@@ -163,7 +163,9 @@ struct Rows {
 };
 
 bool GgxDfgSupports(const TableSpec& spec) {
-  return spec.model == "ggx" && AxesNamed(spec, {"mu", "roughness"});
+  const ModelInfo* m = FindModel(spec.model);
+  return m && m->kernel == MicrofacetKernel::GgxHeightCorrelated &&
+         AxesNamed(spec, {"mu", "roughness"});
 }
 
 MonteCarloRows GgxDfgRows(const TableSpec& spec, const PointSet& points) {

@@ -14,10 +14,6 @@ namespace kiln {
 struct CatalogueOptions;
 struct IntegrationStats;
 
-/// Where unity-brdf2's albedo E(mu) has its kink, sqrt(0.1) (Unity's max(0.1, LdotH^2) at the
-/// mirror, LdotH = mu): the constant split point of that table's mu axis.
-constexpr double kUnityBRDF2MuKink = kUnityBRDF2LhKink;
-
 /// The models whose albedo tables are baked on request.
 const std::vector<std::string>& OnRequestAlbedoModels();
 

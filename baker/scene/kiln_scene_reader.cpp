@@ -101,7 +101,7 @@ void ReadMaterial(const Json& m, const std::string& at, const JsonReader& r, Sce
   bool conductor = values.count("k") && (values["k"].whole || values["k"].hi > 0);
 
   if (!kindsGiven) {
-    if (id == "lambert") {
+    if (info->albedoIsRho) {
       scene.notes.push_back({Kind::NoTable, "Lambert diffuse", "its albedo is rho exactly", label});
     } else if (info->specular()) {
       kinds = {Quantity::Dfg, Quantity::Albedo, Quantity::AlbedoAvg};

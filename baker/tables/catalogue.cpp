@@ -30,32 +30,37 @@ void Resize(TableSpec& spec, int size) {
 
 }  // namespace
 
+namespace {
+
+/// The ids of the models in catalogue group `group`, in registry order.
+std::vector<std::string> GroupIds(CatalogueGroup group) {
+  std::vector<std::string> ids;
+  for (const ModelInfo& m : AllModels())
+    if (m.catalogue == group) ids.push_back(m.id);
+  return ids;
+}
+
+/// The axis `name` a model states for itself.
+AxisSpec FromDefault(const char* name, const AxisDefault& d) {
+  AxisSpec a{name, d.lo, d.hi, d.size, d.warp};
+  a.split = d.split;
+  return a;
+}
+
+}  // namespace
+
 const std::vector<std::string>& CatalogueMicrofacetModels() {
-  static const std::vector<std::string> models = {"ggx", "ggx-separable", "beckmann",
-                                                  "beckmann-separable", "blinn-phong"};
+  static const std::vector<std::string> models = GroupIds(CatalogueGroup::Microfacet);
   return models;
 }
 
 const std::vector<std::string>& CatalogueDiffuseModels() {
-  static const std::vector<std::string> models = {"lambert",
-                                                  "burley",
-                                                  "frostbite",
-                                                  "oren-nayar",
-                                                  "oren-nayar-qualitative",
-                                                  "oren-nayar-qualitative-ir",
-                                                  "fujii",
-                                                  "fujii-normalized",
-                                                  "gotanda-fresnel",
-                                                  "gotanda-ggx",
-                                                  "hammon",
-                                                  "shirley",
-                                                  "ashikhmin-shirley-diffuse",
-                                                  "triace-lambert"};
+  static const std::vector<std::string> models = GroupIds(CatalogueGroup::Diffuse);
   return models;
 }
 
 const std::vector<std::string>& CatalogueSheenModels() {
-  static const std::vector<std::string> models = {"charlie", "charlie-smith", "ashikhmin-velvet"};
+  static const std::vector<std::string> models = GroupIds(CatalogueGroup::Sheen);
   return models;
 }
 
@@ -73,14 +78,6 @@ bool SheenTableInDefaultCatalogue(const std::string& name) {
     if (name == n) return true;
   return false;
 }
-
-namespace {
-bool IsCatalogueSheen(const std::string& model) {
-  for (const std::string& m : CatalogueSheenModels())
-    if (m == model) return true;
-  return false;
-}
-}  // namespace
 
 // Sizes and warps (docs/catalogue.md gives the measured lookup errors; each quantity's
 // descriptor in baker/quantities/ states its own axes):
@@ -100,46 +97,23 @@ bool IsCatalogueSheen(const std::string& model) {
 /// albedo has a square-root point at mu = 1 (sin(theta_o) terms): angle, nodes uniform in theta_o
 /// (measured: oren-nayar-qualitative 8.3e-3 with sqrt, 3.5e-4 with angle; the polynomial models
 /// err 2-10x more with angle than with sqrt).
+///
+/// Sheen: E(mu) has a layer of width ~ r at mu = 0 (the lobe at grazing) and, inside it, the
+/// mu ln mu of the Neubelt pole (charlie, velvet): root4, each lobe's node count and start in its
+/// descriptor (models/sheen_models.cpp, with the trial bakes that chose them). Any model may
+/// state its own (ModelInfo::muAxis).
 AxisSpec DiffuseMuAxis(const std::string& model) {
-  // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the lobe at grazing) and, inside it, the
-  // mu ln mu of the Neubelt pole (charlie, velvet): root4. The Charlie pair's layer is steepest
-  // (E(0) = 8.9 at r = 0.045): 192 nodes keep the lookup error below 1e-3 (measured in trial
-  // bakes with 128 log-warped roughness nodes: 1.7e-3 with 128, 9.9e-4 with 192); the velvet
-  // 48 (7.7e-4 with 48 x 48). charlie-smith starts at mu = 1e-4, Filament's MIN_N_DOT_V: below
-  // it the fitted Lambda's clamp V <= 1 makes E jump (1.63 at mu = 1e-8, 0.82 at 1e-6, 0.59 at
-  // 1e-4 for r = 0.386: `kiln integrate albedo --model charlie-smith --mu M --roughness 0.386`),
-  // a layer of the fit no renderer looks up; a lookup below reads the edge. Without the
-  // grazing peak of E(0) its grid can be smaller: 112 mu x 96 roughness nodes declare 7.7e-4
-  // (trial bakes `kiln bake --only charlie-smith-dfg -j 2`: 5.8e-4 with 128 x 128, 7.5e-4 with
-  // 128 x 96, 1.0e-3 with 96 x 128 and with 128 x 80).
-  if (IsCatalogueSheen(model)) {
-    if (model == "ashikhmin-velvet") return {"mu", 0, 1, 48, Warp::Root4};
-    if (model == "charlie-smith") return {"mu", kCharlieSmithMinMu, 1, 112, Warp::Root4};
-    return {"mu", 0, 1, 192, Warp::Root4};
-  }
-  if (model == "gotanda-ggx") return {"mu", 0, 1, 128, Warp::Angle};
-  if (model == "oren-nayar-qualitative" || model == "oren-nayar-qualitative-ir" ||
-      model == "fujii-normalized")
-    return {"mu", 0, 1, 64, Warp::Angle};
+  const ModelInfo* m = FindModel(model);
+  if (m && m->muAxis) return FromDefault("mu", *m->muAxis);
   return {"mu", 0, 1, 64, Warp::Sqrt};
 }
 
+/// sqrt over 128 nodes for a specular model, linear over 64 for the others, unless the model
+/// states its own (ModelInfo::roughnessAxis: blinn-phong's 256, the sheens' log and linear axes
+/// from kSheenTableMinRoughness, models/sheen.h).
 AxisSpec DefaultRoughnessAxis(const std::string& model) {
   const ModelInfo& m = Info(model);
-  // blinn-phong's albedo climbs to sqrt(pi) at r = 1 with a curvature of ~70: 128 sqrt nodes
-  // (spacing 2 / 127 there) left 2e-3 of lookup error, so it gets 256 (a linear axis errs more
-  // near r = 0: 1e-2 in its first cell, measured).
-  if (model == "blinn-phong") return {"roughness", 0, 1, 256, Warp::Sqrt};
-  // Sheen: the Charlie models' E(0) ~ 0.4 / r, relative error h^2 / (4 r^2) under linear
-  // interpolation: a log axis (constant h / r), 128 nodes (2.6e-3 of lookup error with 64). The
-  // velvet is smooth in r: 48 linear nodes. Both from kSheenTableMinRoughness (models/sheen.h).
-  // charlie-smith: 96 (its E(0) is bounded; see DiffuseMuAxis for the trial bakes).
-  if (IsCatalogueSheen(model)) {
-    if (model == "ashikhmin-velvet")
-      return {"roughness", kSheenTableMinRoughness, 1, 48, Warp::Linear};
-    if (model == "charlie-smith") return {"roughness", kSheenTableMinRoughness, 1, 96, Warp::Log};
-    return {"roughness", kSheenTableMinRoughness, 1, 128, Warp::Log};
-  }
+  if (m.roughnessAxis) return FromDefault("roughness", *m.roughnessAxis);
   for (const ParamInfo& p : m.params)
     if (p.name == "roughness")
       return m.specular() ? AxisSpec{"roughness", 0, p.hi, 128, Warp::Sqrt}

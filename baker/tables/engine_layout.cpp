@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "baker/models/sheen.h"
+#include "baker/models/registry.h"
 
 namespace kiln {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "baker/models/sheen.h"
+#include "baker/models/registry.h"
 #include "baker/tables/catalogue.h"
 
 namespace kiln {
@@ -137,7 +137,7 @@ void SizeEngineAxes(TableSpec& spec, int muN, int rN, bool widen) {
     a.lo = 0;
     if (!IsSheen(spec.model)) continue;
     if (a.name == "roughness") a.lo = kSheenTableMinRoughness;
-    if (a.name == "mu" && spec.model == "charlie-smith") a.lo = kCharlieSmithMinMu;
+    if (a.name == "mu") a.lo = DiffuseMuAxis(spec.model).lo;  // charlie-smith's kCharlieSmithMinMu
   }
 }
 

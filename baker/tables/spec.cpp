@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "baker/models/sheen.h"
+#include "baker/models/registry.h"
 #include "baker/tables/engine_layout.h"
 
 namespace kiln {
