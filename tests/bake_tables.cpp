@@ -7,6 +7,7 @@
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
+#include "test_bake_cache.h"
 #include "test_util.h"
 
 using namespace kiln;
@@ -49,22 +50,31 @@ TEST_CASE("The catalogue names are the file-name contract", "[bake]") {
 namespace {
 
 /// The shards of the check below: CTest runs each as a test of its own (in parallel with -j).
-constexpr int kTexelCheckShards = 6;
+constexpr int kTexelCheckShards = 16;
 
-/// Re-integrates a sample of texels (every 7th of a table of more than 60, else every one) of
-/// the kinds OneOfEachKind(5)[k] with k % kTexelCheckShards == shard at tolerance 1e-11 (1e-10
-/// for an average: a different adaptive refinement of the same integral) and compares them with
-/// what the bake stored (float32).
+/// The sampled texels of a table of n texels: every 7th of a table of more than 60, else every
+/// one; shard s takes the j-th of them for j % kTexelCheckShards == s, so that every shard holds
+/// an even share of every kind's costly references and the shards together check them all.
+std::vector<size_t> ShardTexels(size_t n, int shard) {
+  std::vector<size_t> out;
+  const size_t step = n > 60 ? 7 : 1;
+  for (size_t i = 0, j = 0; i < n; i += step, ++j)
+    if (j % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
+  return out;
+}
+
+/// Re-integrates shard `shard` of the sampled texels (ShardTexels) of each of OneOfEachKind(5)
+/// at tolerance 1e-11 (1e-10 for an average: a different adaptive refinement of the same
+/// integral) and compares them with what the bake stored (float32). The shards run in one
+/// process share the bakes (test::CachedBake).
 void CheckTexelsAgainstExact(int shard) {
-  const std::vector<TableSpec> specs = OneOfEachKind(5);
-  for (size_t k = static_cast<size_t>(shard); k < specs.size(); k += kTexelCheckShards) {
-    const TableSpec& spec = specs[k];
+  for (const TableSpec& spec : OneOfEachKind(5)) {
     BakeOptions opt;
     opt.measureLookupError = false;
-    Table t = BakeTable(spec, opt);
+    const Table& t = test::CachedBake(spec, opt);
     size_t nc = spec.channels.size(), n = spec.TexelCount();
     double worst = 0;
-    for (size_t i = 0; i < n; i += (n > 60 ? 7 : 1)) {
+    for (size_t i : ShardTexels(n, shard)) {
       double x[3];
       NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats st;
@@ -87,31 +97,84 @@ void CheckTexelsAgainstExact(int shard) {
 
 }  // namespace
 
-// Every texel of every table kind is within 1e-6 of the exact integral (relative above 1): one
-// test per shard of the kinds (CheckTexelsAgainstExact).
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 1 of 6",
+TEST_CASE("The texel check's shards take every sampled texel once", "[bake]") {
+  for (size_t n : {1, 5, 25, 60, 61, 125, 1000}) {
+    std::vector<int> taken(n, 0);
+    for (int shard = 0; shard < kTexelCheckShards; ++shard)
+      for (size_t i : ShardTexels(n, shard)) ++taken[i];
+    const size_t step = n > 60 ? 7 : 1;
+    for (size_t i = 0; i < n; ++i) {
+      INFO("n " << n << " texel " << i);
+      CHECK(taken[i] == (i % step == 0 ? 1 : 0));
+    }
+  }
+}
+
+// Every texel of every table kind is within 1e-6 of the exact integral (relative above 1),
+// checked at a sample of texels dealt into shards (CheckTexelsAgainstExact), one test each.
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 1 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(0);
 }
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 2 of 6",
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 2 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(1);
 }
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 3 of 6",
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 3 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(2);
 }
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 4 of 6",
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 4 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(3);
 }
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 5 of 6",
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 5 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(4);
 }
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 6 of 6",
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 6 of 16",
           "[bake]") {
   CheckTexelsAgainstExact(5);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 7 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(6);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 8 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(7);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 9 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(8);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 10 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(9);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 11 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(10);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 12 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(11);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 13 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(12);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 14 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(13);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 15 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(14);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 16 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(15);
 }
 
 TEST_CASE("A bake is bit-identical for 1, 2 and 3 threads and across runs", "[bake]") {
