@@ -53,12 +53,13 @@ namespace {
 constexpr int kTexelCheckShards = 16;
 
 /// The sampled texels of a table of n texels: every 7th of a table of more than 60, else every
-/// one; shard s takes the j-th of them for j % kTexelCheckShards == s, so that every shard holds
-/// an even share of every kind's costly references and the shards together check them all.
-std::vector<size_t> ShardTexels(size_t n, int shard) {
+/// one; shard s takes the j-th of them for (j + rotation) % kTexelCheckShards == s. Each kind
+/// rotates by its own index, so that the few costly texels of the small tables (the averages)
+/// spread over all shards, and the shards together check every sampled texel once.
+std::vector<size_t> ShardTexels(size_t n, int shard, size_t rotation) {
   std::vector<size_t> out;
   const size_t step = n > 60 ? 7 : 1;
-  for (size_t i = 0, j = 0; i < n; i += step, ++j)
+  for (size_t i = 0, j = rotation; i < n; i += step, ++j)
     if (j % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
   return out;
 }
@@ -68,13 +69,15 @@ std::vector<size_t> ShardTexels(size_t n, int shard) {
 /// integral) and compares them with what the bake stored (float32). The shards run in one
 /// process share the bakes (test::CachedBake).
 void CheckTexelsAgainstExact(int shard) {
-  for (const TableSpec& spec : OneOfEachKind(5)) {
+  const std::vector<TableSpec> specs = OneOfEachKind(5);
+  for (size_t k = 0; k < specs.size(); ++k) {
+    const TableSpec& spec = specs[k];
     BakeOptions opt;
     opt.measureLookupError = false;
     const Table& t = test::CachedBake(spec, opt);
     size_t nc = spec.channels.size(), n = spec.TexelCount();
     double worst = 0;
-    for (size_t i : ShardTexels(n, shard)) {
+    for (size_t i : ShardTexels(n, shard, k)) {
       double x[3];
       NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats st;
@@ -98,16 +101,17 @@ void CheckTexelsAgainstExact(int shard) {
 }  // namespace
 
 TEST_CASE("The texel check's shards take every sampled texel once", "[bake]") {
-  for (size_t n : {1, 5, 25, 60, 61, 125, 1000}) {
-    std::vector<int> taken(n, 0);
-    for (int shard = 0; shard < kTexelCheckShards; ++shard)
-      for (size_t i : ShardTexels(n, shard)) ++taken[i];
-    const size_t step = n > 60 ? 7 : 1;
-    for (size_t i = 0; i < n; ++i) {
-      INFO("n " << n << " texel " << i);
-      CHECK(taken[i] == (i % step == 0 ? 1 : 0));
+  for (size_t n : {1, 5, 25, 60, 61, 125, 1000})
+    for (size_t rotation : {0, 3, 17}) {
+      std::vector<int> taken(n, 0);
+      for (int shard = 0; shard < kTexelCheckShards; ++shard)
+        for (size_t i : ShardTexels(n, shard, rotation)) ++taken[i];
+      const size_t step = n > 60 ? 7 : 1;
+      for (size_t i = 0; i < n; ++i) {
+        INFO("n " << n << " rotation " << rotation << " texel " << i);
+        CHECK(taken[i] == (i % step == 0 ? 1 : 0));
+      }
     }
-  }
 }
 
 // Every texel of every table kind is within 1e-6 of the exact integral (relative above 1),
