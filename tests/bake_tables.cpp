@@ -7,6 +7,7 @@
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
+#include "test_bake_cache.h"
 #include "test_util.h"
 
 using namespace kiln;
@@ -46,17 +47,37 @@ TEST_CASE("The catalogue names are the file-name contract", "[bake]") {
   CHECK_THROWS_WITH(CatalogueTable("ggx-dgf"), Catch::Contains("unknown table 'ggx-dgf'"));
 }
 
-TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral (relative above 1)",
-          "[bake]") {
-  // Re-integrate a sample of texels of each kind at tolerance 1e-11 (a different adaptive
-  // refinement of the same integral) and compare with what the bake stored (float32).
-  for (const TableSpec& spec : OneOfEachKind(5)) {
+namespace {
+
+/// The shards of the check below: CTest runs each as a test of its own (in parallel with -j).
+constexpr int kTexelCheckShards = 16;
+
+/// The sampled texels of a table of n texels: every 7th of a table of more than 60, else every
+/// one; shard s takes the j-th of them for (j + rotation) % kTexelCheckShards == s. Each kind
+/// rotates by its own index, so that the few costly texels of the small tables (the averages)
+/// spread over all shards, and the shards together check every sampled texel once.
+std::vector<size_t> ShardTexels(size_t n, int shard, size_t rotation) {
+  std::vector<size_t> out;
+  const size_t step = n > 60 ? 7 : 1;
+  for (size_t i = 0, j = rotation; i < n; i += step, ++j)
+    if (j % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
+  return out;
+}
+
+/// Re-integrates shard `shard` of the sampled texels (ShardTexels) of each of OneOfEachKind(5)
+/// at tolerance 1e-11 (1e-10 for an average: a different adaptive refinement of the same
+/// integral) and compares them with what the bake stored (float32). The shards run in one
+/// process share the bakes (test::CachedBake).
+void CheckTexelsAgainstExact(int shard) {
+  const std::vector<TableSpec> specs = OneOfEachKind(5);
+  for (size_t k = 0; k < specs.size(); ++k) {
+    const TableSpec& spec = specs[k];
     BakeOptions opt;
     opt.measureLookupError = false;
-    Table t = BakeTable(spec, opt);
+    const Table& t = test::CachedBake(spec, opt);
     size_t nc = spec.channels.size(), n = spec.TexelCount();
     double worst = 0;
-    for (size_t i = 0; i < n; i += (n > 60 ? 7 : 1)) {
+    for (size_t i : ShardTexels(n, shard, k)) {
       double x[3];
       NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats st;
@@ -75,6 +96,89 @@ TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral 
     CHECK(worst <= t.bakeError);
     CHECK(t.bakeError < 1e-6);
   }
+}
+
+}  // namespace
+
+TEST_CASE("The texel check's shards take every sampled texel once", "[bake]") {
+  for (size_t n : {1, 5, 25, 60, 61, 125, 1000})
+    for (size_t rotation : {0, 3, 17}) {
+      std::vector<int> taken(n, 0);
+      for (int shard = 0; shard < kTexelCheckShards; ++shard)
+        for (size_t i : ShardTexels(n, shard, rotation)) ++taken[i];
+      const size_t step = n > 60 ? 7 : 1;
+      for (size_t i = 0; i < n; ++i) {
+        INFO("n " << n << " rotation " << rotation << " texel " << i);
+        CHECK(taken[i] == (i % step == 0 ? 1 : 0));
+      }
+    }
+}
+
+// Every texel of every table kind is within 1e-6 of the exact integral (relative above 1),
+// checked at a sample of texels dealt into shards (CheckTexelsAgainstExact), one test each.
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 1 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(0);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 2 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(1);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 3 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(2);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 4 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(3);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 5 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(4);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 6 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(5);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 7 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(6);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 8 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(7);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 9 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(8);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 10 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(9);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 11 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(10);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 12 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(11);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 13 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(12);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 14 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(13);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 15 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(14);
+}
+TEST_CASE("Every texel of every table kind is within 1e-6 of the exact integral, shard 16 of 16",
+          "[bake]") {
+  CheckTexelsAgainstExact(15);
 }
 
 TEST_CASE("A bake is bit-identical for 1, 2 and 3 threads and across runs", "[bake]") {

@@ -95,3 +95,21 @@ TEST_CASE("the entering tables baked by columns hold the rule's point values, fo
     }
   }
 }
+
+TEST_CASE(
+    "an entering average asked for twice (the r-avg and t-avg searches' shared points) gives the "
+    "bits and evaluations of the rule at the average's nodes both times",
+    "[dielectric][glass-rule]") {
+  for (double eta : {1.1, 1.5, 2.9}) {
+    INFO("eta " << eta);
+    long long direct = 0, first = 0, second = 0;
+    const std::array<double, 2> e =
+        FixedRuleDielectricAlbedoAverage(0.2, eta, kDielectricAverageNodes, &direct);
+    const std::array<double, 2> a = FixedRuleDielectricAlbedoAverage(0.2, eta, &first);
+    const std::array<double, 2> b = FixedRuleDielectricAlbedoAverage(0.2, eta, &second);
+    CHECK(std::memcmp(&e, &a, sizeof e) == 0);
+    CHECK(std::memcmp(&e, &b, sizeof e) == 0);
+    CHECK(first == direct);
+    CHECK(second == direct);
+  }
+}

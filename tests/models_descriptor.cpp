@@ -11,7 +11,7 @@
 #include "baker/bake/bake.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
-#include "baker/quantities/quantity.h"
+#include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
 
 using namespace kiln;

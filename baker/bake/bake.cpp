@@ -223,6 +223,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     t.bakeError = estimate + 0x1p-24;
   else
     t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
+  long long lookupPoints = 0;
   if (opt.measureLookupError) {
     // A derived table with its source's texels and search reference: the source's report
     // (QuantityInfo::sharesSourceLookupError), else its own search.
@@ -230,7 +231,7 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     if (from && from->hasLookupError && shares && shares(spec))
       t.lookupError = from->lookupError;
     else
-      MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
+      lookupPoints = MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
     if (keep) {
       keep->hasLookupError = true;
       keep->lookupError = t.lookupError;
@@ -243,11 +244,12 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     stats->derivedFrom = from ? from->name : "";
     stats->seconds = std::chrono::duration<double>(t1 - t0).count();
     stats->lookupSeconds = std::chrono::duration<double>(t2 - t1).count();
+    stats->lookupPoints = lookupPoints;
   }
   return t;
 }
 
-void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads) {
+long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads) {
   // The search kiln verify repeats (lookup_error.h), against the bake's own method.
   LookupSearchOptions opt;
   opt.budget = budget;
@@ -272,6 +274,7 @@ void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, i
                 rep.max, rep.WhereText(spec).c_str(), rep.maxOutsideCorner, kDeclaredBoundMargin,
                 term, rep.cells, rep.allCells, rep.climbed, rep.points);
   table.lookupError.where = buf;
+  return rep.points;
 }
 
 void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header,

@@ -19,10 +19,11 @@ struct BakeOptions {
 };
 
 struct BakeStats {
-  long long evals = 0;       ///< integrand evaluations of the texels (0 for derived texels)
-  std::string derivedFrom;   ///< the table whose node values gave the texels, or
-  double seconds = 0;        ///< wall time of the texels only (no lookup check, no progress bar)
-  double lookupSeconds = 0;  ///< wall time of the lookup-error check
+  long long evals = 0;         ///< integrand evaluations of the texels (0 for derived texels)
+  std::string derivedFrom;     ///< the table whose node values gave the texels, or
+  double seconds = 0;          ///< wall time of the texels only (no lookup check, no progress bar)
+  double lookupSeconds = 0;    ///< wall time of the lookup-error check
+  long long lookupPoints = 0;  ///< its reference evaluations (0: none, or its source's report)
 };
 
 /// The node values of one baked table in double (before the float32 store) with each node's
@@ -63,8 +64,9 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats 
 /// Searches a table's lookup error (linear filter) against EvaluateSpec (lookup_error.h, at
 /// most `budget` reference evaluations, 0: the search's default) and fills table.lookupError
 /// with the declared bound (kDeclaredBoundMargin x the max found), the rms over the probe
-/// points and the cubic filter's max and rms at the same points.
-void MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads);
+/// points and the cubic filter's max and rms at the same points. Returns the search's reference
+/// evaluations (LookupErrorReport::points).
+long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads);
 
 /// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically; the EXR's
 /// blocks are compressed on `threads` threads (0: all cores; same bytes for any count).

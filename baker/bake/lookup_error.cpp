@@ -120,34 +120,101 @@ std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel) {
   return est;
 }
 
-LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
-                                     const LookupSearchOptions& opt) {
-  const size_t dims = spec.axes.size();
-  int n[3] = {1, 1, 1}, nc[3] = {1, 1, 1};
-  std::vector<int> active;  // axes with more than one node
-  for (size_t d = 0; d < dims && d < 3; ++d) {
-    n[d] = std::max(1, spec.axes[d].size);
-    nc[d] = std::max(1, n[d] - 1);
-    if (n[d] > 1) active.push_back(static_cast<int>(d));
-  }
-  const int D = static_cast<int>(active.size());
-  const size_t allCells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
-  // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
-  const int first = Describe(spec.quantity).firstIntegralChannel;
-  std::vector<double> est = CellErrorEstimates(view, first);
-  est.resize(allCells, 0.0);
+namespace {
 
-  // The order in which cells are searched: corners, then edge and other cells alternately, each
-  // by estimate descending (index on ties).
+/// One climb: its best point, where it is in the cell, and what it spent.
+struct Climb {
+  Sample best;
+  std::array<double, 3> u{};
+  long long evals = 0, integrand = 0;
+  double refError = 0;
+};
+
+/// The state of one search (MeasureLookupError), its steps in the order they run: the cells'
+/// order, the probes within the budget, the centre sweep of a small table, the random points,
+/// the climbs, and the reductions into the report.
+class LookupSearch {
+ public:
+  LookupSearch(const TableSpec& spec, const LutView& view, const LookupSearchOptions& opt);
+  /// The cells in search order: corners, then edge and other cells alternately, each by
+  /// estimate descending (index on ties); at most opt.maxCells.
+  void OrderCells();
+  /// Probes, cell after cell in search order, until kProbeShare of the budget is spent (all of
+  /// it when every cell is probed within it).
+  void Probe();
+  /// A small table the automatic budget probed only in part: every other cell's centre, and the
+  /// worst of them probed in full (outside the budget).
+  void SweepCentres();
+  /// opt.randomPoints fixed-seed points, uniform in warped coordinates.
+  void RandomPoints();
+  /// Climbs, in the cells whose worst probe erred most, in chunks until the budget is spent.
+  void Climbs();
+  /// The report: deterministic reductions in search order.
+  LookupErrorReport Report();
+
+ private:
+  Sample Evaluate(size_t cell, const std::array<double, 3>& u) const;
+  bool Spent(double share) const;
+  void EvaluateAll(std::vector<Sample>& out, size_t base,
+                   const std::vector<std::pair<size_t, size_t>>& what);
+  Climb ClimbCell(size_t slot) const;
+
+  const TableSpec& spec_;
+  const LutView& view_;
+  const LookupSearchOptions& opt_;
+  size_t dims_;
+  int n_[3] = {1, 1, 1}, nc_[3] = {1, 1, 1};
+  std::vector<int> active_;  ///< axes with more than one node
+  int D_ = 0;
+  size_t allCells_ = 0;
+  int first_ = 0;  ///< the first integral channel (QuantityInfo::firstIntegralChannel)
+  std::vector<size_t> order_, fullOrder_;
+  std::vector<std::array<double, 3>> probes_;
+  long long P_ = 0, C_ = 0;
+  long long callBudget_ = 0, integrandBudget_ = 0, calls_ = 0, integrand_ = 0, probeCalls_ = 0;
+  tbb::task_arena arena_;
+  std::vector<Sample> probeSamples_, sweepSamples_;
+  std::vector<size_t> cellBestProbe_;
+  std::vector<Climb> climbed_;
+};
+
+int ThreadsOf(const LookupSearchOptions& opt) {
+  return opt.threads > 0 ? opt.threads : static_cast<int>(std::thread::hardware_concurrency());
+}
+
+LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
+                           const LookupSearchOptions& opt)
+    : spec_(spec), view_(view), opt_(opt), dims_(spec.axes.size()), arena_(ThreadsOf(opt)) {
+  for (size_t d = 0; d < dims_ && d < 3; ++d) {
+    n_[d] = std::max(1, spec.axes[d].size);
+    nc_[d] = std::max(1, n_[d] - 1);
+    if (n_[d] > 1) active_.push_back(static_cast<int>(d));
+  }
+  D_ = static_cast<int>(active_.size());
+  allCells_ = static_cast<size_t>(nc_[0]) * nc_[1] * nc_[2];
+  // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
+  first_ = Describe(spec.quantity).firstIntegralChannel;
+  probes_ = ProbePoints(D_);
+  P_ = static_cast<long long>(probes_.size());
+  C_ = kSweeps * D_ * (kGoldenIterations + 3);  // at most
+  // The budget, in reference evaluations and (automatic budget only) integrand evaluations,
+  // spent in chunks whose sizes depend on what was spent before, never on timing or threads.
+  callBudget_ = opt.budget > 0 ? opt.budget : kLookupBudgetCalls;
+  integrandBudget_ = opt.budget > 0 ? 0 : kLookupBudgetIntegrand;
+}
+
+void LookupSearch::OrderCells() {
+  std::vector<double> est = CellErrorEstimates(view_, first_);
+  est.resize(allCells_, 0.0);
   std::vector<size_t> corners, edges, others;
-  for (size_t k = 0; k < allCells; ++k) {
-    int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
-                static_cast<int>(k / nc[0] / nc[1])};
+  for (size_t k = 0; k < allCells_; ++k) {
+    int c[3] = {static_cast<int>(k % nc_[0]), static_cast<int>(k / nc_[0] % nc_[1]),
+                static_cast<int>(k / nc_[0] / nc_[1])};
     int atEnd = 0;
-    for (int a : active) atEnd += c[a] == 0 || c[a] == nc[a] - 1;
-    if (atEnd == D)
+    for (int a : active_) atEnd += c[a] == 0 || c[a] == nc_[a] - 1;
+    if (atEnd == D_)
       corners.push_back(k);
-    else if (atEnd >= D - 1)
+    else if (atEnd >= D_ - 1)
       edges.push_back(k);
     else
       others.push_back(k);
@@ -157,153 +224,138 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   };
   std::sort(edges.begin(), edges.end(), byEstimate);
   std::sort(others.begin(), others.end(), byEstimate);
-  std::vector<size_t> order = corners;
+  order_ = corners;
   for (size_t i = 0; i < std::max(edges.size(), others.size()); ++i) {
-    if (i < edges.size()) order.push_back(edges[i]);
-    if (i < others.size()) order.push_back(others[i]);
+    if (i < edges.size()) order_.push_back(edges[i]);
+    if (i < others.size()) order_.push_back(others[i]);
   }
-  if (opt.maxCells > 0 && order.size() > static_cast<size_t>(opt.maxCells))
-    order.resize(static_cast<size_t>(opt.maxCells));
+  if (opt_.maxCells > 0 && order_.size() > static_cast<size_t>(opt_.maxCells))
+    order_.resize(static_cast<size_t>(opt_.maxCells));
+}
 
-  auto evaluate = [&](size_t cell, const std::array<double, 3>& u, double* x) {
-    int c[3] = {static_cast<int>(cell % nc[0]), static_cast<int>(cell / nc[0] % nc[1]),
-                static_cast<int>(cell / nc[0] / nc[1])};
-    double t[3] = {0, 0, 0};
-    for (int i = 0; i < D; ++i) {
-      int a = active[i];
-      double ua = std::min(1.0, std::max(0.0, u[i]));
-      t[a] = std::min(1.0, (c[a] + ua) / static_cast<double>(n[a] - 1));
-    }
-    PointAtWarped(spec, t, x);
-    IntegrationStats st;
-    std::vector<double> exact =
-        opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st) : SearchReference(spec, x, st);
-    // One float per channel of the table, and at least one per exact value (a table with fewer
-    // channels than its quantity then compares the missing ones against 0).
-    std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
-    view.sample(x, got.data(), opt.filter);
-    Sample s;
-    for (size_t ch = static_cast<size_t>(first); ch < exact.size(); ++ch)
-      s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
-    if (opt.alsoCubic) {
-      view.sample(x, got.data(), Filter::Cubic);
-      for (size_t ch = static_cast<size_t>(first); ch < exact.size(); ++ch)
-        s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
-    }
-    s.inCorner = dims >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
-    s.integrand = st.evals;
-    s.refError = opt.refTol > 0 ? 0.0 : st.errorEstimate;
-    std::copy(x, x + 3, s.x);
-    return s;
-  };
+Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const {
+  int c[3] = {static_cast<int>(cell % nc_[0]), static_cast<int>(cell / nc_[0] % nc_[1]),
+              static_cast<int>(cell / nc_[0] / nc_[1])};
+  double t[3] = {0, 0, 0}, x[3];
+  for (int i = 0; i < D_; ++i) {
+    int a = active_[i];
+    double ua = std::min(1.0, std::max(0.0, u[i]));
+    t[a] = std::min(1.0, (c[a] + ua) / static_cast<double>(n_[a] - 1));
+  }
+  PointAtWarped(spec_, t, x);
+  IntegrationStats st;
+  std::vector<double> exact =
+      opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st) : SearchReference(spec_, x, st);
+  // One float per channel of the table, and at least one per exact value (a table with fewer
+  // channels than its quantity then compares the missing ones against 0).
+  std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);
+  view_.sample(x, got.data(), opt_.filter);
+  Sample s;
+  for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
+    s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
+  if (opt_.alsoCubic) {
+    view_.sample(x, got.data(), Filter::Cubic);
+    for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
+      s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
+  }
+  s.inCorner = dims_ >= 2 && spec_.axes[0].name == "mu" && spec_.axes[1].ToAxis().texel(x[1]) < 1;
+  s.integrand = st.evals;
+  s.refError = opt_.refTol > 0 ? 0.0 : st.errorEstimate;
+  std::copy(x, x + 3, s.x);
+  return s;
+}
 
-  const std::vector<std::array<double, 3>> probes = ProbePoints(D);
-  const long long P = static_cast<long long>(probes.size());
-  const long long C = kSweeps * D * (kGoldenIterations + 3);  // at most
-  LookupErrorReport rep;
-  rep.allCells = static_cast<long long>(allCells);
+bool LookupSearch::Spent(double share) const {
+  return calls_ >= static_cast<long long>(share * static_cast<double>(callBudget_)) ||
+         (integrandBudget_ > 0 &&
+          integrand_ >= static_cast<long long>(share * static_cast<double>(integrandBudget_)));
+}
 
-  // The budget, in reference evaluations and (automatic budget only) integrand evaluations,
-  // spent in chunks whose sizes depend on what was spent before, never on timing or threads.
-  const long long callBudget = opt.budget > 0 ? opt.budget : kLookupBudgetCalls;
-  const long long integrandBudget = opt.budget > 0 ? 0 : kLookupBudgetIntegrand;
-  rep.budget = callBudget;
-  long long calls = 0, integrand = 0;
-  auto spent = [&](double share) {
-    return calls >= static_cast<long long>(share * static_cast<double>(callBudget)) ||
-           (integrandBudget > 0 &&
-            integrand >= static_cast<long long>(share * static_cast<double>(integrandBudget)));
-  };
-  int threads =
-      opt.threads > 0 ? opt.threads : static_cast<int>(std::thread::hardware_concurrency());
-  tbb::task_arena arena(threads);
-
-  // Probes, cell after cell in search order, until kProbeShare of the budget is spent (all of it
-  // when every cell is probed within it).
-  const long long allProbes = static_cast<long long>(order.size()) * P;
-  const double probeShare = allProbes <= callBudget * kProbeShare || C == 0 ? 1.0 : kProbeShare;
-  std::vector<Sample> probeSamples;
-  while (calls < allProbes && !spent(probeShare)) {
+void LookupSearch::Probe() {
+  const long long allProbes = static_cast<long long>(order_.size()) * P_;
+  const double probeShare = allProbes <= callBudget_ * kProbeShare || C_ == 0 ? 1.0 : kProbeShare;
+  while (calls_ < allProbes && !Spent(probeShare)) {
     long long chunk =
-        std::min({std::max({8LL, P, calls / 8}), allProbes - calls, callBudget - calls});
+        std::min({std::max({8LL, P_, calls_ / 8}), allProbes - calls_, callBudget_ - calls_});
     if (chunk <= 0) break;
-    size_t base = probeSamples.size();
-    probeSamples.resize(base + static_cast<size_t>(chunk));
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(base, probeSamples.size(), 1),
+    size_t base = probeSamples_.size();
+    probeSamples_.resize(base + static_cast<size_t>(chunk));
+    arena_.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(base, probeSamples_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
-                          for (size_t i = r.begin(); i != r.end(); ++i) {
-                            double x[3];
-                            probeSamples[i] = evaluate(order[i / P], probes[i % P], x);
-                          }
+                          for (size_t i = r.begin(); i != r.end(); ++i)
+                            probeSamples_[i] = Evaluate(order_[i / P_], probes_[i % P_]);
                         });
     });
-    for (size_t i = base; i < probeSamples.size(); ++i) integrand += probeSamples[i].integrand;
-    calls += chunk;
+    for (size_t i = base; i < probeSamples_.size(); ++i) integrand_ += probeSamples_[i].integrand;
+    calls_ += chunk;
   }
-  long long probeCalls = calls;
-  const std::vector<size_t> fullOrder = order;
-  order.resize(static_cast<size_t>((probeCalls + P - 1) / P));
+  probeCalls_ = calls_;
+  fullOrder_ = order_;
+  order_.resize(static_cast<size_t>((probeCalls_ + P_ - 1) / P_));
+}
 
+void LookupSearch::EvaluateAll(std::vector<Sample>& out, size_t base,
+                               const std::vector<std::pair<size_t, size_t>>& what) {
+  out.resize(base + what.size());
+  arena_.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, what.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i)
+                          out[base + i] = Evaluate(what[i].first, probes_[what[i].second]);
+                      });
+  });
+}
+
+void LookupSearch::SweepCentres() {
   // A small table the automatic budget probed only in part (a search of 3 of 345 cells declared
   // 8.3e-4 for ggx-dielectric-albedo-r-exit-avg where `kiln verify --budget 20000` found 9.8e-4):
   // the last cell's probes completed, every unprobed cell's centre evaluated, and as many of
   // them as were probed (at least 8), by centre error descending, probed in full and searched
   // like the others; outside the budget (the climbs keep theirs), deterministic.
-  std::vector<Sample> sweepSamples;
-  if (opt.budget == 0 && opt.maxCells == 0 && allCells <= kCentreSweepCells &&
-      probeCalls < allProbes && P > 0) {
-    auto evaluateAll = [&](std::vector<Sample>& out, size_t base,
-                           const std::vector<std::pair<size_t, size_t>>& what) {
-      out.resize(base + what.size());
-      arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, what.size(), 1),
-                          [&](const tbb::blocked_range<size_t>& r) {
-                            for (size_t i = r.begin(); i != r.end(); ++i) {
-                              double x[3];
-                              out[base + i] = evaluate(what[i].first, probes[what[i].second], x);
-                            }
-                          });
-      });
-    };
-    std::vector<std::pair<size_t, size_t>> rest;  // (cell, probe)
-    for (size_t i = probeSamples.size(); i < order.size() * static_cast<size_t>(P); ++i)
-      rest.push_back({order[i / P], i % P});
-    evaluateAll(probeSamples, probeSamples.size(), rest);
-    std::vector<std::pair<size_t, size_t>> centres;
-    for (size_t k = order.size(); k < fullOrder.size(); ++k) centres.push_back({fullOrder[k], 0});
-    evaluateAll(sweepSamples, 0, centres);
-    std::vector<size_t> byCentre(centres.size());
-    for (size_t i = 0; i < byCentre.size(); ++i) byCentre[i] = i;
-    std::stable_sort(byCentre.begin(), byCentre.end(),
-                     [&](size_t a, size_t b) { return sweepSamples[a].err > sweepSamples[b].err; });
-    const size_t more = std::min(byCentre.size(), std::max<size_t>(8, order.size()));
-    std::vector<bool> taken(centres.size(), false);
-    std::vector<std::pair<size_t, size_t>> full;
-    for (size_t j = 0; j < more; ++j) {
-      taken[byCentre[j]] = true;
-      for (long long q = 1; q < P; ++q)
-        full.push_back({centres[byCentre[j]].first, static_cast<size_t>(q)});
-    }
-    std::vector<Sample> fullSamples;
-    evaluateAll(fullSamples, 0, full);
-    for (size_t j = 0; j < more; ++j) {
-      order.push_back(centres[byCentre[j]].first);
-      probeSamples.push_back(sweepSamples[byCentre[j]]);
-      for (long long q = 1; q < P; ++q)
-        probeSamples.push_back(
-            fullSamples[j * static_cast<size_t>(P - 1) + static_cast<size_t>(q - 1)]);
-    }
-    std::vector<Sample> untaken;
-    for (size_t i = 0; i < centres.size(); ++i)
-      if (!taken[i]) untaken.push_back(sweepSamples[i]);
-    sweepSamples.swap(untaken);
-    probeCalls = static_cast<long long>(probeSamples.size());
+  const long long allProbes = static_cast<long long>(fullOrder_.size()) * P_;
+  if (!(opt_.budget == 0 && opt_.maxCells == 0 && allCells_ <= kCentreSweepCells &&
+        probeCalls_ < allProbes && P_ > 0))
+    return;
+  std::vector<std::pair<size_t, size_t>> rest;  // (cell, probe)
+  for (size_t i = probeSamples_.size(); i < order_.size() * static_cast<size_t>(P_); ++i)
+    rest.push_back({order_[i / P_], i % P_});
+  EvaluateAll(probeSamples_, probeSamples_.size(), rest);
+  std::vector<std::pair<size_t, size_t>> centres;
+  for (size_t k = order_.size(); k < fullOrder_.size(); ++k) centres.push_back({fullOrder_[k], 0});
+  EvaluateAll(sweepSamples_, 0, centres);
+  std::vector<size_t> byCentre(centres.size());
+  for (size_t i = 0; i < byCentre.size(); ++i) byCentre[i] = i;
+  std::stable_sort(byCentre.begin(), byCentre.end(),
+                   [&](size_t a, size_t b) { return sweepSamples_[a].err > sweepSamples_[b].err; });
+  const size_t more = std::min(byCentre.size(), std::max<size_t>(8, order_.size()));
+  std::vector<bool> taken(centres.size(), false);
+  std::vector<std::pair<size_t, size_t>> full;
+  for (size_t j = 0; j < more; ++j) {
+    taken[byCentre[j]] = true;
+    for (long long q = 1; q < P_; ++q)
+      full.push_back({centres[byCentre[j]].first, static_cast<size_t>(q)});
   }
+  std::vector<Sample> fullSamples;
+  EvaluateAll(fullSamples, 0, full);
+  for (size_t j = 0; j < more; ++j) {
+    order_.push_back(centres[byCentre[j]].first);
+    probeSamples_.push_back(sweepSamples_[byCentre[j]]);
+    for (long long q = 1; q < P_; ++q)
+      probeSamples_.push_back(
+          fullSamples[j * static_cast<size_t>(P_ - 1) + static_cast<size_t>(q - 1)]);
+  }
+  std::vector<Sample> untaken;
+  for (size_t i = 0; i < centres.size(); ++i)
+    if (!taken[i]) untaken.push_back(sweepSamples_[i]);
+  sweepSamples_.swap(untaken);
+  probeCalls_ = static_cast<long long>(probeSamples_.size());
+}
 
-  // Random points, uniform in warped coordinates (a fixed seed per index).
-  std::vector<Sample> randomSamples(static_cast<size_t>(std::max(0LL, opt.randomPoints)));
-  arena.execute([&] {
+void LookupSearch::RandomPoints() {
+  // A fixed seed per index.
+  std::vector<Sample> randomSamples(static_cast<size_t>(std::max(0LL, opt_.randomPoints)));
+  arena_.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, randomSamples.size(), 1),
                       [&](const tbb::blocked_range<size_t>& r) {
                         for (size_t i = r.begin(); i != r.end(); ++i) {
@@ -314,117 +366,114 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
                             h ^= h >> 31;
                             h *= 0xBF58476D1CE4E5B9ull;
                             h ^= h >> 29;
-                            double texel = static_cast<double>(h >> 11) * 0x1p-53 * nc[a];
-                            int c = std::min(nc[a] - 1, static_cast<int>(texel));
+                            double texel = static_cast<double>(h >> 11) * 0x1p-53 * nc_[a];
+                            int c = std::min(nc_[a] - 1, static_cast<int>(texel));
                             cell += stride * static_cast<size_t>(c);
-                            stride *= static_cast<size_t>(nc[a]);
-                            for (int i2 = 0; i2 < D; ++i2)
-                              if (active[i2] == a) u[i2] = texel - c;
+                            stride *= static_cast<size_t>(nc_[a]);
+                            for (int i2 = 0; i2 < D_; ++i2)
+                              if (active_[i2] == a) u[i2] = texel - c;
                           }
-                          double x[3];
-                          randomSamples[i] = evaluate(cell, u, x);
+                          randomSamples[i] = Evaluate(cell, u);
                         }
                       });
   });
-  probeSamples.insert(probeSamples.end(), randomSamples.begin(), randomSamples.end());
-  probeSamples.insert(probeSamples.end(), sweepSamples.begin(), sweepSamples.end());
+  probeSamples_.insert(probeSamples_.end(), randomSamples.begin(), randomSamples.end());
+  probeSamples_.insert(probeSamples_.end(), sweepSamples_.begin(), sweepSamples_.end());
+}
 
-  // Climbs, in the cells whose worst probe erred most.
-  std::vector<double> cellMax(order.size(), 0.0);
-  std::vector<size_t> cellBestProbe(order.size(), 0);
-  for (size_t i = 0; i < static_cast<size_t>(probeCalls); ++i)
-    if (i % P == 0 || probeSamples[i].err > cellMax[i / P]) {
-      cellMax[i / P] = probeSamples[i].err;
-      cellBestProbe[i / P] = i % P;
+Climb LookupSearch::ClimbCell(size_t slot) const {
+  size_t cell = order_[slot];
+  Climb cl;
+  cl.u = probes_[cellBestProbe_[slot]];
+  cl.best = probeSamples_[slot * P_ + cellBestProbe_[slot]];
+  auto f = [&](int axis, double v) {
+    std::array<double, 3> u = cl.u;
+    u[axis] = v;
+    Sample s = Evaluate(cell, u);
+    ++cl.evals;
+    cl.integrand += s.integrand;
+    cl.refError = std::max(cl.refError, s.refError);
+    if (s.err > cl.best.err) {
+      cl.best = s;
+      cl.u = u;
     }
-  std::vector<size_t> rank(order.size());
+    return s.err;
+  };
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
+  for (int sweep = 0; sweep < kSweeps; ++sweep)
+    for (int a = 0; a < D_; ++a) {
+      double centre = cl.u[a], w = kSweepHalfWidth[sweep];
+      double lo = std::max(0.0, centre - w), hi = std::min(1.0, centre + w);
+      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+      double f1 = f(a, x1), f2 = f(a, x2);
+      for (int it = 0; it < kGoldenIterations; ++it) {
+        if (f1 > f2) {
+          hi = x2;
+          x2 = x1;
+          f2 = f1;
+          x1 = hi - g * (hi - lo);
+          f1 = f(a, x1);
+        } else {
+          lo = x1;
+          x1 = x2;
+          f1 = f2;
+          x2 = lo + g * (hi - lo);
+          f2 = f(a, x2);
+        }
+      }
+      // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
+      // golden section never evaluates its bracket's ends.
+      if (lo == 0.0) f(a, 0.0);
+      if (hi == 1.0) f(a, 1.0);
+    }
+  return cl;
+}
+
+void LookupSearch::Climbs() {
+  std::vector<double> cellMax(order_.size(), 0.0);
+  cellBestProbe_.assign(order_.size(), 0);
+  for (size_t i = 0; i < static_cast<size_t>(probeCalls_); ++i)
+    if (i % P_ == 0 || probeSamples_[i].err > cellMax[i / P_]) {
+      cellMax[i / P_] = probeSamples_[i].err;
+      cellBestProbe_[i / P_] = i % P_;
+    }
+  std::vector<size_t> rank(order_.size());
   for (size_t i = 0; i < rank.size(); ++i) rank[i] = i;
   std::stable_sort(rank.begin(), rank.end(),
                    [&](size_t a, size_t b) { return cellMax[a] > cellMax[b]; });
-  struct Climb {
-    Sample best;
-    std::array<double, 3> u{};
-    long long evals = 0, integrand = 0;
-    double refError = 0;
-  };
-  auto climbCell = [&](size_t slot) {
-    size_t cell = order[slot];
-    Climb cl;
-    cl.u = probes[cellBestProbe[slot]];
-    cl.best = probeSamples[slot * P + cellBestProbe[slot]];
-    double x[3];
-    auto f = [&](int axis, double v) {
-      std::array<double, 3> u = cl.u;
-      u[axis] = v;
-      Sample s = evaluate(cell, u, x);
-      ++cl.evals;
-      cl.integrand += s.integrand;
-      cl.refError = std::max(cl.refError, s.refError);
-      if (s.err > cl.best.err) {
-        cl.best = s;
-        cl.u = u;
-      }
-      return s.err;
-    };
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
-    for (int sweep = 0; sweep < kSweeps; ++sweep)
-      for (int a = 0; a < D; ++a) {
-        double centre = cl.u[a], w = kSweepHalfWidth[sweep];
-        double lo = std::max(0.0, centre - w), hi = std::min(1.0, centre + w);
-        double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-        double f1 = f(a, x1), f2 = f(a, x2);
-        for (int it = 0; it < kGoldenIterations; ++it) {
-          if (f1 > f2) {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - g * (hi - lo);
-            f1 = f(a, x1);
-          } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + g * (hi - lo);
-            f2 = f(a, x2);
-          }
-        }
-        // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
-        // golden section never evaluates its bracket's ends.
-        if (lo == 0.0) f(a, 0.0);
-        if (hi == 1.0) f(a, 1.0);
-      }
-    return cl;
-  };
-  // Climbs, in chunks of cells, until the budget is spent; at least one cell climbs (two when the
-  // probes left budget).
-  std::vector<Climb> climbed;
-  while (C > 0 && climbed.size() < rank.size() && (climbed.empty() || !spent(1.0))) {
-    size_t chunk = std::min(rank.size() - climbed.size(), std::max<size_t>(2, climbed.size() / 8));
-    if (!climbed.empty() && callBudget - calls < C) break;
-    chunk = climbed.empty()
-                ? std::min<size_t>(chunk, spent(1.0) ? 1 : 2)
-                : std::min<size_t>(chunk, static_cast<size_t>((callBudget - calls) / C));
-    size_t base = climbed.size();
-    climbed.resize(base + chunk);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed.size(), 1),
+  // At least one cell climbs (two when the probes left budget).
+  while (C_ > 0 && climbed_.size() < rank.size() && (climbed_.empty() || !Spent(1.0))) {
+    size_t chunk =
+        std::min(rank.size() - climbed_.size(), std::max<size_t>(2, climbed_.size() / 8));
+    if (!climbed_.empty() && callBudget_ - calls_ < C_) break;
+    chunk = climbed_.empty()
+                ? std::min<size_t>(chunk, Spent(1.0) ? 1 : 2)
+                : std::min<size_t>(chunk, static_cast<size_t>((callBudget_ - calls_) / C_));
+    size_t base = climbed_.size();
+    climbed_.resize(base + chunk);
+    arena_.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t j = r.begin(); j != r.end(); ++j)
-                            climbed[j] = climbCell(rank[j]);
+                            climbed_[j] = ClimbCell(rank[j]);
                         });
     });
-    for (size_t j = base; j < climbed.size(); ++j) {
-      calls += climbed[j].evals;
-      integrand += climbed[j].integrand;
+    for (size_t j = base; j < climbed_.size(); ++j) {
+      calls_ += climbed_[j].evals;
+      integrand_ += climbed_[j].integrand;
     }
   }
+}
 
-  // Deterministic reductions, in search order.
+LookupErrorReport LookupSearch::Report() {
+  LookupErrorReport rep;
+  rep.allCells = static_cast<long long>(allCells_);
+  rep.budget = callBudget_;
   double sum = 0, sumCubic = 0;
   long long worstProbe = 0;
-  for (size_t i = 0; i < probeSamples.size(); ++i) {
-    const Sample& s = probeSamples[i];
-    if (s.err > probeSamples[static_cast<size_t>(worstProbe)].err)
+  for (size_t i = 0; i < probeSamples_.size(); ++i) {
+    const Sample& s = probeSamples_[i];
+    if (s.err > probeSamples_[static_cast<size_t>(worstProbe)].err)
       worstProbe = static_cast<long long>(i);
     if (!s.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, s.err);
     sum += s.err * s.err;
@@ -432,29 +481,42 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     rep.referenceError = std::max(rep.referenceError, s.refError);
     rep.cubicMax = std::max(rep.cubicMax, s.cubic);
   }
-  rep.max = probeSamples[static_cast<size_t>(worstProbe)].err;
-  const Sample& w = probeSamples[static_cast<size_t>(worstProbe)];
-  rep.where.assign(w.x, w.x + dims);
-  long long points = static_cast<long long>(probeSamples.size());
-  for (const Climb& cl : climbed) {
+  rep.max = probeSamples_[static_cast<size_t>(worstProbe)].err;
+  const Sample& w = probeSamples_[static_cast<size_t>(worstProbe)];
+  rep.where.assign(w.x, w.x + dims_);
+  long long points = static_cast<long long>(probeSamples_.size());
+  for (const Climb& cl : climbed_) {
     points += cl.evals;
     rep.referenceError = std::max(rep.referenceError, cl.refError);
     if (!cl.best.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, cl.best.err);
     if (cl.best.err > rep.max) {
       rep.max = cl.best.err;
-      rep.where.assign(cl.best.x, cl.best.x + dims);
+      rep.where.assign(cl.best.x, cl.best.x + dims_);
     }
   }
-  const double count = static_cast<double>(std::max<size_t>(1, probeSamples.size()));
+  const double count = static_cast<double>(std::max<size_t>(1, probeSamples_.size()));
   rep.rms = std::sqrt(sum / count);
-  if (opt.alsoCubic)
+  if (opt_.alsoCubic)
     rep.cubicRms = std::sqrt(sumCubic / count);
   else
     rep.cubicMax = -1;
   rep.points = points;
-  rep.cells = static_cast<long long>(order.size());
-  rep.climbed = static_cast<long long>(climbed.size());
+  rep.cells = static_cast<long long>(order_.size());
+  rep.climbed = static_cast<long long>(climbed_.size());
   return rep;
+}
+
+}  // namespace
+
+LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
+                                     const LookupSearchOptions& opt) {
+  LookupSearch search(spec, view, opt);
+  search.OrderCells();
+  search.Probe();
+  search.SweepCentres();
+  search.RandomPoints();
+  search.Climbs();
+  return search.Report();
 }
 
 }  // namespace kiln

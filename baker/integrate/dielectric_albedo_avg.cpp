@@ -126,6 +126,14 @@ std::array<double, 2> SmoothDielectricAlbedoAverage(double eta) {
 }
 
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, long long* evals) {
+  // The entering side through the bake's memo of columns, as a column of one (the same bits and
+  // evaluations): the lookup-error searches of r-avg and t-avg, whose every point needs both
+  // channels, integrate each point they share once.
+  if (eta >= kDielectricTableEtaMin) {
+    std::array<double, 2> e;
+    FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, &e, evals);
+    return e;
+  }
   return FixedRuleDielectricAlbedoAverage(alpha, eta, kDielectricAverageNodes, evals);
 }
 
