@@ -99,9 +99,9 @@ std::string Body(const FitForm& f, Dialect d) {
     if (ax.warp == FitWarp::Sqrt) o << "    u = " << sq << "(u);\n";
     if (ax.warp == FitWarp::Root4) o << "    u = " << sq << "(" << sq << "(u));\n";
     if (ax.warp == FitWarp::Layer)
-      o << "    float c = " << (d == Dialect::Cpp ? "std::max" : "max") << "(v1 * v1, "
+      o << "    float lc = " << (d == Dialect::Cpp ? "std::max" : "max") << "(v1 * v1, "
         << lit(1e-12f) << ");\n    u = (" << sq << "(" << sq << "(u)) + u * (" << lit(1.0f)
-        << " + c) / (u + c)) * " << lit(0.5f) << ";\n";
+        << " + lc) / (u + lc)) * " << lit(0.5f) << ";\n";
     o << "    float s = u * " << lit(2.0f) << " - " << lit(1.0f) << ";\n";
     o << "    " << t << "[0] = " << lit(1.0f) << ";\n    " << t << "[1] = s;\n";
     o << "    float s2 = s + s;\n";
