@@ -10,6 +10,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "baker/fit/engine_approximations.h"
 #include "baker/fit/fit_verify.h"
 #include "baker/fit/least_squares.h"
 #include "baker/tables/catalogue.h"
@@ -212,4 +213,22 @@ TEST_CASE("kiln fit refuses a table it cannot fit with one line and writes nothi
     CHECK(r.err.find("kiln: error:") == 0);
   }
   CHECK(std::filesystem::is_empty(dir));
+}
+
+TEST_CASE("Karis's EnvBRDFApprox errs 0.5 at most against the exact GGX DFG", "[fit][engines]") {
+  // Karis 2014, "Physically Based Shading on Mobile" (UE4's EnvBRDFApprox; three.js's former
+  // DFGApprox): the numbers docs/fits.md lists.
+  const TableSpec spec = CatalogueTable("ggx-dfg");
+  const float smooth[2] = {1.0f, 0.0f}, rough[2] = {0.5f, 1.0f};
+  float ab[2];
+  KarisEnvBrdfApprox(FitForm(), smooth, ab);  // mirror at normal incidence: A = 1, B = 0
+  CHECK(ab[0] == Approx(1.0).margin(0.01));
+  CHECK(ab[1] == Approx(0.0).margin(0.01));
+  KarisEnvBrdfApprox(FitForm(), rough, ab);
+  CHECK(ab[0] + ab[1] < 1);
+  FitErrorReport rep = MeasureFitError(spec, DfgProbeForm(spec), 2, KarisEnvBrdfApprox);
+  CHECK(rep.maxOffJump > 0.3);
+  CHECK(rep.maxOffJump < 0.6);
+  CHECK(rep.median > 0.01);
+  CHECK(rep.median < 0.1);
 }
