@@ -259,8 +259,9 @@ TEST_CASE("kiln bench writes the promised CSV rows and a well-formed SVG", "[ben
   std::set<std::string> runtime;
   for (const BenchRow& r : result.rows)
     if (r.section == "runtime") runtime.insert(r.method + "/" + std::to_string(r.dims));
-  for (const char* m : {"lookup-linear/1", "lookup-cubic/1", "lookup-linear/2", "lookup-cubic/2",
-                        "lookup-linear/3", "lookup-cubic/3", "evaluate/0", "directional-albedo/0"})
+  for (const char* m :
+       {"lookup-linear/1", "lookup-cubic/1", "lookup-linear/2", "lookup-cubic/2", "lookup-linear/3",
+        "lookup-cubic/3", "evaluate/0", "directional-albedo/0", "fit-evaluate/2"})
     CHECK(runtime.count(m) == 1);
 
   CHECK(XmlProblem(svg).empty());

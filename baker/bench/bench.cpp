@@ -14,6 +14,7 @@
 #include "baker/bench/call_timing.h"
 #include "baker/bench/estimate_table.h"
 #include "baker/bench/reference.h"
+#include "baker/fit/fit.h"
 #include "baker/bake/bake.h"
 #include "baker/io/atomic_write.h"
 #include "baker/tables/catalogue.h"
@@ -533,6 +534,27 @@ class Bench {
                   "lookup_table_read_2D)");
   }
 
+  /// The ggx-dfg closed form of `kiln fit --terms kBenchFitTerms` (docs/fits.md) against the
+  /// lookups: ns per evaluation, and its error against the exact integrals in the note.
+  void FitEvaluation() {
+    constexpr int kBenchFitTerms = 144;
+    FitOptions opt;
+    opt.terms = kBenchFitTerms;
+    opt.threads = threads_;
+    const FitResult fit = FitTable(CatalogueTable("ggx-dfg"), opt);
+    const CallTiming timing = TimeFit(fit.form, plan_.lookupCalls, plan_.batches);
+    const std::string ratio =
+        plainNs_ > 0 ? "; " + Fmt3(timing.nsPerCall / plainNs_) + "x plain-bilinear" : "";
+    AddTiming("fit-evaluate", "ggx-dfg", 2, std::to_string(fit.form.TermsPerChannel()) + " terms",
+              NAN, timing,
+              "median of " + std::to_string(plan_.batches) + " batches of " +
+                  std::to_string(plan_.lookupCalls) + " EvaluateFit calls, " +
+                  std::to_string(fit.form.OperationCount()) + " operations; max error " +
+                  Sci(fit.error.maxOffJump) + " off the mirror's jump (" + Sci(fit.error.max) +
+                  " on it), median " + Sci(fit.error.median) + " against the exact integrals" +
+                  ratio);
+  }
+
   void Direct(const std::string& label, const AnyModel& m) {
     AddTiming("evaluate", label, 0, "", NAN, TimeEvaluate(m, plan_.evaluateCalls, plan_.batches),
               "Evaluate(model, wo, wi), median of " + std::to_string(plan_.batches) + " batches");
@@ -545,6 +567,7 @@ class Bench {
   /// Per model: lookups in its 1D, 2D (and 3D) tables against evaluating and integrating it.
   void Runtime() {
     PlainLookup();
+    FitEvaluation();
     for (const Kind& k : plan_.kinds) {
       TableSpec spec = Sized(k.table, k.base);
       std::string model = spec.model;

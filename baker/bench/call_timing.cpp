@@ -133,6 +133,25 @@ CallTiming TimePlainBilinear(long long calls, int batches) {
   });
 }
 
+CallTiming TimeFit(const FitForm& form, long long calls, int batches) {
+  const size_t dims = form.axes.size();
+  std::vector<float> x(kInputs * dims);
+  uint64_t seed = 13;
+  for (int i = 0; i < kInputs; ++i)
+    for (size_t d = 0; d < dims; ++d)
+      x[i * dims + d] =
+          static_cast<float>(form.axes[d].lo + Uniform(seed) * (form.axes[d].hi - form.axes[d].lo));
+  return Median(calls, batches, [&] {
+    double sum = 0;
+    float out[4];
+    for (long long i = 0; i < calls; ++i) {
+      EvaluateFit(form, &x[static_cast<size_t>(i % kInputs) * dims], out);
+      sum += out[0];
+    }
+    g_sink = g_sink + sum;
+  });
+}
+
 CallTiming TimeEvaluate(const AnyModel& model, long long calls, int batches) {
   std::vector<Vec3> wo(kInputs), wi(kInputs);
   uint64_t seed = 12;

@@ -3,6 +3,7 @@
 // over `batches` batches of ns per call, on one thread, over fixed-seed inputs (4096 lookup
 // points or direction pairs, cycled, so the inputs stay in cache the way a shader's would).
 #pragma once
+#include "baker/fit/fit_form.h"
 #include "baker/models/registry.h"
 #include "kiln/table.h"
 
@@ -34,6 +35,10 @@ constexpr int kPlainTableSize = 128;
 /// linear in sqrt(roughness), float arithmetic, clamp to edge, no warp and no validation. The
 /// floor a table lookup is measured against (random mu and roughness in [0, 1]).
 CallTiming TimePlainBilinear(long long calls, int batches);
+
+/// `calls` evaluations per batch of a closed-form fit (fit/fit_form.h EvaluateFit, the float
+/// arithmetic of the emitted code) at random points inside its axes.
+CallTiming TimeFit(const FitForm& form, long long calls, int batches);
 
 /// `calls` evaluations of f(wo, wi) per batch, wo and wi uniform in (mu, phi) above the horizon.
 CallTiming TimeEvaluate(const AnyModel& model, long long calls, int batches);

@@ -17,6 +17,7 @@
 
 #include "baker/bake/lookup_error.h"
 #include "baker/cli/commands.h"
+#include "baker/fit/fit_verify.h"
 #include "baker/io/texture_readers.h"
 #include "baker/models/registry.h"
 #include "baker/tables/engine_layout.h"
@@ -132,6 +133,16 @@ void RegisterVerify(CLI::App& app) {
       throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-12, 1e-4]");
     CheckThreads("verify", args->threads);
+    // A closed-form fit (DIR/TABLE-fit.h, `kiln fit`): its own check (baker/fit/fit_verify.h).
+    if (args->paths.size() == 1 && IsFitHeaderPath(args->paths[0])) {
+      FitVerifyResult r = VerifyFitHeader(args->paths[0], args->threads);
+      std::printf("%-40s max %.3e (off the jump %.3e)  median %.3e  stated %.3e (%.3e)  %s\n",
+                  args->paths[0].c_str(), r.measured.max, r.measured.maxOffJump, r.measured.median,
+                  r.fit.statedMax, r.fit.statedOffJump, r.ok ? "ok" : "EXCEEDS");
+      if (!r.note.empty()) std::fprintf(stderr, "kiln: note: %s\n", r.note.c_str());
+      if (!r.ok) throw std::runtime_error("verify: " + args->paths[0] + ": " + r.problem);
+      return;
+    }
     std::vector<std::string> files;
     for (const std::string& p : args->paths)
       for (const std::string& f : ExrFiles(p)) files.push_back(f);

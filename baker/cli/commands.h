@@ -89,5 +89,7 @@ void RegisterSample(CLI::App& app);
 void RegisterVerify(CLI::App& app);
 /// kiln atlas [--out DIR] [--only a,b] [--grid N] [-j N]: the error atlas (baker/atlas/atlas.h).
 void RegisterAtlas(CLI::App& app);
+/// kiln fit TABLE [--max-error E | --terms N] [--out DIR]: a closed form (baker/fit/fit.h).
+void RegisterFit(CLI::App& app);
 
 }  // namespace kiln::cli

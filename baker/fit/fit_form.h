@@ -1,0 +1,64 @@
+// A closed-form fit of a table (`kiln fit`, docs/fits.md): per channel, a tensor product of
+// Chebyshev polynomials in warped axes. Axis d's value x is clamped to [lo, hi], mapped to
+// w = ((x - lo) / (hi - lo))^p (p = 1, 1/2 or 1/4: the warp) and to s = 2 w - 1 in [-1, 1];
+// the channel is sum_ij c_ij T_i(s_0) T_j(s_1). The evaluation here is the float arithmetic the
+// emitted C++, GLSL and HLSL perform, in the same order, so the bound measured with it holds for
+// the emitted code.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace kiln {
+
+/// The warp of one fitted axis: w = u^p with u the axis value normalised to [0, 1], or (Layer,
+/// axis 0 of a (mu, roughness) fit only) kiln's root4-layer warp with an unclamped scale:
+/// w = (u^(1/4) + u (1 + c) / (u + c)) / 2, c = max(r^2, 1e-12) with r axis 1's clamped value
+/// (the table's root4-layer warp), which follows the grazing layer of a microfacet lobe (a
+/// function of mu / alpha, alpha = r^2, at least kiln's smallest alpha 1e-12).
+enum class FitWarp { Linear, Sqrt, Root4, Layer };
+
+/// "linear", "sqrt", "root4", "layer".
+const char* FitWarpName(FitWarp w);
+/// The warp named `name`; throws std::invalid_argument for another name.
+FitWarp FitWarpFromName(const std::string& name);
+
+/// One fitted axis: its declared domain, warp and polynomial degree.
+struct FitAxis {
+  std::string name;
+  double lo = 0, hi = 1;
+  FitWarp warp = FitWarp::Linear;
+  int degree = 0;
+};
+
+/// A fitted closed form: axes (the table's order, 1 or 2), channels, and per channel the
+/// (degree_0 + 1) x (degree_1 + 1) coefficients in float, axis 0 slowest.
+struct FitForm {
+  std::string table;  ///< the table's name, e.g. "ggx-dfg"
+  std::vector<std::string> channels;
+  std::vector<FitAxis> axes;
+  std::vector<float> coefficients;  ///< channel-major, then axis 0's index, then axis 1's
+
+  /// Coefficients per channel: the product of (degree + 1) over the axes.
+  int TermsPerChannel() const;
+  /// The float operations of one evaluation of every channel: clamps, warps (sqrt counted as
+  /// one), the Chebyshev recurrences and the multiply-adds of the sums (multiply and add each one).
+  int OperationCount() const;
+  /// The sqrt among them.
+  int SqrtCount() const;
+};
+
+/// The fit's channels at x (axis values in the table's order), in float as the emitted code
+/// computes them; `out` gets channels.size() values.
+void EvaluateFit(const FitForm& form, const float* x, float* out);
+
+/// The Chebyshev values T_0..T_degree at s in [-1, 1], in double (the least-squares design).
+void ChebyshevRow(int degree, double s, double* t);
+
+/// The warped coordinates s in [-1, 1] (one per axis) of the point x, in double.
+void WarpedCoordinates(const FitForm& form, const double* x, double* s);
+
+/// The point x at warped coordinates s (the inverse of WarpedCoordinates; a Layer axis 0 by
+/// bisection at axis 1's value).
+void PointAtWarped(const FitForm& form, const double* s, double* x);
+
+}  // namespace kiln
