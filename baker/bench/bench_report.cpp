@@ -122,92 +122,99 @@ std::string BenchSvg(const std::vector<BenchRow>& rows) {
       columns);
 }
 
-std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
-  std::vector<std::string> out;
+namespace {
+
+/// How kiln's adaptive or fixed rule `k` was set: "tol 1e-06", or "the fixed rule".
+std::string HowSet(const BenchRow& k) {
+  return k.method == "kiln-fixed-rule" ? std::string("the fixed rule") : "tol " + Short(k.setting);
+}
+
+/// The summary line of one table of the "sweep" section: kiln against Monte Carlo and
+/// Gauss-Legendre at equal error and at their best; "" when the table has no kiln row.
+std::string SweepLine(const std::vector<BenchRow>& rows, const std::string& table) {
+  const BenchRow* mc = Find(rows, "sweep", table, "mc-hammersley", 1024);
+  std::vector<const BenchRow*> kiln, mcs, gls;
+  for (const BenchRow& r : rows)
+    if (r.section == "sweep" && r.table == table) {
+      if (r.method == "kiln" || r.method == "kiln-fixed-rule") kiln.push_back(&r);
+      if (r.method == "mc-hammersley") mcs.push_back(&r);
+      if (r.method == "gauss-legendre") gls.push_back(&r);
+    }
+  if (kiln.empty()) return "";
+  auto byTime = [](const BenchRow* a, const BenchRow* b) { return a->seconds < b->seconds; };
+  auto byError = [](const BenchRow* a, const BenchRow* b) { return a->bakeMax < b->bakeMax; };
+  std::sort(kiln.begin(), kiln.end(), byTime);
+  const BenchRow* best = *std::min_element(kiln.begin(), kiln.end(), byError);
+  std::string line = table + " " + kiln.front()->size + ":";
+  if (mc) {
+    line += " 1024-sample MC " + Errors(*mc) + ";";
+    const BenchRow* match = nullptr;
+    for (const BenchRow* k : kiln)
+      if (k->bakeMax <= mc->bakeMax) {
+        match = k;
+        break;
+      }
+    if (match) {
+      line += " kiln reaches that error (or less) fastest with " + HowSet(*match) + ": " +
+              Errors(*match) + " = " + Fmt("%.3g", match->seconds / mc->seconds) + "x the MC time;";
+      // Equal error: where the MC rows' error-time line (least squares in log-log over the
+      // rows with >= 1024 samples) reaches that kiln row's max error. An extrapolation.
+      double sx = 0, sy = 0, sxx = 0, sxy = 0;
+      int n = 0;
+      for (const BenchRow& r : rows)
+        if (r.section == "sweep" && r.table == table && r.method == "mc-hammersley" &&
+            r.setting >= 1024 && r.seconds > 0 && r.bakeMax > 0) {
+          double x = std::log10(r.seconds), y = std::log10(r.bakeMax);
+          sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
+        }
+      double slope = n >= 2 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0;
+      if (slope < 0) {
+        double a = (sy - slope * sx) / n;
+        double need = std::pow(10.0, (std::log10(match->bakeMax) - a) / slope);
+        line += " MC's max error falls as time^" + Fmt("%.2f", slope) + " (fit over " +
+                std::to_string(n) + " rows), so it would need about " + Fmt("%.2g", need) +
+                " s for kiln's " + Fmt("%.1e", match->bakeMax) + " (extrapolated): kiln is ~" +
+                Fmt("%.2g", need / match->seconds) + "x faster at equal error;";
+      }
+    }
+  }
+  line += " kiln's best: " + HowSet(*best) + ", " + Errors(*best) + ";";
+  if (!mcs.empty()) {
+    const BenchRow* m = *std::min_element(mcs.begin(), mcs.end(), byError);
+    line += " best MC (" + Short(m->setting) + " samples) " + Errors(*m) + ";";
+    // Measured, no extrapolation: the fastest kiln row at least as accurate as MC's best.
+    for (const BenchRow* k : kiln)
+      if (k->bakeMax <= m->bakeMax) {
+        line += " kiln beats that with " + HowSet(*k) + " in " + Fmt("%.3g", k->seconds) + " s (" +
+                Fmt("%.2g", k->seconds / m->seconds) + "x the time, " +
+                Fmt("%.2g", m->bakeMax / k->bakeMax) + "x smaller max error);";
+        break;
+      }
+  }
+  if (!gls.empty()) {
+    const BenchRow* g = *std::min_element(gls.begin(), gls.end(), byError);
+    line += " best Gauss-Legendre (" + Short(g->setting) + " points) " + Errors(*g) + ".";
+  }
+  return line;
+}
+
+/// The summary line of one table of the "size" section: its lookup errors at each size.
+std::string SizeLine(const std::vector<BenchRow>& rows, const std::string& table) {
+  std::string line = table +
+                     " lookup error against size (kiln tol 1e-8; linear max / linear max off "
+                     "the corner / linear rms / cubic rms):";
+  for (const BenchRow& r : rows)
+    if (r.section == "size" && r.table == table && r.method == "kiln")
+      line += " " + r.size + " (" + std::to_string(r.bytes) + " B): " + Fmt("%.1e", r.linearMax) +
+              " / " + Fmt("%.1e", r.linearMaxOffCorner) + " / " + Fmt("%.1e", r.linearRms) + " / " +
+              Fmt("%.1e", r.cubicRms) + ";";
+  return line;
+}
+
+/// The summary line of the "baker-issue" section (ggx-dfg, kiln against the peers' Monte Carlo
+/// bake as commands); "" without its rows.
+std::string BakerIssueLine(const std::vector<BenchRow>& rows) {
   const double nan = NAN;
-  // "tol 1e-06" for an adaptive kiln row, "the fixed rule" for the fixed one.
-  auto how = [](const BenchRow& k) {
-    return k.method == "kiln-fixed-rule" ? std::string("the fixed rule")
-                                         : "tol " + Short(k.setting);
-  };
-  for (const std::string& table : Tables(rows, "sweep")) {
-    const BenchRow* mc = Find(rows, "sweep", table, "mc-hammersley", 1024);
-    std::vector<const BenchRow*> kiln, mcs, gls;
-    for (const BenchRow& r : rows)
-      if (r.section == "sweep" && r.table == table) {
-        if (r.method == "kiln" || r.method == "kiln-fixed-rule") kiln.push_back(&r);
-        if (r.method == "mc-hammersley") mcs.push_back(&r);
-        if (r.method == "gauss-legendre") gls.push_back(&r);
-      }
-    if (kiln.empty()) continue;
-    auto byTime = [](const BenchRow* a, const BenchRow* b) { return a->seconds < b->seconds; };
-    auto byError = [](const BenchRow* a, const BenchRow* b) { return a->bakeMax < b->bakeMax; };
-    std::sort(kiln.begin(), kiln.end(), byTime);
-    const BenchRow* best = *std::min_element(kiln.begin(), kiln.end(), byError);
-    std::string line = table + " " + kiln.front()->size + ":";
-    if (mc) {
-      line += " 1024-sample MC " + Errors(*mc) + ";";
-      const BenchRow* match = nullptr;
-      for (const BenchRow* k : kiln)
-        if (k->bakeMax <= mc->bakeMax) {
-          match = k;
-          break;
-        }
-      if (match) {
-        line += " kiln reaches that error (or less) fastest with " + how(*match) + ": " +
-                Errors(*match) + " = " + Fmt("%.3g", match->seconds / mc->seconds) +
-                "x the MC time;";
-        // Equal error: where the MC rows' error-time line (least squares in log-log over the
-        // rows with >= 1024 samples) reaches that kiln row's max error. An extrapolation.
-        double sx = 0, sy = 0, sxx = 0, sxy = 0;
-        int n = 0;
-        for (const BenchRow& r : rows)
-          if (r.section == "sweep" && r.table == table && r.method == "mc-hammersley" &&
-              r.setting >= 1024 && r.seconds > 0 && r.bakeMax > 0) {
-            double x = std::log10(r.seconds), y = std::log10(r.bakeMax);
-            sx += x, sy += y, sxx += x * x, sxy += x * y, ++n;
-          }
-        double slope = n >= 2 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) : 0;
-        if (slope < 0) {
-          double a = (sy - slope * sx) / n;
-          double need = std::pow(10.0, (std::log10(match->bakeMax) - a) / slope);
-          line += " MC's max error falls as time^" + Fmt("%.2f", slope) + " (fit over " +
-                  std::to_string(n) + " rows), so it would need about " + Fmt("%.2g", need) +
-                  " s for kiln's " + Fmt("%.1e", match->bakeMax) + " (extrapolated): kiln is ~" +
-                  Fmt("%.2g", need / match->seconds) + "x faster at equal error;";
-        }
-      }
-    }
-    line += " kiln's best: " + how(*best) + ", " + Errors(*best) + ";";
-    if (!mcs.empty()) {
-      const BenchRow* m = *std::min_element(mcs.begin(), mcs.end(), byError);
-      line += " best MC (" + Short(m->setting) + " samples) " + Errors(*m) + ";";
-      // Measured, no extrapolation: the fastest kiln row at least as accurate as MC's best.
-      for (const BenchRow* k : kiln)
-        if (k->bakeMax <= m->bakeMax) {
-          line += " kiln beats that with " + how(*k) + " in " + Fmt("%.3g", k->seconds) + " s (" +
-                  Fmt("%.2g", k->seconds / m->seconds) + "x the time, " +
-                  Fmt("%.2g", m->bakeMax / k->bakeMax) + "x smaller max error);";
-          break;
-        }
-    }
-    if (!gls.empty()) {
-      const BenchRow* g = *std::min_element(gls.begin(), gls.end(), byError);
-      line += " best Gauss-Legendre (" + Short(g->setting) + " points) " + Errors(*g) + ".";
-    }
-    out.push_back(line);
-  }
-  for (const std::string& table : Tables(rows, "size")) {
-    std::string line = table +
-                       " lookup error against size (kiln tol 1e-8; linear max / linear max off "
-                       "the corner / linear rms / cubic rms):";
-    for (const BenchRow& r : rows)
-      if (r.section == "size" && r.table == table && r.method == "kiln")
-        line += " " + r.size + " (" + std::to_string(r.bytes) + " B): " + Fmt("%.1e", r.linearMax) +
-                " / " + Fmt("%.1e", r.linearMaxOffCorner) + " / " + Fmt("%.1e", r.linearRms) +
-                " / " + Fmt("%.1e", r.cubicRms) + ";";
-    out.push_back(line);
-  }
   const BenchRow* k = Find(rows, "baker-issue", "ggx-dfg", "kiln", nan);
   const BenchRow* cmd = Find(rows, "baker-issue", "ggx-dfg", "kiln-bake-command", nan);
   const BenchRow* mc = Find(rows, "baker-issue", "ggx-dfg", "mc-hammersley", nan);
@@ -232,8 +239,32 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
       line += "; MC with per-texel sampling (as Filament's generator) " +
               Fmt("%.3g", perTexel->seconds) + " s: the whole kiln command " +
               Fmt("%.3g", cmd->seconds / perTexel->seconds) + "x";
-    out.push_back(line);
+    return line;
   }
+  return "";
+}
+
+/// The summary line of the "runtime" section: nanoseconds per call of each lookup.
+std::string RuntimeLine(const std::vector<BenchRow>& rows) {
+  std::string lookups = "runtime ns/call (1 thread):";
+  for (const BenchRow& r : rows) {
+    if (r.section != "runtime") continue;
+    std::string what =
+        r.method == "directional-albedo" ? r.method + " tol " + Short(r.setting) : r.method;
+    lookups += " " + r.table + (r.size.empty() ? "" : " " + r.size) + " " + what + " " +
+               Fmt("%.3g", r.nsPerCall) + ";";
+  }
+  return lookups;
+}
+
+}  // namespace
+
+std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
+  std::vector<std::string> out;
+  for (const std::string& table : Tables(rows, "sweep"))
+    if (std::string line = SweepLine(rows, table); !line.empty()) out.push_back(line);
+  for (const std::string& table : Tables(rows, "size")) out.push_back(SizeLine(rows, table));
+  if (std::string line = BakerIssueLine(rows); !line.empty()) out.push_back(line);
   for (const char* method : {"kiln", "mc-hammersley"}) {
     std::vector<const BenchRow*> t;
     for (const BenchRow& r : rows)
@@ -245,15 +276,7 @@ std::vector<std::string> BenchSummary(const std::vector<BenchRow>& rows) {
                     Fmt("%.2f", t[0]->seconds / t[1]->seconds) + "x)" +
                     (std::string(method) == "kiln" ? "; " + t[1]->note : std::string()));
   }
-  std::string lookups = "runtime ns/call (1 thread):";
-  for (const BenchRow& r : rows) {
-    if (r.section != "runtime") continue;
-    std::string what =
-        r.method == "directional-albedo" ? r.method + " tol " + Short(r.setting) : r.method;
-    lookups += " " + r.table + (r.size.empty() ? "" : " " + r.size) + " " + what + " " +
-               Fmt("%.3g", r.nsPerCall) + ";";
-  }
-  out.push_back(lookups);
+  out.push_back(RuntimeLine(rows));
   return out;
 }
 
