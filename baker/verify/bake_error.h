@@ -17,7 +17,7 @@ constexpr int kBakeSampleNodes = 24;
 constexpr int kBakeWorstNodes = 8;
 /// Integrand evaluations the reference may spend per table once the corners are done (counted,
 /// never timed: the same nodes for any thread count).
-constexpr long long kBakeCheckIntegrand = 6000000;
+constexpr long long kBakeCheckIntegrand = 3000000;
 /// The reference's tolerance is the declared bake error divided by this (capped at
 /// kBakeRefTolMax, at least kBakeRefTolMin), and the check allows twice it on top of the claim.
 constexpr double kBakeRefTolDivisor = 20;
