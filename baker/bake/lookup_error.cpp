@@ -176,8 +176,10 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
     }
     PointAtWarped(spec, t, x);
     IntegrationStats st;
-    std::vector<double> exact =
-        opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st) : SearchReference(spec, x, st);
+    std::vector<double> exact = opt.refTol > 0 ? EvaluateSpec(spec, x, opt.refTol, st)
+                                : opt.bakeRule ? EvaluateSpec(spec, x, st)
+                                               : SearchReference(spec, x, st);
+    if (opt.bakeRule) st.errorEstimate = 0;  // the bake's own rule
     // One float per channel of the table, and at least one per exact value (a table with fewer
     // channels than its quantity then compares the missing ones against 0).
     std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);

@@ -56,8 +56,10 @@ void LtcPoint(const TableSpec& spec, const double* x, double* r, double* mu) {
   *mu = std::isnan(s) ? CoordinateOf(spec, x, "mu", 1) : 1 - s * s;
   *mu = Clamp(*mu, 0.0, 1.0);
   // charlie-smith's albedo starts at mu = kCharlieSmithMinMu (its Lambda fit is singular at
-  // grazing): every channel of the N.V = 0 row is at the fit's theta_o = 1.57 rad (mu = 8e-4).
-  if (spec.model == "charlie-smith") *mu = LtcFitMu(*mu);
+  // grazing: E(0) = 1.96, E(1e-4) = 1.26 at r = 0.1): the norm of the N.V = 0 row is E there,
+  // where charlie-smith-albedo's domain starts (the channel's meaning says so); the coefficients
+  // of every row below mu = 8e-4 are fitted at theta_o = 1.57 rad (LtcFitMu).
+  if (spec.model == "charlie-smith") *mu = std::max(*mu, kCharlieSmithMinMu);
   // lafortune at r = 1 has n = 0, where the model is Lambertian (0^0 = 1) but its albedo rule
   // and albedo table take the limit n -> 0+ (the half-space m.l > 0): the fit and the norm take
   // that limit too, at r = 1 - 1e-6 (n = 2e-6).
@@ -73,11 +75,15 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
   std::string name = std::string(QuantityName(Quantity::Ltc)) + "-" + model;
   if (!(axes.size() == 2 && axes[0].name == "roughness" && axes[1].name == "sqrt_one_minus_mu"))
     name += "-kiln";
+  std::string norm = "norm: integral f mu_l dl at F = 1 (published ltc_2.x)";
+  if (model == "charlie-smith")  // LtcPoint
+    norm +=
+        ", at mu below 1e-4 (the N.V = 0 row) the value at mu = 1e-4, where the model's "
+        "albedo starts (charlie-smith-albedo)";
   return Shell(
       Quantity::Ltc, name, model, {"minv_a", "minv_b", "minv_c", "minv_d", "norm", "fresnel"},
       {"M^-1 [0][0] / M^-1 [1][1] (published ltc_1.x)", "M^-1 [2][0] / M^-1 [1][1] (ltc_1.y)",
-       "M^-1 [0][2] / M^-1 [1][1] (ltc_1.z)", "M^-1 [2][2] / M^-1 [1][1] (ltc_1.w)",
-       "norm: integral f mu_l dl at F = 1 (published ltc_2.x)",
+       "M^-1 [0][2] / M^-1 [1][1] (ltc_1.z)", "M^-1 [2][2] / M^-1 [1][1] (ltc_1.w)", norm,
        "Fresnel: integral f (1 - o.h)^5 mu_l dl at F = 1 (ltc_2.y)"},
       std::move(axes));
 }
@@ -219,6 +225,8 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 const char* RuleVersion(const TableSpec& spec) {
   // "fit4o": the declared fit error in the overlap form (DeclaresOverlapError), misses refitted
   // (LtcFitOptions::retryMisses), the sheens' proposal with its horizon density.
+  // charlie-smith's norm row at N.V = 0 holds E(1e-4), was E(8e-4) (LtcPoint).
+  if (spec.model == "charlie-smith") return "fit4o-rule3-mu0-1e-4";
   if (DeclaresOverlapError(spec.model))
     return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit4o-rule3" : "fit4o-rule2";
   return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
