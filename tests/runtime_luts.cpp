@@ -14,11 +14,10 @@
 #include "test_util.h"
 
 using namespace kiln;
-using kiln::test::LutsDir;
 using kiln::test::LutFiles;
+using kiln::test::LutsDir;
 
 namespace {
-
 
 /// One file per table, as the manifest's "file" names it (part 1 of a table stored in parts,
 /// whose loading reads the other parts too).
@@ -112,7 +111,7 @@ static void VerifyShard(int shard) {
   for (size_t i = shard; i < files.size(); i += kShards, ++n)
     paths += " " + LutsDir() + "/" + files[i];
   REQUIRE(n > 0);
-  auto r = test::RunKiln("verify" + paths + " --points 4 --cells 8 --tol 1e-6 -j 2");
+  auto r = test::RunKiln("verify" + paths + " --points 4 --cells 8 --tol 1e-6 --bake-nodes 8 -j 2");
   INFO(r.out << r.err);
   CHECK(r.exitCode == 0);
   CHECK(r.out.find(std::to_string(n) + " tables, 0 over their bound") != std::string::npos);

@@ -78,7 +78,7 @@ TEST_CASE("A specular lobe baked by the diffuse fixed rule under an honest heade
   std::vector<AxisSpec> axes = albedo.defaultAxes("lafortune");
   axes[0].size = 12;
   axes[1].size = 12;
-  axes[1].hi = 0.9;  // (at r = 1, n = 0, the rule takes the limit n -> 0+, not the Lambertian)
+  axes[1].hi = 0.7;  // (towards r = 1, n -> 0, its own rule departs from adaptive quadrature)
   TableSpec spec = albedo.makeSpec("lafortune", axes);
   Table t = TableShell(spec, "test", "light space: fixed tensor Gauss-Legendre rule");
   const size_t nc = spec.channels.size();
@@ -119,4 +119,30 @@ TEST_CASE("The bake-error check takes every corner, the worst-departing nodes an
     CHECK(std::find(a.begin(), a.begin() + 4, corner) != a.begin() + 4);
   CHECK(std::find(a.begin() + 4, a.begin() + 12, planted) != a.begin() + 12);
   CHECK(a.size() <= 4 + 8 + 24);
+}
+
+TEST_CASE("ltc-charlie-smith: a norm row at N.V = 0 that holds E(8e-4) instead of E(1e-4) fails",
+          "[verify][bake-error][ltc]") {
+  // The model's albedo starts at mu = 1e-4 (its Lambda fit is singular at grazing: E(0) = 1.96,
+  // E(1e-4) = 1.26 at r = 0.1); the file's N.V = 0 row holds the norm there, and says so.
+  Table t = Committed("ltc-charlie-smith-1");
+  TableSpec spec = SpecFromTable(t);
+  REQUIRE(spec.meanings[4].find("mu = 1e-4") != std::string::npos);
+  CHECK(Check(t).ok);
+  // The row as the fit's theta_o = 1.57 rad placed it before: E at mu = cos(1.57) = 8e-4.
+  const QuantityInfo& albedo = Describe(Quantity::Albedo);
+  TableSpec e = albedo.makeSpec("charlie-smith", albedo.defaultAxes("charlie-smith"));
+  const size_t nr = static_cast<size_t>(spec.axes[0].size), nc = t.channels.size();
+  const size_t row = nr * static_cast<size_t>(spec.axes[1].size - 1);  // sqrt(1 - mu) = 1
+  for (size_t ir = 0; ir < nr; ++ir) {
+    double x[3] = {0, 0, 0};
+    NodeCoordinates(spec, row + ir, x);
+    const double xm[3] = {std::cos(1.57), x[0], 0};
+    IntegrationStats st;
+    t.data[(row + ir) * nc + 4] = static_cast<float>(EvaluateSpec(e, xm, st)[0]);
+  }
+  verify::BakeErrorCheck old = Check(t);
+  INFO("E(8e-4) row: " << old.max << " at " << old.WhereText(spec));
+  CHECK_FALSE(old.ok);
+  CHECK(old.max > 1e-2);
 }
