@@ -48,7 +48,9 @@ void TexelPoint(const TableSpec& spec, size_t i, double* r, double* mu) {
   NodeCoordinates(spec, i, x);
   *r = x[0];
   *mu = 1 - x[1] * x[1];
-  if (spec.model == "charlie-smith") *mu = LtcFitMu(*mu);
+  // charlie-smith's norm at N.V = 0 is E at mu = 1e-4, where its albedo starts (its fit is at
+  // LtcFitMu).
+  if (spec.model == "charlie-smith") *mu = std::max(*mu, 1e-4);
   if (spec.model == "lafortune") *r = std::min(*r, 1 - 1e-6);
 }
 

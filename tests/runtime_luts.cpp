@@ -58,12 +58,15 @@ TEST_CASE("luts/ holds the catalogue, listed in its manifest", "[luts]") {
     // sqrt(1 - N.V), for the shaders written for the original textures): they cannot follow the
     // albedo's layer at N.V -> 0, their norm channels declare 0.163 (ltc-ggx), 0.129
     // (ltc-beckmann, ltc-blinn-phong) (README "LTC tables"); kiln's own layout, ltc-ggx-kiln (on
-    // request), declares 7.5e-4. Added with issue #18: ltc-charlie-smith 0.108 (README "LTC
-    // tables").
+    // request), declares 7.5e-4. ltc-charlie-smith declares 0.209: its N.V = 0 row holds the
+    // norm at mu = 1e-4, where its albedo starts, and at r = 0.12 E rises from 1.16 there to 1.28
+    // at mu = 0.005 and falls to 1.05 at the next row (mu = 0.0315): a peak no linear axis in
+    // sqrt(1 - N.V) follows (docs/ltc.md).
     const std::string name = t["name"].get<std::string>();
-    const bool publishedLtc = name == "ltc-ggx" || name == "ltc-beckmann" ||
-                              name == "ltc-blinn-phong" || name == "ltc-charlie-smith";
-    CHECK(t["lookup_error"]["max"].get<double>() < (publishedLtc ? 0.2 : 1e-3));
+    const bool publishedLtc =
+        name == "ltc-ggx" || name == "ltc-beckmann" || name == "ltc-blinn-phong";
+    const double limit = name == "ltc-charlie-smith" ? 0.25 : publishedLtc ? 0.2 : 1e-3;
+    CHECK(t["lookup_error"]["max"].get<double>() < limit);
   }
 }
 
@@ -101,9 +104,11 @@ TEST_CASE("A lookup at a node of any committed table returns the stored texel ex
 }
 
 // `kiln verify` against adaptive quadrature (independent of the fixed rules the tables were baked
-// with) on a strided sample of each table's cells. The tables are dealt into eight shards, one
-// test each, so that no single test carries the whole catalogue's cost on a busy machine (a
-// table's -r and -t siblings, 4 apart in name order, land in different shards).
+// with) on a strided sample of each table's cells, and its bake-error check at the corners and
+// the worst-departing nodes only (--bake-nodes 0; the sampled nodes: `kiln verify luts`). The
+// tables are dealt into eight shards, one test each, so that no single test carries the whole
+// catalogue's cost on a busy machine (a table's -r and -t siblings, 4 apart in name order, land
+// in different shards).
 static void VerifyShard(int shard) {
   constexpr int kShards = 8;
   std::vector<std::string> files = TableFiles();
@@ -112,7 +117,7 @@ static void VerifyShard(int shard) {
   for (size_t i = shard; i < files.size(); i += kShards, ++n)
     paths += " " + LutsDir() + "/" + files[i];
   REQUIRE(n > 0);
-  auto r = test::RunKiln("verify" + paths + " --points 4 --cells 8 --tol 1e-6 -j 2");
+  auto r = test::RunKiln("verify" + paths + " --points 4 --cells 8 --tol 1e-6 --bake-nodes 0 -j 2");
   INFO(r.out << r.err);
   CHECK(r.exitCode == 0);
   CHECK(r.out.find(std::to_string(n) + " tables, 0 over their bound") != std::string::npos);

@@ -244,8 +244,10 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   }
   PointAtWarped(spec_, t, x);
   IntegrationStats st;
-  std::vector<double> exact =
-      opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st) : SearchReference(spec_, x, st);
+  std::vector<double> exact = opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st)
+                              : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
+                                              : SearchReference(spec_, x, st);
+  if (opt_.bakeRule) st.errorEstimate = 0;  // the bake's own rule
   // One float per channel of the table, and at least one per exact value (a table with fewer
   // channels than its quantity then compares the missing ones against 0).
   std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);

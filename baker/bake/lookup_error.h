@@ -1,7 +1,8 @@
 // The lookup error of a table: interpolated value against the reference, found by a search that
 // ranks the cells by the interpolation error the table's own node values predict, always takes
 // the cells on the domain's corners and edges, and climbs to the local maximum inside each
-// (docs/accuracy.md "Lookup error"). The bake declares its bound from it and `kiln verify` repeats it.
+// (docs/accuracy.md "Lookup error"). The bake declares its bound from it and `kiln verify` repeats
+// it.
 #pragma once
 #include <string>
 #include <vector>
@@ -47,6 +48,9 @@ struct LookupSearchOptions {
   int threads = 0;    ///< 0: all cores
   Filter filter = Filter::Linear;
   bool alsoCubic = false;  ///< also sample the probe points with the cubic filter
+  /// Evaluate the points by the bake's own rule (EvaluateSpec), not its verification-grade form
+  /// (QuantityInfo::searchRule): referenceError 0, at the bake rule's cost.
+  bool bakeRule = false;
 };
 
 /// The automatic budget: most reference evaluations per table (closed forms reach it).

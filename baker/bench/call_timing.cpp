@@ -140,7 +140,7 @@ CallTiming TimeFit(const FitForm& form, long long calls, int batches) {
   for (int i = 0; i < kInputs; ++i)
     for (size_t d = 0; d < dims; ++d)
       x[i * dims + d] =
-          static_cast<float>(form.axes[d].lo + Uniform(seed) * (form.axes[d].hi - form.axes[d].lo));
+          static_cast<float>(form.axes[d].lo + SplitMixUniform(seed) * (form.axes[d].hi - form.axes[d].lo));
   return Median(calls, batches, [&] {
     double sum = 0;
     float out[4];

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "baker/bake/bake.h"
+#include "baker/bench/estimate_table.h"
 #include "baker/quantities/monte_carlo.h"
 #include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"

@@ -1,33 +1,22 @@
-// kiln verify: repeats the bake's lookup-error search (lookup_error.h) on each table and checks
-// the max it finds against the bound the table declares.
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfInputFile.h>
-#include <OpenEXR/ImfIntAttribute.h>
-#include <dirent.h>
-#include <sys/stat.h>
+// kiln verify: options and output; the checks are in baker/verify/ (verify.h).
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
-#include <cerrno>
-#include <cstring>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
-#include "baker/bake/lookup_error.h"
 #include "baker/cli/commands.h"
 #include "baker/fit/fit_verify.h"
-#include "baker/io/texture_readers.h"
-#include "baker/models/registry.h"
-#include "baker/tables/engine_layout.h"
-#include "kiln/exr_loader.h"
+#include "baker/verify/verify.h"
 
 namespace kiln::cli {
 namespace {
 
 /// The most reference evaluations, cells and random points verify takes per table.
 constexpr long long kMaxVerifyPoints = 10000000;
+/// The most sampled nodes of the bake-error check.
+constexpr int kMaxBakeNodes = 100000;
 
 /// The one-line bar on a terminal: tables done of all, and the one being searched.
 void DrawBar(size_t done, size_t total, const std::string& name) {
@@ -42,39 +31,61 @@ void ClearBar() {
   std::fflush(stderr);
 }
 
-/// Whether the EXR file at `path` is part 2 or later of a wider table (kiln.part > 1): loading
-/// part 1 reads the whole table, so a folder's listing names the table once. False for a file
-/// whose header does not read (its own line reports it).
-bool IsLaterPart(const std::string& path) {
-  try {
-    Imf::InputFile in(path.c_str(), 1);
-    const auto* part = in.header().findTypedAttribute<Imf::IntAttribute>("kiln.part");
-    return part != nullptr && part->value() > 1;
-  } catch (const std::exception&) {
-    return false;
-  }
+/// The verdict as one JSON object (keys: docs/cli.md).
+nlohmann::ordered_json VerdictJson(const verify::TableVerdict& v) {
+  if (!v.error.empty()) return {{"file", v.file}, {"ok", false}, {"error", v.error}};
+  return {{"file", v.file},
+          {"ok", v.ok},
+          {"name", v.name},
+          {"filter", v.filter},
+          {"checked", v.checked},
+          {"max", v.lookup.max},
+          {"rms", v.lookup.rms},
+          {"declared", v.declaredLookup},
+          {"off_corner", v.lookup.maxOutsideCorner},
+          {"where", v.lookupWhere},
+          {"points", v.lookup.points},
+          {"cells", v.lookup.cells},
+          {"climbed", v.lookup.climbed},
+          {"budget", v.lookup.budget},
+          {"bake_max", v.bake.max},
+          {"bake_declared", v.bake.declared},
+          {"bake_where", v.bakeWhere},
+          {"bake_nodes", v.bake.nodes},
+          {"bake_ok", v.bake.ok},
+          {"bake_evals", v.bake.evals},
+          {"bake_seconds", v.bakeSeconds},
+          {"seconds", v.seconds}};
 }
 
-std::vector<std::string> ExrFiles(const std::string& path) {
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) {
-    if (errno == ENOENT || errno == ENOTDIR)
-      throw std::invalid_argument("verify: no such file or folder '" + path + "'");
-    throw std::invalid_argument("verify: cannot access '" + path + "' (" + std::strerror(errno) +
-                                ")");
+/// The verdict's row on stdout: the columns of PrintHeader, then why it failed.
+void PrintRow(const verify::TableVerdict& v) {
+  if (!v.error.empty()) {
+    std::printf("%-40s FAILED: %s\n", v.file.c_str(), v.error.c_str());
+    return;
   }
-  if (!S_ISDIR(st.st_mode)) return {path};
-  std::vector<std::string> out;
-  if (DIR* d = opendir(path.c_str())) {
-    while (dirent* e = readdir(d)) {
-      std::string n = e->d_name;
-      if (n.size() > 4 && n.compare(n.size() - 4, 4, ".exr") == 0 && !IsLaterPart(path + "/" + n))
-        out.push_back(path + "/" + n);
-    }
-    closedir(d);
-  }
-  std::sort(out.begin(), out.end());
-  return out;
+  std::printf("%-40s %11.3e %11.3e %11.3e %11.3e %11.3e %11.3e  %s%s%s%s\n", v.file.c_str(),
+              v.lookup.max, v.lookup.rms, v.declaredLookup, v.lookup.maxOutsideCorner, v.bake.max,
+              v.bake.declared, v.lookupWhere.c_str(), v.lookupOk ? "" : "  EXCEEDS BOUND",
+              v.bake.ok ? "" : ("  EXCEEDS BAKE ERROR at " + v.bakeWhere).c_str(),
+              v.fitProblem.empty() ? "" : "  FIT CHECK FAILED");
+}
+
+void PrintHeader() {
+  std::printf("%-40s %11s %11s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared",
+              "off-corner", "bake-max", "bake-decl", "where (max)");
+}
+
+/// The progress line of one table on `log`.
+void LogVerdict(FILE* log, const verify::TableVerdict& v) {
+  if (!v.fitSummary.empty()) std::fprintf(log, "%-36s %s\n", v.name.c_str(), v.fitSummary.c_str());
+  std::fprintf(log, "%-36s max %.3e  declared %.3e  bake %.3e of %.3e  %6.2f s  %s\n",
+               v.name.c_str(), v.lookup.max, v.declaredLookup, v.bake.max, v.bake.declared,
+               v.seconds,
+               !v.ok        ? "EXCEEDS"
+               : !v.checked ? "(not checked)"
+                            : "ok");
+  std::fflush(log);
 }
 
 }  // namespace
@@ -82,9 +93,10 @@ std::vector<std::string> ExrFiles(const std::string& path) {
 void RegisterVerify(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "verify",
-      "repeat the bake's lookup-error search on each table (corner and edge cells, the cells the "
-      "node values rank worst, a climb to the local maximum in each); exit 1 when one exceeds "
-      "its declared bound");
+      "check every claim of each table: repeat the bake's lookup-error search (corner and edge "
+      "cells, the cells the node values rank worst, a climb to the local maximum in each) and "
+      "compare texels at sampled nodes with an independent reference (the bake error); exit 1 "
+      "when one exceeds its declared bound");
   struct Args {
     std::vector<std::string> paths;
     long long budget = 0, points = 0, cells = 0;
@@ -92,6 +104,7 @@ void RegisterVerify(CLI::App& app) {
     int threads = 0;
     std::string filter;
     bool json = false, quiet = false;
+    int bakeNodes = verify::kBakeSampleNodes;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("paths", args->paths, "tables or folders of tables")->required();
@@ -108,6 +121,11 @@ void RegisterVerify(CLI::App& app) {
       sub->add_option("--tol", args->tol,
                       "reference by adaptive quadrature to this tolerance (default: the bake's own "
                       "method, its fixed rule where it has one)");
+  sub->add_option("--bake-nodes", args->bakeNodes,
+                  "bake-error check: sampled nodes per table besides the corners and the nodes "
+                  "that depart most from their neighbours (reference: adaptive quadrature or a "
+                  "closed form, never the bake's rule)")
+      ->capture_default_str();
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_option("--filter", args->filter,
                   "measure with this filter instead of the declared one (then only reported, "
@@ -129,6 +147,9 @@ void RegisterVerify(CLI::App& app) {
     if (args->points < 0 || args->points > kMaxVerifyPoints)
       throw std::invalid_argument("verify: --points " + std::to_string(args->points) +
                                   " must be in [0, 1e7]");
+    if (args->bakeNodes < 0 || args->bakeNodes > kMaxBakeNodes)
+      throw std::invalid_argument("verify: --bake-nodes " + std::to_string(args->bakeNodes) +
+                                  " must be in [0, 1e5]");
     if (oTol->count() && !(args->tol >= 1e-12 && args->tol <= 1e-4))
       throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-12, 1e-4]");
@@ -145,141 +166,37 @@ void RegisterVerify(CLI::App& app) {
     }
     std::vector<std::string> files;
     for (const std::string& p : args->paths)
-      for (const std::string& f : ExrFiles(p)) files.push_back(f);
+      for (const std::string& f : verify::VerifyInputs(p)) files.push_back(f);
     if (files.empty()) throw std::invalid_argument("verify: no .exr files found");
+    verify::VerifyOptions opt;
+    opt.budget = args->budget;
+    opt.points = args->points;
+    opt.cells = args->cells;
+    opt.tol = args->tol;
+    opt.threads = args->threads;
+    opt.filter = args->filter;
+    opt.bakeNodes = args->bakeNodes;
     // A line per table on stderr (terminal or not), the redrawn bar only on a terminal;
     // --quiet and --json (stdout is then one JSON object with the same numbers): neither.
     FILE* log = args->quiet || args->json ? nullptr : stderr;
     const bool bar = log && isatty(STDERR_FILENO);
     int failed = 0;
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    if (!args->json)
-      std::printf("%-40s %11s %11s %11s %11s  %s\n", "file", "max", "rms", "declared", "off-corner",
-                  "where (max)");
+    if (!args->json) PrintHeader();
     auto start = std::chrono::steady_clock::now();
     for (size_t fi = 0; fi < files.size(); ++fi) {
-      const std::string& f = files[fi];
-      // A file that does not load, or whose metadata cannot be evaluated (unreadable params,
-      // unknown model or quantity, channels the quantity does not have), fails on its own line;
-      // the other files are still checked.
-      auto fail = [&](const std::string& why) {
-        if (args->json)
-          rows.push_back({{"file", f}, {"ok", false}, {"error", why}});
-        else
-          std::printf("%-40s FAILED: %s\n", f.c_str(), why.c_str());
-        ++failed;
-      };
-      // Any format kiln writes (EXR, KTX2, DDS with its manifest.json, 16-bit PNG): the texels
-      // as stored, so a float16 or unorm16 file is measured with its rounding.
-      Table t;
-      try {
-        t = LoadAnyTable(f);
-      } catch (const std::exception& e) {
-        fail(e.what());
-        continue;
-      }
-      TableSpec spec;
-      try {
-        spec = SpecFromTable(t);
-      } catch (const std::exception& e) {
-        fail(e.what());  // an unknown quantity, or unreadable params (SpecFromTable says which)
-        continue;
-      }
-      // An axis over a model parameter must stay inside its range (the evaluators clamp, so the
-      // search would compare the texels with the clamped model), unless the file says that it
-      // clamps there itself (an engine-grid sheen table: sheen_roughness_min, engine_layout.h).
-      std::string outside;
-      if (const ModelInfo* m = FindModel(spec.model))
-        for (const AxisSpec& a : spec.axes)
-          for (const ParamInfo& q : m->params)
-            if (q.name == a.name &&
-                ((a.name == "roughness" ? SheenRoughnessFor(spec, a.lo) : a.lo) < q.lo ||
-                 a.hi > q.hi) &&
-                outside.empty())
-              outside = "axis " + a.name + " [" + FullPrecision(a.lo) + ", " + FullPrecision(a.hi) +
-                        "] is outside model '" + spec.model + "''s range [" + FullPrecision(q.lo) +
-                        ", " + FullPrecision(q.hi) + "]";
-      if (!outside.empty()) {
-        fail(outside);
-        continue;
-      }
-      std::string filter = args->filter.empty() ? t.lookupError.filter : args->filter;
-      bool checked = filter == t.lookupError.filter;
-      LookupErrorReport rep;
-      if (bar) DrawBar(fi, files.size(), t.name);
-      auto t0 = std::chrono::steady_clock::now();
-      try {
-        double lo[3] = {0, 0, 0};
-        for (size_t d = 0; d < spec.axes.size() && d < 3; ++d) lo[d] = spec.axes[d].lo;
-        IntegrationStats stats;
-        size_t channels = EvaluateSpec(spec, lo, stats).size();
-
-        if (channels != t.channels.size()) {
-          if (bar) ClearBar();
-          fail(std::to_string(t.channels.size()) + " channel(s), but quantity '" + t.quantity +
-               "' has " + std::to_string(channels));
-          continue;
-        }
-        LookupSearchOptions opt;
-        opt.budget = args->budget;
-        opt.maxCells = args->cells;
-        opt.randomPoints = args->points;
-        opt.refTol = args->tol;
-        opt.threads = args->threads;
-        opt.filter = filter == "cubic" ? Filter::Cubic : Filter::Linear;
-        rep = MeasureLookupError(spec, t.view(), opt);
-      } catch (const std::exception& e) {
-        if (bar) ClearBar();
-        fail(e.what());
-        continue;
-      }
-      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      // The reference itself is only good to its tolerance (--tol, or the table's own, plus the
-      // bake error the texels declare): allow that much on top of the bound.
-      double refTol = args->tol > 0 ? args->tol : spec.tol;
-      // A verification-grade search reference adds its distance from the bake's method.
-      bool ok =
-          !checked || (t.lookupError.max >= 0 &&
-                       rep.max <= t.lookupError.max + refTol + t.bakeError + rep.referenceError);
-      // A fitted table (ltc) also re-measures its declared fit error (QuantityInfo::verifyTable).
-      std::string fitSummary, fitProblem;
-      if (auto check = Describe(spec.quantity).verifyTable)
-        fitProblem = check(t, args->threads, fitSummary);
-      if (!fitProblem.empty()) ok = false;
+      if (bar) DrawBar(fi, files.size(), files[fi]);
+      verify::TableVerdict v = verify::VerifyTableFile(files[fi], opt);
       if (bar) ClearBar();
-      if (log && !fitSummary.empty())
-        std::fprintf(log, "%-36s %s\n", t.name.c_str(), fitSummary.c_str());
-      if (!fitProblem.empty()) std::fprintf(stderr, "%s: %s\n", f.c_str(), fitProblem.c_str());
-      if (log) {
-        std::fprintf(log, "%-36s max %.3e  declared %.3e  %6.2f s  %s\n", t.name.c_str(), rep.max,
-                     t.lookupError.max, seconds,
-                     !checked ? "(not checked)"
-                     : ok     ? "ok"
-                              : "EXCEEDS");
-        std::fflush(log);
-      }
+      if (!v.fitProblem.empty())
+        std::fprintf(stderr, "%s: %s\n", v.file.c_str(), v.fitProblem.c_str());
+      if (log && v.error.empty()) LogVerdict(log, v);
       if (args->json)
-        rows.push_back({{"file", f},
-                        {"ok", ok},
-                        {"name", t.name},
-                        {"filter", filter},
-                        {"checked", checked},
-                        {"max", rep.max},
-                        {"rms", rep.rms},
-                        {"declared", t.lookupError.max},
-                        {"off_corner", rep.maxOutsideCorner},
-                        {"where", rep.WhereText(spec)},
-                        {"points", rep.points},
-                        {"cells", rep.cells},
-                        {"climbed", rep.climbed},
-                        {"budget", rep.budget},
-                        {"seconds", seconds}});
+        rows.push_back(VerdictJson(v));
       else
-        std::printf("%-40s %11.3e %11.3e %11.3e %11.3e  %s%s\n", f.c_str(), rep.max, rep.rms,
-                    t.lookupError.max, rep.maxOutsideCorner, rep.WhereText(spec).c_str(),
-                    ok ? "" : "  EXCEEDS BOUND");
+        PrintRow(v);
       std::fflush(stdout);
-      if (!ok) ++failed;
+      if (!v.ok) ++failed;
     }
     double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (log) std::fprintf(log, "%zu tables in %.1f s\n", files.size(), total);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "baker/fit/fit.h"
+#include "baker/math/splitmix.h"
 
 namespace kiln {
 
@@ -49,15 +50,6 @@ double ErrorAt(const TableSpec& spec, const FitForm& form, FitEvaluator f, const
   return e;
 }
 
-/// Fixed-seed uniform numbers in [0, 1) (SplitMix64).
-double Uniform(uint64_t& state) {
-  uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return (z >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /// The grid and random probes of the search, before their errors.
 std::vector<Probe> StartProbes(size_t dims) {
   std::vector<Probe> probes;
@@ -72,7 +64,7 @@ std::vector<Probe> StartProbes(size_t dims) {
   uint64_t state = 0x6b696c6e666974ull;  // "kilnfit"
   for (int k = 0; k < kRandomPoints; ++k) {
     Probe p;
-    for (size_t d = 0; d < dims; ++d) p.s[d] = -1 + 2 * Uniform(state);
+    for (size_t d = 0; d < dims; ++d) p.s[d] = -1 + 2 * SplitMixUniform(state);
     probes.push_back(p);
   }
   return probes;

@@ -162,11 +162,15 @@ struct ModelInfo {
   int ltcCatalogue = 0, ltcOnRequest = 0;
   /// LTC: the lobe takes a Schlick F0 term (its ltc fresnel channel is the split sum's B).
   bool schlickFresnel = true;
-  /// LTC: the published layout's first roughness; the mu the fit reads at N.V = 0 is
-  /// LtcFitMu's (a lobe singular at grazing); the largest roughness the fit and norm read.
+  /// LTC: the published layout's first roughness; the largest roughness the fit and norm read.
   double ltcRoughnessLo = 0;
-  bool ltcFitMuFloor = false;
   double ltcRoughnessHi = 1;
+  /// LTC: > 0: the smallest mu the norm channel reads (a lobe singular at grazing): the N.V = 0
+  /// row holds the norm there, where the model's albedo table starts; ltcNormNote says so in
+  /// the file (appended to the channel's meaning) and ltcRuleVersion names the rule.
+  double ltcNormMuLo = 0;
+  const char* ltcNormNote = nullptr;
+  const char* ltcRuleVersion = nullptr;
   /// LTC: the declared fit error is the self-normalised MIS estimate (the catalogue's first
   /// three tables) instead of the overlap form.
   bool ltcSelfNormalisedError = false;

@@ -69,7 +69,13 @@ ModelInfo CharlieSmithModel() {
   m.roughnessAxis = AxisDefault{kSheenTableMinRoughness, 1, 96, Warp::Log};
   m.ltcCatalogue = 4;
   m.ltcRoughnessLo = kSheenTableMinRoughness;
-  m.ltcFitMuFloor = true;  // every channel of the N.V = 0 row at the fit's theta_o = 1.57 rad
+  // Its N.V = 0 row: E(0) = 1.96 but E(1e-4) = 1.26 at r = 0.1 (the Lambda fit is singular at
+  // grazing): the norm there is E(1e-4), where charlie-smith-albedo starts.
+  m.ltcNormMuLo = kCharlieSmithMinMu;
+  m.ltcNormNote =
+      ", at mu below 1e-4 (the N.V = 0 row) the value at mu = 1e-4, where the model's albedo "
+      "starts (charlie-smith-albedo)";
+  m.ltcRuleVersion = "fit4o-rule3-mu0-1e-4";
   return m;
 }
 

@@ -4,8 +4,11 @@
 // Turquin-style multiple-scattering compensation of glass reads next to the 3D E tables (Cycles
 // bakes them beside its 3D ones). Entering: eta in [1.1, 3]; exit: eta' = 1/eta in [1/3, 1/1.1].
 // One family, four kinds (which channel, which side), as quantities/dielectric_albedo.cpp.
+#include <iterator>
+
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
+#include "baker/math/quadrature.h"
 #include "baker/quantities/common.h"
 #include "baker/quantities/dielectric_columns.h"
 
@@ -49,10 +52,10 @@ TableSpec MakeSpec(const std::string&, std::vector<AxisSpec> axes) {
 /// roughness (linear warp) by eta (entering: sqrt warp from 1.1, exit: linear, as the E tables).
 /// The averages are smooth in r, quadratic at r -> 0 (alpha = r^2), and curve most at r ~ 0.7:
 /// with the sqrt warp the 24 x 16 grids declared 1.7e-3 (albedo-t-avg, at r = 0.79) and 1.2e-3
-/// (albedo-r-exit-avg, r = 0.96); with the linear warp all four stay below 1e-3 (docs/catalogue.md, glass).
-/// Exit: 32 x 24, since the search probes every cell's centre (bake/lookup_error.cpp) and found
-/// albedo-r-exit-avg's 24 x 16 at 9.8e-4 (declared 1.5e-3; 8.3e-4 from 3 searched cells before),
-/// at roughness 0.41, eta' 0.37: 32 x 24 declares 7.3e-4 (24 x 24 1.1e-3, 32 x 20 8.7e-4).
+/// (albedo-r-exit-avg, r = 0.96); with the linear warp all four stay below 1e-3 (docs/catalogue.md,
+/// glass). Exit: 32 x 24, since the search probes every cell's centre (bake/lookup_error.cpp) and
+/// found albedo-r-exit-avg's 24 x 16 at 9.8e-4 (declared 1.5e-3; 8.3e-4 from 3 searched cells
+/// before), at roughness 0.41, eta' 0.37: 32 x 24 declares 7.3e-4 (24 x 24 1.1e-3, 32 x 20 8.7e-4).
 template <Quantity Q>
 std::vector<AxisSpec> DefaultAxes(const std::string&) {
   AxisSpec eta = KindOf(Q).exit ? AxisSpec{"eta", 1.0 / 3, 1 / kEtaMin, 24, Warp::Linear}
@@ -140,6 +143,43 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
   return {e[KindOf(spec.quantity).transmit ? 1 : 0]};
 }
 
+/// The 3D E table kind whose mu integral kind `q` is.
+Quantity AlbedoKindOf(Quantity q) {
+  const Kind& k = KindOf(q);
+  if (k.exit) return k.transmit ? Quantity::DielectricAlbedoTExit : Quantity::DielectricAlbedoRExit;
+  return k.transmit ? Quantity::DielectricAlbedoT : Quantity::DielectricAlbedoR;
+}
+
+/// Where kiln verify's mu integral starts its panels (the GGX layer at mu = 0, the middle; the
+/// adaptive panels find the exit side's kinks at mu_c and mu = eta).
+constexpr double kVerifyMuBreaks[] = {0, 1e-4, 1e-2, 0.1, 0.5, 1};
+constexpr int kVerifyMuPanels = 400;
+
+bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out);
+
+/// kiln verify's bake-error reference (QuantityInfo::verifyReference): adaptive Gauss-Kronrod
+/// over mu to `tol` of 2 E(mu) mu, E as the matching 3D table bakes it (its rule, which that
+/// table's own check holds to adaptive quadrature): independent of this kind's mu rule, where
+/// the nested adaptive integral (Evaluate) takes millions of evaluations a node.
+std::vector<double> VerifyReference(const TableSpec& spec, const double* x, double tol,
+                                    IntegrationStats& stats) {
+  std::vector<double> smooth;
+  if (SmoothLimit(spec, x, smooth)) return smooth;
+  CheckModel(spec);
+  const auto [r, eta] = PointOf(spec, x);
+  const QuantityInfo& albedo = Describe(AlbedoKindOf(spec.quantity));
+  const TableSpec e3 = albedo.makeSpec(kModel, albedo.defaultAxes(kModel));
+  auto e = [&](double mu) {
+    const double xm[3] = {mu, r, eta};
+    IntegrationStats st;
+    std::vector<double> v = EvaluateSpec(e3, xm, st);
+    stats.evals += st.evals;
+    return Channels<1>{2 * mu * v[0]};
+  };
+  const int n = static_cast<int>(std::size(kVerifyMuBreaks));
+  return {IntegrateAdaptive<1>(e, kVerifyMuBreaks, n, tol, kVerifyMuPanels)[0]};
+}
+
 /// Roughness 0: the smooth interface's F_avg or 1 - F_avg.
 bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
   if (spec.model != kModel) return false;
@@ -173,6 +213,7 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   q.fixedRuleVersion = KindOf(Q).exit ? "6" : "5";
   if (!KindOf(Q).exit || KindOf(Q).transmit) q.bakeTable = BakeTable;
   q.evaluate = Evaluate;
+  q.verifyReference = VerifyReference;
   q.smoothLimit = SmoothLimit;
   q.method = Method;
   q.sceneKind = true;

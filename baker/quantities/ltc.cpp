@@ -57,8 +57,10 @@ void LtcPoint(const TableSpec& spec, const double* x, double* r, double* mu) {
   *mu = Clamp(*mu, 0.0, 1.0);
   const ModelInfo& m = Info(spec.model);
   // charlie-smith's albedo starts at mu = kCharlieSmithMinMu (its Lambda fit is singular at
-  // grazing): every channel of the N.V = 0 row is at the fit's theta_o = 1.57 rad (mu = 8e-4).
-  if (m.ltcFitMuFloor) *mu = LtcFitMu(*mu);
+  // grazing): the norm of the N.V = 0 row is E where charlie-smith-albedo's domain starts
+  // (ModelInfo::ltcNormMuLo; the channel's meaning says so); the coefficients of every row
+  // below mu = 8e-4 are fitted at theta_o = 1.57 rad (LtcFitMu).
+  if (m.ltcNormMuLo > 0) *mu = std::max(*mu, m.ltcNormMuLo);
   // lafortune at r = 1 has n = 0 (ModelInfo::ltcRoughnessHi): the limit n -> 0+.
   if (m.ltcRoughnessHi < 1) *r = std::min(*r, m.ltcRoughnessHi);
 }
@@ -72,11 +74,12 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
   std::string name = std::string(QuantityName(Quantity::Ltc)) + "-" + model;
   if (!(axes.size() == 2 && axes[0].name == "roughness" && axes[1].name == "sqrt_one_minus_mu"))
     name += "-kiln";
+  std::string norm = "norm: integral f mu_l dl at F = 1 (published ltc_2.x)";
+  if (const ModelInfo* m = FindModel(model); m && m->ltcNormNote) norm += m->ltcNormNote;  // LtcPoint
   return Shell(
       Quantity::Ltc, name, model, {"minv_a", "minv_b", "minv_c", "minv_d", "norm", "fresnel"},
       {"M^-1 [0][0] / M^-1 [1][1] (published ltc_1.x)", "M^-1 [2][0] / M^-1 [1][1] (ltc_1.y)",
-       "M^-1 [0][2] / M^-1 [1][1] (ltc_1.z)", "M^-1 [2][2] / M^-1 [1][1] (ltc_1.w)",
-       "norm: integral f mu_l dl at F = 1 (published ltc_2.x)",
+       "M^-1 [0][2] / M^-1 [1][1] (ltc_1.z)", "M^-1 [2][2] / M^-1 [1][1] (ltc_1.w)", norm,
        "Fresnel: integral f (1 - o.h)^5 mu_l dl at F = 1 (ltc_2.y)"},
       std::move(axes));
 }
@@ -229,6 +232,8 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 const char* RuleVersion(const TableSpec& spec) {
   // "fit4o": the declared fit error in the overlap form (DeclaresOverlapError), misses refitted
   // (LtcFitOptions::retryMisses), the sheens' proposal with its horizon density.
+  // A model's own version (ModelInfo::ltcRuleVersion: charlie-smith's norm row at N.V = 0).
+  if (const char* v = Info(spec.model).ltcRuleVersion) return v;
   if (DeclaresOverlapError(spec.model))
     return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit4o-rule3" : "fit4o-rule2";
   return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
@@ -354,6 +359,37 @@ std::string FitErrorMethod(const std::string& model) {
   return buf;
 }
 
+/// Whether the fit's texel (ir, im) of an nr x nm grid is one the polygon error is measured at:
+/// every kPolygonStride-th node of each axis and the last (not the roughness-0 column: its lobe,
+/// alpha = kLtcAlphaFloor, is a near-mirror whose direct integration takes seconds).
+bool OnPolygonSubset(size_t ir, size_t im, size_t nr, size_t nm) {
+  return ((ir % kPolygonStride == 0 && ir > 0) || ir + 1 == nr) &&
+         (im % kPolygonStride == 0 || im + 1 == nm);
+}
+
+/// The polygon error of the stored texel `c` (coefficients and norm) at (r, mu): the max over
+/// `polygons` of |norm E_ltc(P) - integral_P f mu_l|, the lobe integrated directly to
+/// kPolygonTol (its integrand evaluations added to *evals).
+double PolygonError(const TableSpec& spec, double r, double mu, const float* c,
+                    const std::vector<std::vector<Vec3>>& polygons, long long* evals) {
+  LtcLobe lobe = FitLobe(spec.model, r, mu);
+  double minv[9];
+  ltcLocalInverse(LtcInverse{c[0], c[1], c[2], c[3]}, minv);
+  double worst = 0;
+  for (const std::vector<Vec3>& p : polygons) {
+    double pts[kLtcMaxVertices][3];
+    for (size_t v = 0; v < p.size(); ++v) {
+      pts[v][0] = p[v].x;
+      pts[v][1] = p[v].y;
+      pts[v][2] = p[v].z;
+    }
+    double e = c[4] * ltcPolygonIntegral(minv, pts, int(p.size()), true);
+    double ref = IntegrateLobeOverPolygon(lobe, p.data(), int(p.size()), kPolygonTol, evals);
+    worst = std::max(worst, std::fabs(e - ref));
+  }
+  return worst;
+}
+
 void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
                std::vector<double>& errors) {
   const size_t n = spec.TexelCount();
@@ -406,29 +442,8 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
               l1[i] = -1;
             else
               l1[i] = overlap ? StoredFitError(spec, r, mu, &table.data[i * nc]) : fit[k].l1;
-            // (not the roughness-0 column: its lobe, alpha = kLtcAlphaFloor, is a near-mirror
-            // whose direct integration takes seconds)
-            bool sub = ((ir % kPolygonStride == 0 && ir > 0) || ir + 1 == nr) &&
-                       (im % kPolygonStride == 0 || im + 1 == g.mus.size());
-            if (!sub) continue;
-            LtcLobe lobe = FitLobe(spec.model, r, mu);
-            const float* c = &table.data[i * nc];
-            double minv[9];
-            ltcLocalInverse(LtcInverse{c[0], c[1], c[2], c[3]}, minv);
-            double worst = 0;
-            for (const std::vector<Vec3>& p : polygons) {
-              double pts[kLtcMaxVertices][3];
-              for (size_t v = 0; v < p.size(); ++v) {
-                pts[v][0] = p[v].x;
-                pts[v][1] = p[v].y;
-                pts[v][2] = p[v].z;
-              }
-              double e = c[4] * ltcPolygonIntegral(minv, pts, int(p.size()), true);
-              double ref =
-                  IntegrateLobeOverPolygon(lobe, p.data(), int(p.size()), kPolygonTol, &evals[i]);
-              worst = std::max(worst, std::fabs(e - ref));
-            }
-            polygon[i] = worst;
+            if (OnPolygonSubset(ir, im, nr, g.mus.size()))
+              polygon[i] = PolygonError(spec, r, mu, &table.data[i * nc], polygons, &evals[i]);
           }
         });
   });
@@ -488,12 +503,34 @@ std::string VerifyTable(const Table& table, int threads, std::string& summary) {
       worst = std::max(worst, e);
       ++count;
     }
-  char buf[200];
+  // The polygon error at the bake's nodes (the same measurement: the same numbers).
+  const Grid g = GridOf(spec);
+  const size_t nr = g.rs.size(), nm = g.mus.size();
+  const std::vector<std::vector<Vec3>> polygons = LtcTestPolygons();
+  std::vector<double> polygon(n, -1);
+  arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, nr * nm, 1), [&](const tbb::blocked_range<size_t>& rg) {
+          for (size_t k = rg.begin(); k != rg.end(); ++k) {
+            const size_t ir = k % nr, im = k / nr, i = g.index[k];
+            if (!OnPolygonSubset(ir, im, nr, nm)) continue;
+            long long evals = 0;
+            polygon[i] =
+                PolygonError(spec, g.rs[ir], g.mus[im], &table.data[i * nc], polygons, &evals);
+          }
+        });
+  });
+  double pworst = 0;
+  for (double e : polygon) pworst = std::max(pworst, e);
+  char buf[320];
   std::snprintf(buf, sizeof buf,
-                "fit error (L1) max %.3e over %zu re-measured texels, declared %.3e", worst, count,
-                table.fitError.max);
+                "fit error (L1) max %.3e over %zu re-measured texels, declared %.3e; polygon "
+                "error max %.3e, declared %.3e",
+                worst, count, table.fitError.max, pworst, table.fitError.polygonMax);
   summary = buf;
   if (worst > table.fitError.max * (1 + 1e-9)) return summary + ": EXCEEDS the declared fit error";
+  if (pworst > table.fitError.polygonMax * (1 + 1e-9))
+    return summary + ": EXCEEDS the declared polygon error";
   return "";
 }
 

@@ -153,6 +153,11 @@ struct QuantityInfo {
   /// An extra check `kiln verify` runs on a table of this kind (null: none): "" when it passes,
   /// else one line naming the problem; `summary` gets one line of what it measured.
   std::string (*verifyTable)(const Table& table, int threads, std::string& summary) = nullptr;
+  /// `kiln verify`'s bake-error reference at x to the absolute tolerance `tol`, where adaptive
+  /// quadrature of the whole integral (evaluate) costs millions of integrand evaluations a node
+  /// (null: evaluate). Never the kind's own fixed rule (baker/verify/bake_error.h).
+  std::vector<double> (*verifyReference)(const TableSpec& spec, const double* x, double tol,
+                                         IntegrationStats& stats) = nullptr;
   /// The fixed-rule version of one spec of this kind, when its rule changes for some models only
   /// (null: fixedRuleVersion for every spec): those models' tables re-bake, the others keep their
   /// hashes.
