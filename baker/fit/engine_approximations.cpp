@@ -15,17 +15,10 @@ void KarisEnvBrdfApprox(const FitForm&, const float* x, float* out) {
 }
 
 FitForm DfgProbeForm(const TableSpec& spec) {
-  FitForm form;
-  form.table = spec.name;
-  form.channels = spec.channels;
-  for (const AxisSpec& a : spec.axes) {
-    FitAxis f;
-    f.name = a.name;
-    f.lo = a.lo;
-    f.hi = a.hi;
+  FitForm form = Skeleton(spec);
+  for (FitAxis& f : form.axes) {
     f.degree = 1;
-    f.warp = a.name == "mu" ? FitWarp::Layer : FitWarp::Sqrt;
-    form.axes.push_back(f);
+    f.warp = f.name == "mu" ? FitWarp::Layer : FitWarp::Sqrt;
   }
   return form;
 }

@@ -13,6 +13,21 @@
 
 namespace kiln {
 
+/// The form's skeleton for `spec`: its name, channels and axes (domain), degrees 0.
+FitForm Skeleton(const TableSpec& spec) {
+  FitForm form;
+  form.table = spec.name;
+  form.channels = spec.channels;
+  for (const AxisSpec& a : spec.axes) {
+    FitAxis f;
+    f.name = a.name;
+    f.lo = a.lo;
+    f.hi = a.hi;
+    form.axes.push_back(f);
+  }
+  return form;
+}
+
 namespace {
 constexpr int kMaxDegree2D = 16;       ///< largest degree per axis of a 2D fit
 constexpr int kMaxDegree1D = 30;       ///< largest degree of a 1D fit
@@ -127,21 +142,6 @@ double FitCoefficients(FitForm& form, const Samples& s, int lawson) {
     mx = std::max(mx, e);
   }
   return mx;
-}
-
-/// The form's skeleton for `spec`: its name, channels and axes (domain), degrees 0.
-FitForm Skeleton(const TableSpec& spec) {
-  FitForm form;
-  form.table = spec.name;
-  form.channels = spec.channels;
-  for (const AxisSpec& a : spec.axes) {
-    FitAxis f;
-    f.name = a.name;
-    f.lo = a.lo;
-    f.hi = a.hi;
-    form.axes.push_back(f);
-  }
-  return form;
 }
 
 /// Exact values at the warp-choice check points: a grid uniform in root4 of each axis (dense at

@@ -47,6 +47,9 @@ struct FitResult {
   std::string specHash;  ///< TableSpec::Hash() of the table fitted
 };
 
+/// The form's skeleton for `spec`: its name, channels and axes (domain), degrees 0, no warp.
+FitForm Skeleton(const TableSpec& spec);
+
 /// The table kinds kiln fits: a table of one or two axes with every channel an integral.
 bool Fittable(const TableSpec& spec);
 
