@@ -110,7 +110,7 @@ TEST_CASE("The catalogue bench without lookup-error searches times the texels al
 }
 
 TEST_CASE(
-    "kiln bench --catalogue --no-reference prints the kind rows and the yardstick; the two "
+    "kiln bench --catalogue --no-reference prints the kind rows and the yardstick, the two "
     "catalogue-only flags are refused without --catalogue",
     "[bench][cli]") {
   const std::string dir = test::TempDir("bench_catalogue_cli");

@@ -117,7 +117,7 @@ double Half(uint16_t bits) {
 
 }  // namespace
 
-TEST_CASE("every preset names its engine source, tables, sizes and format; help lists them",
+TEST_CASE("every preset names its engine source, tables, sizes and format, help lists them",
           "[engine-presets]") {
   std::vector<std::string> names;
   for (const kiln::EnginePreset& p : kiln::EnginePresets()) {

@@ -71,7 +71,7 @@ TEST_CASE(
   CHECK(worst <= kFixedRuleBound);
 }
 
-TEST_CASE("More nodes converge onto the default rule; too few miss the bound (the check can fail)",
+TEST_CASE("More nodes converge onto the default rule, too few miss the bound (the check can fail)",
           "[integrate][fixed-rule]") {
   FixedRuleOptions fine;
   fine.outerNodes = fine.bulkNodes = fine.gradedNodes = fine.deficitNodes = 24;

@@ -80,7 +80,7 @@ TEST_CASE("charlie-smith's rule without the mirror grading misses the bound at r
   CHECK(std::abs(FixedRuleSheenAlbedo(m, 1.0, coarse) - Adaptive(m, 1.0)) > kSheenRuleBound);
 }
 
-TEST_CASE("charlie-smith takes its own rule; charlie and the velvet keep the shared one",
+TEST_CASE("charlie-smith takes its own rule, charlie and the velvet keep the shared one",
           "[sheen][fixed-rule][charlie-smith]") {
   SheenRuleOptions shared;
   for (const char* id : {"charlie", "ashikhmin-velvet"}) {

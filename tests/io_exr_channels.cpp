@@ -147,7 +147,7 @@ TEST_CASE("a one-channel table is the luminance channel Y: (E, E, E, 1) through 
   fs::remove_all(dir);
 }
 
-TEST_CASE("channels map to Y or R, G, B, A in storage order; more than 4 make parts",
+TEST_CASE("channels map to Y or R, G, B, A in storage order, more than 4 make parts",
           "[io][exr][channels]") {
   CHECK(kiln::exrChannelNames(1) == std::vector<std::string>{"Y"});
   CHECK(kiln::exrChannelNames(2) == std::vector<std::string>{"R", "G"});

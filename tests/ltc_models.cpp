@@ -204,7 +204,7 @@ TEST_CASE("The new ltc tables are bit-identical for 1 and 2 threads", "[ltc][ltc
   }
 }
 
-TEST_CASE("The new ltc tables are in the published layout; one joins the catalogue",
+TEST_CASE("The new ltc tables are in the published layout, one joins the catalogue",
           "[ltc][ltc-models]") {
   std::vector<std::string> inDefault;
   for (const TableSpec& d : DefaultCatalogue())

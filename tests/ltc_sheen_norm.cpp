@@ -13,7 +13,7 @@
 
 using namespace kiln;
 
-TEST_CASE("A sheen table's proposal norm falls short; the overlap L1 is stable and at most 2",
+TEST_CASE("A sheen table's proposal norm falls short, the overlap L1 is stable and at most 2",
           "[long][ltc][ltc-sheen-norm]") {
   for (const char* name : {"ltc-charlie", "ltc-charlie-smith"}) {
     BakeOptions opt;

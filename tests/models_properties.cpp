@@ -89,7 +89,7 @@ TEST_CASE("Reciprocity holds exactly for the models that claim it, and fails for
   }
 }
 
-TEST_CASE("Every BRDF value is finite at every edge (mu = 0, 1e-12, 1; roughness 0, 1e-6, 1)",
+TEST_CASE("Every BRDF value is finite at every edge (mu = 0, 1e-12, 1, roughness 0, 1e-6, 1)",
           "[models]") {
   for (const ModelInfo& m : AllModels())
     for (double r : kEdgeRoughness) {

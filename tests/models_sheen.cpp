@@ -125,7 +125,7 @@ TEST_CASE("Each sheen model equals its published formula at hand-computed direct
   CHECK(below == Approx(above).epsilon(1e-8));
 }
 
-TEST_CASE("The Charlie models reject a roughness below 0.045; the velvet takes 0",
+TEST_CASE("The Charlie models reject a roughness below 0.045, the velvet takes 0",
           "[sheen][models]") {
   for (const char* id : {"charlie", "charlie-smith"}) {
     CHECK_THROWS_WITH(Sheen(id, 0.04), Catch::Contains("roughness") && Catch::Contains("outside"));

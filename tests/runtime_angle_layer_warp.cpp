@@ -11,7 +11,7 @@
 
 using namespace kiln;
 
-TEST_CASE("root4-layer-angle: the name round-trips; only on axis 0 of a 2+ axis view",
+TEST_CASE("root4-layer-angle: the name round-trips, only on axis 0 of a 2+ axis view",
           "[runtime][angle-layer]") {
   Warp w = Warp::Linear;
   REQUIRE(warpFromName("root4-layer-angle", w));

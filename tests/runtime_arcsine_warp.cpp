@@ -10,7 +10,7 @@
 
 using namespace kiln;
 
-TEST_CASE("arcsine: the name round-trips; nodes are sin^2(pi t / 2), symmetric about 1/2",
+TEST_CASE("arcsine: the name round-trips, nodes are sin^2(pi t / 2), symmetric about 1/2",
           "[runtime][axis]") {
   Warp w = Warp::Linear;
   REQUIRE(warpFromName("arcsine", w));

@@ -233,7 +233,7 @@ TEST_CASE("root4-layer: the warp of y and of the layer scale c, inverted to the 
   CHECK(parsed == Warp::Root4Layer);
 }
 
-TEST_CASE("root4-layer: only on axis 0 of a view of 2+ axes; lookups at its nodes are exact",
+TEST_CASE("root4-layer: only on axis 0 of a view of 2+ axes, lookups at its nodes are exact",
           "[runtime][axis][layer]") {
   const Axis mu{0.0, 1.0, 9, Warp::Root4Layer}, r{0.0, 1.0, 5, Warp::Sqrt};
   std::vector<float> data(9 * 5);

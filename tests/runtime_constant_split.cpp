@@ -93,7 +93,7 @@ TEST_CASE("constant split: a 2-axis table reads it and holds a fixed kink on a g
   CHECK(v.valid());
 }
 
-TEST_CASE("constant split: written as kiln.axis0.split and read back; absent reads as NaN",
+TEST_CASE("constant split: written as kiln.axis0.split and read back, absent reads as NaN",
           "[runtime][split][io]") {
   namespace fs = std::filesystem;
   const fs::path dir =

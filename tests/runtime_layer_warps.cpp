@@ -26,7 +26,7 @@ TEST_CASE("layer scales: 0 exactly at the collapse point, floored at 1e-12 past 
   CHECK(etaLayerScale(1.0, 3.0, std::nextafter(1.0, 2.0)) == Approx(std::sqrt(2 * 0x1p-52)));
 }
 
-TEST_CASE("root4-layer at c = 0: every y maps to (y^(1/4) + 1) / 2; smooth nodes from t_s on",
+TEST_CASE("root4-layer at c = 0: every y maps to (y^(1/4) + 1) / 2, smooth nodes from t_s on",
           "[runtime][layer]") {
   for (int n : {2, 3, 4, 9, 128, 129}) {
     const Axis a{0.0, 1.0, n, Warp::Root4Layer};
@@ -57,7 +57,7 @@ TEST_CASE("root4-layer at c = 0: every y maps to (y^(1/4) + 1) / 2; smooth nodes
     CHECK(a.unwarped(a.warped(y, 1e-12), 1e-12) == Approx(y).epsilon(1e-12));
 }
 
-TEST_CASE("layer-eta: t = y (1 + c) / (y + c), inverted exactly; c = 0 sends y > 0 to t = 1",
+TEST_CASE("layer-eta: t = y (1 + c) / (y + c), inverted exactly, c = 0 sends y > 0 to t = 1",
           "[runtime][layer]") {
   const Axis a{0.0, 1.0, 128, Warp::LayerEta};
   CHECK(a.collapsedStart() == 1.0);
@@ -90,7 +90,7 @@ TEST_CASE("layer-eta: t = y (1 + c) / (y + c), inverted exactly; c = 0 sends y >
   CHECK(std::string(warpName(Warp::LayerEta)) == "layer-eta");
 }
 
-TEST_CASE("layer warps only on axis 0 of a view of 2+ axes; a layer-eta view reads axis 1",
+TEST_CASE("layer warps only on axis 0 of a view of 2+ axes, a layer-eta view reads axis 1",
           "[runtime][layer]") {
   const float data[8] = {0, 1, 2, 3, 4, 5, 6, 7};
   LutView v;

@@ -152,7 +152,7 @@ TEST_CASE("both filters reproduce linear functions exactly", "[runtime][sampling
   }
 }
 
-TEST_CASE("cubic reproduces quadratics in every cell, edge cells included; linear does not",
+TEST_CASE("cubic reproduces quadratics in every cell, edge cells included, linear does not",
           "[runtime][sampling]") {
   const int n = 9;
   const Axis ax{0.0, 2.0, n, Warp::Linear};
@@ -220,7 +220,7 @@ TEST_CASE("cubic falls back to linear on an axis of size 2", "[runtime][sampling
   }
 }
 
-TEST_CASE("lookups outside the axes clamp to the edge; NaN maps to lo", "[runtime][sampling]") {
+TEST_CASE("lookups outside the axes clamp to the edge, NaN maps to lo", "[runtime][sampling]") {
   TestLut lut({{0.0, 1.0, 5, Warp::Sqrt}, {1.0, 2.0, 4, Warp::Linear}}, 1,
               [](int i, int j, int, int) { return float(i * i - 2 * j + 0.5 * i * j); });
   const double nan = std::numeric_limits<double>::quiet_NaN();

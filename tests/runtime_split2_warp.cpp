@@ -30,7 +30,7 @@ std::vector<double> Etas() {
 }  // namespace
 
 TEST_CASE(
-    "root4-layer-split2: the name round-trips; valid with (N - 1) % 32 == 0 on axis 0 of "
+    "root4-layer-split2: the name round-trips, valid with (N - 1) % 32 == 0 on axis 0 of "
     "a 3-axis view",
     "[runtime][split2]") {
   Warp w = Warp::Linear;

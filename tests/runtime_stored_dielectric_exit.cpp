@@ -95,7 +95,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "exit residual tables: a lookup is the residual plus dielectricExitClosedForm; the "
+    "exit residual tables: a lookup is the residual plus dielectricExitClosedForm, the "
     "earlier form still reads",
     "[runtime][stored][dielectric]") {
   for (bool transmit : {false, true}) {

@@ -85,7 +85,7 @@ TEST_CASE("ggx-fresnel-albedo: a lookup is the interpolated residual plus the cl
       }
 }
 
-TEST_CASE("a residual slice reads roughness and eta from kiln.params; E files sample as E",
+TEST_CASE("a residual slice reads roughness and eta from kiln.params, E files sample as E",
           "[runtime][stored][fresnel]") {
   // A plan slice at roughness 0.3 and eta 1.5: axes (mu) only... kept 3D here with eta, and
   // roughness in the params: the closed form is taken at the params' roughness.

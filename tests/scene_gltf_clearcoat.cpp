@@ -7,7 +7,7 @@ using namespace kiln;
 using namespace kiln::test;
 using Names = std::vector<std::string>;
 
-TEST_CASE("Clearcoat: its roughness widens the dfg table; a zero factor has no effect", "[scene]") {
+TEST_CASE("Clearcoat: its roughness widens the dfg table, a zero factor has no effect", "[scene]") {
   Plan plan = PlanSceneFile(ScenePath("clearcoat.gltf"));
   // Base lobes at 0.5, the coat at 0.1: one dfg table over both; the albedo tables (multiple
   // scattering compensation of the base lobe) stay at 0.5.

@@ -26,7 +26,7 @@ TEST_CASE("Specular, iridescence, emissive strength, unknown: each reported with
   CHECK(plan.warnings.empty());  // used, not required
 }
 
-TEST_CASE("An unknown required extension is a warning; the plan covers the rest", "[scene]") {
+TEST_CASE("An unknown required extension is a warning, the plan covers the rest", "[scene]") {
   Plan plan = PlanSceneFile(ScenePath("required_unknown.gltf"));
   CHECK(TableNames(plan) == Names{"ggx-dfg-r0.25", "ggx-albedo-r0.25", "ggx-albedo-avg-r0.25"});
   REQUIRE(plan.warnings.size() == 1);
@@ -34,7 +34,7 @@ TEST_CASE("An unknown required extension is a warning; the plan covers the rest"
         std::string::npos);
 }
 
-TEST_CASE("Unlit materials need nothing; anisotropy and iridescence are not yet tables",
+TEST_CASE("Unlit materials need nothing, anisotropy and iridescence are not yet tables",
           "[scene]") {
   Plan unlit = PlanText(OneMaterialGltf(R"({"extensions": {"KHR_materials_unlit": {}}})"));
   CHECK(unlit.tables.empty());

@@ -43,7 +43,7 @@ TEST_CASE("Manifest: ranges, the whole axis, a dielectric, a conductor", "[scene
         Names{"'plaster' (/materials/4)"});
 }
 
-TEST_CASE("Manifest: an omitted axis parameter is the whole axis; tables: [] is nothing",
+TEST_CASE("Manifest: an omitted axis parameter is the whole axis, tables: [] is nothing",
           "[scene][manifest]") {
   Plan plan = PlanText(R"({"kiln_scene": 1, "materials": [
       {"model": "oren-nayar"}, {"model": "ggx", "tables": []},

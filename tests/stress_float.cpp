@@ -298,7 +298,7 @@ double FloatTableError(const TableSpec& spec, int points, uint64_t seed, std::st
 }  // namespace
 
 TEST_CASE(
-    "Fresnel terms in float agree with double, also at grazing incidence; the literal "
+    "Fresnel terms in float agree with double, also at grazing incidence, the literal "
     "dielectric port cancels there",
     "[stress][float][fresnel]") {
   std::vector<double> cs = EdgeMus();
@@ -350,7 +350,7 @@ TEST_CASE("The double dielectric Fresnel does not cancel at grazing incidence ei
 }
 
 TEST_CASE(
-    "Microfacet BRDFs in float agree with double down to mu = 1e-6; the textbook Smith "
+    "Microfacet BRDFs in float agree with double down to mu = 1e-6, the textbook Smith "
     "Lambda would not",
     "[stress][float][microfacet]") {
   Worst worst[2];

@@ -87,7 +87,7 @@ TEST_CASE("A bake killed after its first table leaves a manifest describing the 
   CHECK(ManifestSpecHash(dir, second) == oldSecond);
 }
 
-TEST_CASE("bake --out with missing parents creates them; one that cannot be made says why",
+TEST_CASE("bake --out with missing parents creates them, one that cannot be made says why",
           "[stress][manifest][cli]") {
   ScratchDir root("out_parents");
   auto ok = Bake(root / "a/b/c", "burley-albedo-avg", 9);

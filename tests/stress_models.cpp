@@ -97,7 +97,7 @@ void ForEachEdgeModel(const ModelInfo& m, V&& visit) {
 }  // namespace
 
 TEST_CASE(
-    "Every BRDF value at every edge of every model is finite; nonNegative models never go "
+    "Every BRDF value at every edge of every model is finite, nonNegative models never go "
     "below 0 (for any rho), and the others do somewhere",
     "[stress][models]") {
   for (const ModelInfo& m : AllModels()) {

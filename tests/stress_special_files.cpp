@@ -79,7 +79,7 @@ TEST_CASE("A symlinked manifest is refused before anything is baked",
   CHECK_FALSE(fs::exists(dir + "/burley-albedo-avg.exr"));
 }
 
-TEST_CASE("inspect --png onto a FIFO, a device or a folder is refused; they stay what they were",
+TEST_CASE("inspect --png onto a FIFO, a device or a folder is refused, they stay what they were",
           "[stress][special-files][cli]") {
   ScratchDir root("png_special");
   std::string exr = SmallTable(root / "tables");

@@ -37,7 +37,7 @@ verify::BakeErrorCheck Check(const Table& t) {
 
 }  // namespace
 
-TEST_CASE("Every texel shifted by 3e-5 fails the bake-error check; the committed table passes",
+TEST_CASE("Every texel shifted by 3e-5 fails the bake-error check, the committed table passes",
           "[verify][bake-error]") {
   for (const char* name : {"ggx-albedo", "charlie-smith-albedo", "fresnel-dielectric",
                            "burley-albedo", "ggx-dielectric-albedo-t"}) {
