@@ -846,7 +846,21 @@ std::vector<std::vector<Vec3>> LtcTestPolygons() {
       {{-1.2, -0.4, 1}, {-0.5, -0.4, 1}, {-0.5, 0.4, 1}, {-1.2, 0.4, 1}},
       {{-1, -0.6, -0.2}, {-0.3, -0.6, 0.5}, {-0.3, 0.6, 0.5}, {-1, 0.6, -0.2}},
       {{-2, -0.05, 1}, {2, -0.05, 1}, {2, 0.05, 1}, {-2, 0.05, 1}},
+      {{1, 0.6, -0.3}, {1, -0.6, -0.3}, {1, -0.6, 0.5}, {1, 0.6, 0.5}},
+      {{-0.6, 1, -0.3}, {0.6, 1, -0.3}, {0.6, 1, 0.5}, {-0.6, 1, 0.5}},
+      {{-1, -0.8, -0.5}, {-1, 0.8, -0.5}, {-1, 0.8, 0.1}, {-1, -0.8, 0.1}},
+      {{-1, -1, 0.01}, {-1, 1, 0.01}, {-1, 1, 0.1}, {-1, -1, 0.1}},
   };
+}
+
+std::vector<Vec3> LtcNearMirrorPolygon(Vec3 wo) {
+  // The mirror direction m of wo about the normal, and two unit tangents of the sphere at m.
+  const Vec3 m = Normalize(Vec3{-wo.x, -wo.y, wo.z});
+  const Vec3 side = Cross(Vec3{0, 0, 1}, m);  // zero when m is the normal
+  const Vec3 u = Length(side) > 0 ? Normalize(side) : Vec3{0, 1, 0};
+  const Vec3 v = Cross(m, u);
+  const double h = kLtcNearMirrorHalfSize;
+  return {m - h * u - h * v, m + h * u - h * v, m + h * u + h * v, m - h * u + h * v};
 }
 
 }  // namespace kiln

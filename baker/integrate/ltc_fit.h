@@ -178,10 +178,24 @@ double LtcFitMu(double mu);
 double IntegrateLobeOverPolygon(const LtcLobe& lobe, const Vec3* p, int count, double tol,
                                 long long* evals = nullptr);
 
-/// The fixed test polygons of the declared polygon error (docs/models.md "LTC"), in the view's
-/// frame: 0 a large quad covering the upper hemisphere (down to 1e-3 rad of the horizon),
-/// 1 a quad around the normal, 2 a quad towards the mirror direction of mu = 0.5, 3 a quad
-/// straddling the horizon behind the view, 4 a thin quad across the normal.
+/// The fixed test polygons of the declared polygon error (docs/ltc.md "What each file
+/// declares"), in the view's frame (normal +z, view in the xz-plane at x >= 0, so the mirror
+/// side is x < 0): 0 a large quad covering the upper hemisphere (down to 1e-3 rad of the
+/// horizon), 1 a quad around the normal, 2 a quad towards the mirror direction of mu = 0.5,
+/// 3 a quad straddling the horizon on the mirror side, 4 a thin quad across the normal; then
+/// the hard cases: 5 a quad straddling the horizon on the view's side, 6 one straddling it
+/// across the view's plane (at y = 1), 7 one on the mirror side mostly below the horizon,
+/// 8 a grazing quad on the mirror side, above the horizon (elevation 0.01 to 0.1 at x = -1).
+/// Parts below z = 0 count for nothing (both the LTC integral and the reference clip there).
 std::vector<std::vector<Vec3>> LtcTestPolygons();
+
+/// Half the side of the near-mirror test quad, on the tangent plane at the mirror direction
+/// (about 0.1 rad across).
+constexpr double kLtcNearMirrorHalfSize = 0.05;
+
+/// The near-mirror test polygon of the view wo (unit, in the normal's frame, z = N.V): a square
+/// of side 2 kLtcNearMirrorHalfSize on the tangent plane of the unit sphere at wo's mirror
+/// direction about the normal, centred on it (at grazing views it straddles the horizon).
+std::vector<Vec3> LtcNearMirrorPolygon(Vec3 wo);
 
 }  // namespace kiln

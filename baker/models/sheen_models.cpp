@@ -75,7 +75,7 @@ ModelInfo CharlieSmithModel() {
   m.ltcNormNote =
       ", at mu below 1e-4 (the N.V = 0 row) the value at mu = 1e-4, where the model's albedo "
       "starts (charlie-smith-albedo)";
-  m.ltcRuleVersion = "fit4o-rule3-mu0-1e-4";
+  m.ltcRuleVersion = "fit4o-rule3-mu0-1e-4-p10";
   return m;
 }
 

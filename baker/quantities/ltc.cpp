@@ -75,7 +75,8 @@ TableSpec MakeSpec(const std::string& model, std::vector<AxisSpec> axes) {
   if (!(axes.size() == 2 && axes[0].name == "roughness" && axes[1].name == "sqrt_one_minus_mu"))
     name += "-kiln";
   std::string norm = "norm: integral f mu_l dl at F = 1 (published ltc_2.x)";
-  if (const ModelInfo* m = FindModel(model); m && m->ltcNormNote) norm += m->ltcNormNote;  // LtcPoint
+  if (const ModelInfo* m = FindModel(model); m && m->ltcNormNote)
+    norm += m->ltcNormNote;  // LtcPoint
   return Shell(
       Quantity::Ltc, name, model, {"minv_a", "minv_b", "minv_c", "minv_d", "norm", "fresnel"},
       {"M^-1 [0][0] / M^-1 [1][1] (published ltc_1.x)", "M^-1 [2][0] / M^-1 [1][1] (ltc_1.y)",
@@ -229,14 +230,17 @@ std::vector<double> SearchRule(const TableSpec& spec, const double* x, Integrati
 /// The spec hash's rule version: the fit's and the norm channels' microfacet rule's. "fit3": the
 /// objective takes the lobe's 16 x 16 points (was 8 x 8) and 2 x 15 Nelder-Mead steps before the
 /// free frame (was 2 x 30): every ltc table's coefficients changed.
+/// "-p10": the declared polygon error over 10 polygons (was 5: the horizon-straddling, grazing
+/// and near-mirror ones added).
 const char* RuleVersion(const TableSpec& spec) {
   // "fit4o": the declared fit error in the overlap form (DeclaresOverlapError), misses refitted
   // (LtcFitOptions::retryMisses), the sheens' proposal with its horizon density.
   // A model's own version (ModelInfo::ltcRuleVersion: charlie-smith's norm row at N.V = 0).
   if (const char* v = Info(spec.model).ltcRuleVersion) return v;
   if (DeclaresOverlapError(spec.model))
-    return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit4o-rule3" : "fit4o-rule2";
-  return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3" : "fit3-rule2";
+    return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit4o-rule3-p10"
+                                                                : "fit4o-rule2-p10";
+  return std::string(MicrofacetFixedRuleVersion(spec)) == "3" ? "fit3-rule3-p10" : "fit3-rule2-p10";
 }
 
 std::string FitText() {
@@ -345,38 +349,43 @@ double StoredFitError(const TableSpec& spec, double r, double mu, const float* c
 
 std::string FitErrorMethod(const std::string& model) {
   char buf[520];
-  std::snprintf(buf, sizeof buf,
-                "fit error: L1 over the sphere of f mu_l / norm - D_ltc at the stored (float) "
-                "coefficients%s, MIS of the lobe's and the LTC's %dx%d stratified samples, every "
-                "texel; polygon error: |norm E_ltc - integral_P f mu_l| over the %zu test "
-                "polygons of docs/models.md (LTC) at every %d-th node of each axis, direct "
-                "integration to %g",
-                DeclaresOverlapError(model)  // (the catalogue's files keep their text)
-                    ? ", as 2 - 2 integral min(f mu_l / norm, D_ltc) with the fixed rule's norm"
-                    : "",
-                LtcFitOptions{}.errorSamples, LtcFitOptions{}.errorSamples,
-                LtcTestPolygons().size(), kPolygonStride, kPolygonTol);
+  std::snprintf(
+      buf, sizeof buf,
+      "fit error: L1 over the sphere of f mu_l / norm - D_ltc at the stored (float) "
+      "coefficients%s, MIS of the lobe's and the LTC's %dx%d stratified samples, every "
+      "texel; polygon error: |norm E_ltc - integral_P f mu_l| over the %zu test "
+      "polygons of docs/ltc.md (horizon-clipped) at every %d-th node of each axis, direct "
+      "integration to %g",
+      DeclaresOverlapError(model)  // (the catalogue's files keep their text)
+          ? ", as 2 - 2 integral min(f mu_l / norm, D_ltc) with the fixed rule's norm"
+          : "",
+      LtcFitOptions{}.errorSamples, LtcFitOptions{}.errorSamples, LtcTestPolygons().size() + 1,
+      kPolygonStride, kPolygonTol);
   return buf;
 }
 
 /// Whether the fit's texel (ir, im) of an nr x nm grid is one the polygon error is measured at:
 /// every kPolygonStride-th node of each axis and the last (not the roughness-0 column: its lobe,
-/// alpha = kLtcAlphaFloor, is a near-mirror whose direct integration takes seconds).
+/// alpha = kLtcAlphaFloor, is a near-mirror whose direct integration over the near-mirror quad
+/// takes seconds; the skip keeps the bake's cost bounded).
 bool OnPolygonSubset(size_t ir, size_t im, size_t nr, size_t nm) {
   return ((ir % kPolygonStride == 0 && ir > 0) || ir + 1 == nr) &&
          (im % kPolygonStride == 0 || im + 1 == nm);
 }
 
 /// The polygon error of the stored texel `c` (coefficients and norm) at (r, mu): the max over
-/// `polygons` of |norm E_ltc(P) - integral_P f mu_l|, the lobe integrated directly to
-/// kPolygonTol (its integrand evaluations added to *evals).
+/// `polygons` and the view's near-mirror quad (LtcNearMirrorPolygon) of
+/// |norm E_ltc(P) - integral_P f mu_l|, both clipped at the horizon, the lobe integrated
+/// directly to kPolygonTol (its integrand evaluations added to *evals).
 double PolygonError(const TableSpec& spec, double r, double mu, const float* c,
                     const std::vector<std::vector<Vec3>>& polygons, long long* evals) {
   LtcLobe lobe = FitLobe(spec.model, r, mu);
   double minv[9];
   ltcLocalInverse(LtcInverse{c[0], c[1], c[2], c[3]}, minv);
   double worst = 0;
-  for (const std::vector<Vec3>& p : polygons) {
+  std::vector<std::vector<Vec3>> all = polygons;
+  all.push_back(LtcNearMirrorPolygon(lobe.wo()));
+  for (const std::vector<Vec3>& p : all) {
     double pts[kLtcMaxVertices][3];
     for (size_t v = 0; v < p.size(); ++v) {
       pts[v][0] = p[v].x;
