@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/custom/custom_registry.h"
 #include "baker/models/model_names.h"
 #include "baker/util/did_you_mean.h"
 
@@ -328,7 +329,7 @@ const std::vector<ModelInfo>& AllModels() {
 const ModelInfo* FindModel(const std::string& id) {
   for (const ModelInfo& m : AllModels())
     if (m.id == id) return &m;
-  return nullptr;
+  return FindCustomModel(id);  // a user's lobe loaded this run (baker/custom/)
 }
 
 std::vector<std::string> AllModelIds() {
@@ -381,6 +382,7 @@ AnyModel MakeModel(const std::string& id, const ModelParams& p) {
   if (p.f0 && p.eta)
     throw std::invalid_argument("model '" + id + "': give either f0 (Schlick) or eta, not both");
   if (p.k && !p.eta) throw std::invalid_argument("model '" + id + "': k needs eta");
+  if (FindCustomModel(id)) return MakeCustomModel(*info, p);
 
   double r = Get(*info, p, "roughness"), rho = Get(*info, p, "rho");
   double f0 = Get(*info, p, "f0"), rs = Get(*info, p, "rs");

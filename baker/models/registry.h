@@ -6,6 +6,7 @@
 #include <variant>
 #include <vector>
 
+#include "baker/custom/custom_model.h"
 #include "baker/models/coupled_diffuse.h"
 #include "baker/models/disney_diffuse.h"
 #include "baker/models/fujii.h"
@@ -63,7 +64,9 @@ using AnyModel =
                  // issue #16: Unity's BRDFs, Ward, Lafortune, Kajiya-Kay
                  UnityBRDF1, UnityBRDF2, UnityBRDF3, WardBRDF, LafortuneBRDF, KajiyaKay,
                  // issue #15: sheen lobes
-                 CharlieSheen, CharlieSmithSheen, AshikhminVelvet>;
+                 CharlieSheen, CharlieSmithSheen, AshikhminVelvet,
+                 // a user's lobe (baker/custom/)
+                 CustomDiffuseModel, CustomSpecularModel>;
 
 /// Every model, in catalogue order.
 const std::vector<ModelInfo>& AllModels();

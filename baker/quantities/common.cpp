@@ -14,6 +14,7 @@
 #include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/fixed_rule_microfacet.h"
 
+#include "baker/custom/custom_registry.h"
 #include "baker/integrate/fixed_rule_diffuse.h"
 #include "baker/models/model_names.h"
 #include "baker/models/specular.h"
@@ -285,7 +286,9 @@ bool IsSheen(const std::string& model) {
 
 bool DiffuseFixedRuleApplies(const TableSpec& spec) {
   const ModelInfo* m = FindModel(spec.model);
-  return m && !m->specular() && !IsSheen(spec.model) && spec.axes.size() == 2 &&
+  // A user's lobe (baker/custom/) is baked by adaptive quadrature only: no rule is tuned for it.
+  return m && !m->specular() && !IsSheen(spec.model) && !FindCustomModel(spec.model) &&
+         spec.axes.size() == 2 &&
          spec.axes[0].name == "mu" && spec.axes[1].name == "roughness";
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "baker/custom/custom_tables.h"
 #include "baker/models/model_names.h"
 #include "baker/models/registry.h"
 #include "baker/models/sheen.h"
@@ -186,6 +187,11 @@ std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt) {
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt) {
   std::vector<std::string> names;
   for (TableSpec& s : CatalogueEntries(opt, true)) {
+    if (s.name == name) return s;
+    names.push_back(s.name);
+  }
+  for (TableSpec& s : CustomModelTables()) {  // a user's lobe loaded this run (baker/custom/)
+    Resize(s, opt.size);
     if (s.name == name) return s;
     names.push_back(s.name);
   }

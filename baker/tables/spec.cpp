@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "baker/custom/custom_registry.h"
 #include "baker/quantities/common.h"
 #include "baker/tables/engine_layout.h"
 
@@ -52,7 +53,11 @@ std::string TableSpec::ParamsText() const {
 
 std::string TableSpec::Method() const {
   const QuantityInfo& q = Describe(quantity);
-  return UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
+  std::string method = UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
+  // A user's lobe: its id and hash in the header (the hash is in HashText too).
+  if (std::string hash = CustomModelHash(model); !hash.empty())
+    method += "; custom model '" + model + "', hash " + hash;
+  return method;
 }
 
 std::string TableSpec::HashText() const {
@@ -68,6 +73,9 @@ std::string TableSpec::HashText() const {
   // Roughness 0 as the smooth limit (QuantityInfo::smoothLimit) changed the texels of the tables
   // it applies to, and only theirs: they re-bake, the rest of the catalogue keeps its hash.
   if (SmoothLimitApplies(*this)) text += "|smooth-limit:1";
+  // A user's lobe (baker/custom/): the hash of its source or library, so an edited lobe makes
+  // its tables stale.
+  if (std::string hash = CustomModelHash(model); !hash.empty()) text += "|model-hash:" + hash;
   for (const std::string& c : channels) text += "|c:" + c;
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +
