@@ -20,6 +20,8 @@ constexpr int kMaxCustomParams = 4;
 /// The smallest importance alpha of a specular lobe without kiln_model_importance_alpha: the
 /// default hint is max(r^2, this).
 constexpr double kDefaultImportanceAlphaMin = 1e-3;
+/// The view cosine at which a custom lobe is evaluated for a view on the horizon (mu_o = 0).
+constexpr double kHorizonMu = 1e-12;
 
 /// A lobe that returned a NaN, infinite or negative f (the message names where).
 struct CustomModelError : std::runtime_error {
@@ -48,15 +50,10 @@ struct CustomModelBase {
   double roughness = 0.5;
   std::array<double, kMaxCustomParams> params{};
 
-  /// The lobe's f at (wo, wi), checked (finite, >= 0); 0 below the horizon.
-  double Checked(Vec3 wo, Vec3 wi) const {
-    if (CosTheta(wo) < 0 || CosTheta(wi) < 0) return 0;
-    const double o[3] = {wo.x, wo.y, wo.z}, i[3] = {wi.x, wi.y, wi.z};
-    double f = lobe->paramCount > 0 ? lobe->evalParams(o, i, roughness, params.data())
-                                    : lobe->eval(o, i, roughness);
-    if (!(f >= 0) || !std::isfinite(f)) ThrowBadCustomValue(*lobe, f, wo, wi, roughness);
-    return f;
-  }
+  /// The lobe's f at (wo, wi), checked (finite, >= 0); 0 below the horizon. A view on the
+  /// horizon (mu_o = 0, the first node of every mu axis) is evaluated at mu_o = kHorizonMu: the
+  /// limit from above, which a lobe with a 1 / mu_o factor has where mu_o = 0 itself is 0 / 0.
+  double Checked(Vec3 wo, Vec3 wi) const;
 };
 
 /// A custom lobe integrated over light directions (kiln_model_is_specular() == 0).
@@ -86,14 +83,7 @@ struct CustomSpecularModel : CustomModelBase {
   // computed directly (no 0 / 0 where D underflows).
   PolarParam FromV(double v) const { return importance.FromV(v); }
   double VFromTheta(double theta) const { return importance.VFromTheta(theta); }
-  double HalfWeight(const HalfSample& s) const {
-    double f = Checked(s.wo, s.wi);
-    if (f == 0) return 0;
-    double a2 = Sqr(importance.alpha), c = s.cosTheta_h;
-    double tan2 = std::max(0.0, 1 - c * c) / (c * c);
-    double invQ = Pi * a2 * c * c * c * Sqr(1 + tan2 / a2);
-    return f * fresnel(s.oh) * s.mu_l * 4 * s.oh * invQ / (2 * Pi);
-  }
+  double HalfWeight(const HalfSample& s) const;
   double MaskingScale() const { return importance.alpha; }
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
   int ThetaKinks(double, double*) const { return 0; }

@@ -1,6 +1,6 @@
 // A normalised Phong lobe (Lewis 1994) as a kiln custom model (kiln/model_abi.h):
 //   f = (n + 2) / (2 pi) max(0, r.wi)^n,  r = reflect(wo) about the normal,
-//   n = 2 / alpha^2 - 2,  alpha = max(roughness^2, 1e-3),
+//   n = 2 / alpha^2,  alpha = max(roughness^2, 1e-3)  (n >= 2: f is smooth where r.wi = 0),
 // whose directional albedo is at most 1 (Lewis 1994: energy conserving). Bake its tables with
 //   kiln bake --model-source normalized_phong.cpp --only phong-normalized-albedo
 #include <kiln/model_abi.h>
@@ -13,7 +13,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// The Phong exponent of roughness r.
 double Exponent(double r) {
   double alpha = std::max(r * r, 1e-3);
-  return 2 / (alpha * alpha) - 2;
+  return 2 / (alpha * alpha);
 }
 }  // namespace
 

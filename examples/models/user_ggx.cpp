@@ -27,9 +27,11 @@ extern "C" double kiln_model_eval(const double wo[3], const double wi[3], double
   if (mu_o <= 0 || mu_l <= 0) return 0;
   double h[3] = {wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]};
   double len = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  // D = 1 / (pi a^2 cos^4 (1 + tan^2 / a^2)^2), tan^2 from the components (1 - cos^2 cancels
+  // where alpha is tiny).
   double c = h[2] / len, a2 = Alpha(r) * Alpha(r);
-  double t = c * c * (a2 - 1) + 1;
-  double d = a2 / (kPi * t * t);
+  double tan2 = (h[0] * h[0] + h[1] * h[1]) / (h[2] * h[2]);
+  double d = 1 / (kPi * a2 * c * c * c * c * (1 + tan2 / a2) * (1 + tan2 / a2));
   double g = 1 / (1 + MuLambda(mu_o, a2) / mu_o + MuLambda(mu_l, a2) / mu_l);
   double f = d * g / (4 * mu_o * mu_l);
   return std::isfinite(f) ? f : 0;
