@@ -34,6 +34,10 @@ double DirectionalAlbedoOf(const std::string& id, double mu, double r) {
   return DirectionalAlbedo(MakeModel(id, p), mu, opt, stats).lin;
 }
 
+/// The smallest roughness at which examples/models/user_ggx.cpp is ggx (its alpha = r^2 >= 1e-7,
+/// with a margin): the nodes below, the first two columns and the layer limit at r = 0, differ.
+constexpr double kSharpestUserGgx = 1e-3;
+
 /// Nodes 0, 9, 18, ... and the last one of an axis of n nodes.
 std::vector<int> EveryNinthNode(int n) {
   std::vector<int> nodes;
@@ -86,6 +90,7 @@ TEST_CASE("a user's GGX albedo table equals the committed ggx-albedo within its 
       size_t index = static_cast<size_t>(j) * n0 + i;
       double x[2];
       NodeEvaluationPoint(user, index, x);
+      if (x[1] < kSharpestUserGgx) continue;  // the example clamps alpha to 1e-7 below
       IntegrationStats stats;
       double v = EvaluateSpec(user, x, stats)[0];
       worst = std::max(worst, std::abs(v - committed.data[index]));
@@ -112,12 +117,13 @@ TEST_CASE(
   std::string a = WriteLobe("hash_a", "hash-lobe", false, "return 0.25;");
   LoadModelSource(a, CustomCache());
   const TableSpec before = CatalogueTable("hash-lobe-albedo");
+  const std::string beforeHash = before.Hash();  // the spec hash reads the loaded lobe's
   CHECK_THAT(before.Method(), Contains(FileHash(a)));
   std::string b = WriteLobe("hash_b", "hash-lobe", false, "return 0.25;  // edited");
   LoadModelSource(b, CustomCache());
   const TableSpec after = CatalogueTable("hash-lobe-albedo");
   CHECK(before.name == after.name);
-  CHECK(before.Hash() != after.Hash());
+  CHECK(beforeHash != after.Hash());
   CHECK_THAT(after.Method(), Contains(FileHash(b)));
 }
 

@@ -51,14 +51,16 @@ void AddCustomModelOptions(CLI::App& app) {
              for (const std::string& p : paths) LoadModelSource(p);
            },
            "a user's model: C++ source (kiln/model_abi.h), compiled into a cached library")
-        ->type_name("FILE.cpp");
+        ->type_name("FILE.cpp")
+        ->allow_extra_args(false);  // one file each time: a scene path stays positional
     sub->add_option_function<std::vector<std::string>>(
            "--model-library",
            [](const std::vector<std::string>& paths) {
              for (const std::string& p : paths) LoadModelLibrary(p);
            },
            "a user's model: shared library built from a kiln/model_abi.h source")
-        ->type_name("FILE.so");
+        ->type_name("FILE.so")
+        ->allow_extra_args(false);
   }
 }
 

@@ -1,5 +1,7 @@
 // GGX written by a user (height-correlated Smith masking, F = 1), as a kiln custom model
-// (kiln/model_abi.h): the same lobe as kiln's built-in "ggx", alpha = max(r^2, 1e-12).
+// (kiln/model_abi.h): the same lobe as kiln's built-in "ggx", alpha = r^2, but at least 1e-7:
+// f evaluated from two directions in double precision holds the half vector's slope to ~1e-16
+// absolute, too few digits for a lobe sharper than that (kiln's own ggx cancels D analytically).
 //   kiln bake --model-source user_ggx.cpp --only user-ggx-albedo
 #include <kiln/model_abi.h>
 
@@ -8,7 +10,7 @@
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-double Alpha(double r) { return std::max(r * r, 1e-12); }
+double Alpha(double r) { return std::max(r * r, 1e-7); }
 /// mu Lambda(mu), without cancellation.
 double MuLambda(double mu, double a2) {
   double s2 = std::max(0.0, 1 - mu * mu);
