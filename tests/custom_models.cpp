@@ -127,6 +127,34 @@ TEST_CASE(
   CHECK_THAT(after.Method(), Contains(FileHash(b)));
 }
 
+TEST_CASE(
+    "a loaded lobe is a registered model descriptor: rule family None, its code hash, its tables "
+    "by name, one entry after a reload",
+    "[custom][descriptor]") {
+  std::string a = WriteLobe("desc_a", "desc-lobe", true, "return 0.5;");
+  const ModelInfo& first = LoadModelSource(a, CustomCache());
+  CHECK(FindModel("desc-lobe") == &first);  // the registry's own entry, no second registry
+  CHECK(first.rule == RuleFamily::None);
+  CHECK(first.codeHash == FileHash(a));
+  CHECK(first.tablesByName);
+  CHECK(first.catalogue == CatalogueGroup::None);  // never in a plain `kiln bake`
+  AnyModel model = MakeModel(first, ModelParams{});
+  CHECK(std::holds_alternative<CustomSpecularModel>(model));
+  CHECK(std::get<CustomSpecularModel>(model).lobe == FindCustomLobe("desc-lobe"));
+  // E and DFG by adaptive quadrature (the average's mu rule sums that E).
+  for (const char* table : {"desc-lobe-albedo", "desc-lobe-dfg"})
+    CHECK_FALSE(UsesFixedRule(CatalogueTable(table)));
+  CHECK(CatalogueTable("desc-lobe-albedo-avg").model == "desc-lobe");
+  std::string b = WriteLobe("desc_b", "desc-lobe", true, "return 0.5;  // edited");
+  const ModelInfo& second = LoadModelSource(b, CustomCache());
+  CHECK(second.codeHash == FileHash(b));
+  size_t entries = 0;
+  for (const ModelInfo& m : AllModels()) entries += m.codeHash == second.codeHash;
+  CHECK(entries == 1);
+  CHECK(FindModel("desc-lobe") == &second);
+  CHECK(std::get<CustomSpecularModel>(model).lobe->hash == FileHash(a));  // the old lobe lives
+}
+
 TEST_CASE("a lobe's NaN, infinite or negative value is named with its directions", "[custom]") {
   std::string src = WriteLobe("bad_values", "bad-values", false,
                               "if (wi[2] < 0.25) return r > 0.5 ? -1.0 : NAN;\n"

@@ -23,9 +23,11 @@ std::deque<CustomLobe>& Lobes() {
 
 /// The value of the lobe's parameter `p` in `a` (given, or the parameter's default).
 double ArgValue(const ModelArgs& a, const ParamInfo& p) {
-  static const std::map<std::string, double ModelArgs::*> kNumbers = {
-      {"rho", &ModelArgs::rho}, {"f0", &ModelArgs::f0}, {"rs", &ModelArgs::rs},
-      {"eta", &ModelArgs::eta}, {"k", &ModelArgs::k}};
+  static const std::map<std::string, double ModelArgs::*> kNumbers = {{"rho", &ModelArgs::rho},
+                                                                      {"f0", &ModelArgs::f0},
+                                                                      {"rs", &ModelArgs::rs},
+                                                                      {"eta", &ModelArgs::eta},
+                                                                      {"k", &ModelArgs::k}};
   if (auto it = kNumbers.find(p.name); it != kNumbers.end()) return a.*(it->second);
   if (p.name == "nu") return a.nu.value_or(p.def);
   if (p.name == "nv") return a.nv.value_or(p.def);
