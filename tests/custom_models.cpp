@@ -68,6 +68,24 @@ TEST_CASE("a user's GGX evaluates as the built-in ggx and is integrated over hal
   }
 }
 
+TEST_CASE(
+    "a sharp lobe cut by the horizon: E at mu = 0 is the limit from above, whatever the "
+    "tolerance",
+    "[custom]") {
+  ExampleLobe("normalized_phong.cpp");  // alpha = 1e-3 at r = 1e-6: a Phong exponent of 2e6
+  const double limit = DirectionalAlbedoOf("phong-normalized", 1e-9, 1e-6);
+  for (double tol : {1e-7, 1e-9, 1e-11}) {
+    IntegrationOptions opt;
+    opt.tol = tol;
+    IntegrationStats stats;
+    ModelParams p;
+    p.roughness = 1e-6;
+    const double e = DirectionalAlbedo(MakeModel("phong-normalized", p), 0, opt, stats).lin;
+    INFO("tol " << tol << ": E(0) = " << e << ", E(1e-9) = " << limit);
+    CHECK(e == Approx(limit).margin(1e-9));
+  }
+}
+
 TEST_CASE("a user's GGX albedo table equals the committed ggx-albedo within its bounds",
           "[custom]") {
   ExampleLobe("user_ggx.cpp");

@@ -25,6 +25,17 @@ double CustomModelBase::Checked(Vec3 wo, Vec3 wi) const {
   return f;
 }
 
+int CustomSpecularModel::PhiKinks(double mu_o, double sinTheta_o, PolarParam h,
+                                  double* cosPhi) const {
+  // mu_l = 2 (o.h) cos_h - mu_o with o.h = sin_o sin_h cos(phi) + mu_o cos_h.
+  const double den = 2 * h.cosTheta * sinTheta_o * h.sinTheta;
+  if (!(den > 0)) return 0;
+  int count = 0;
+  for (double m = importance.alpha / 4; count < 4; m *= 4)
+    cosPhi[count++] = (m + mu_o - 2 * mu_o * Sqr(h.cosTheta)) / den;
+  return count;
+}
+
 double CustomSpecularModel::HalfWeight(const HalfSample& s) const {
   double f = Checked(s.wo, s.wi);
   if (f == 0) return 0;

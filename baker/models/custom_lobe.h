@@ -85,7 +85,11 @@ struct CustomSpecularModel : CustomModelBase {
   double VFromTheta(double theta) const { return importance.VFromTheta(theta); }
   double HalfWeight(const HalfSample& s) const;
   double MaskingScale() const { return importance.alpha; }
-  int PhiKinks(double, double, PolarParam, double*) const { return 0; }
+  /// Breaks in phi_h where mu_l = alpha / 4, alpha, 4 alpha, 16 alpha (alpha: the importance
+  /// lobe's). The integrator grades mu_l geometrically up from min(mu_o, alpha) / 4 with a
+  /// bounded number of breaks; for a view near the horizon (mu_o = kHorizonMu) those stop near
+  /// 1e-4, short of a lobe that is cut by the horizon over a width ~alpha.
+  int PhiKinks(double mu_o, double sinTheta_o, PolarParam h, double* cosPhi) const;
   int ThetaKinks(double, double*) const { return 0; }
 };
 
