@@ -20,6 +20,8 @@ endforeach()
 string(RANDOM LENGTH 10 tag)
 set(work "${KILN_BUILD_DIR}/downstream-${tag}")  # unique: two test runs may share a build
 set(table "${KILN_SOURCE_DIR}/luts/ggx-dfg.exr")
+# A lobe that kiln_bake(MODEL_SOURCE) compiles goes into this run's own cache.
+set(ENV{XDG_CACHE_HOME} "${work}/cache")
 
 function(run)
   execute_process(COMMAND ${ARGV} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -62,6 +64,17 @@ function(check_kiln_bake dir)
     message(FATAL_ERROR "kiln_bake: the up-to-date table was rewritten (${identity} -> ${out})")
   endif()
   message(STATUS "package: kiln_bake baked once, then nothing")
+  # kiln_bake(MODEL_SOURCE my_brdf.cpp TABLES my-brdf-albedo): the engine's lobe, compiled and
+  # baked into a table that names it.
+  set(custom "${dir}/custom_luts/my-brdf-albedo.exr")
+  if(NOT EXISTS "${custom}")
+    message(FATAL_ERROR "kiln_bake(MODEL_SOURCE): ${custom} was not baked")
+  endif()
+  run(${KILN} inspect ${custom})
+  if(NOT out MATCHES "my-brdf")
+    message(FATAL_ERROR "kiln_bake(MODEL_SOURCE): kiln inspect ${custom} printed:\n${out}")
+  endif()
+  message(STATUS "package: kiln_bake(MODEL_SOURCE) baked the engine's lobe")
 endfunction()
 
 run(${KILN} sample ${table} 0.5 0.3)

@@ -14,9 +14,9 @@
 namespace {
 
 /// baker/'s folders, lowest first (docs/design/layers.md, one paragraph each).
-const std::vector<std::string> kLayers = {"util",   "math",       "io",    "models", "integrate",
-                                          "tables", "quantities", "bake",  "fit",    "verify",
-                                          "scene",  "bench",      "atlas", "cli"};
+const std::vector<std::string> kLayers = {"util",      "math",   "io",         "models", "custom",
+                                          "integrate", "tables", "quantities", "bake",   "fit",
+                                          "verify",    "scene",  "bench",      "atlas",  "cli"};
 
 /// The layer index of `folder`, or -1 when it has none.
 int LayerOf(const std::string& folder) {

@@ -17,6 +17,11 @@ struct ModelParamOptions {
   ModelParams Params() const;
 };
 
+/// Adds --model-source FILE.cpp and --model-library FILE.so (each may repeat) to the commands
+/// that take a model (eval, integrate, bake, verify, plan): the user's lobe (kiln/model_abi.h,
+/// baker/custom/) is loaded and registered while the line is parsed. main() calls it once.
+void AddCustomModelOptions(CLI::App& app);
+
 /// The comma-separated names in `list`, each once, in the order of their first appearance
 /// ("a,b,a" -> a, b).
 std::vector<std::string> UniqueNames(const std::string& list);

@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   kiln::cli::RegisterBench(app);
   kiln::cli::RegisterAtlas(app);
   kiln::cli::RegisterFit(app);
+  kiln::cli::AddCustomModelOptions(app);
   kiln::cli::RefuseNonNumbers(app);
   kiln::cli::CheckThreadOptions(app);
   // -j above the number of cores is allowed (up to kMaxThreads): without this oneTBB would print

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "baker/cli/commands.h"
+#include "baker/custom/loader.h"
 #include "kiln/table.h"
 
 namespace kiln::cli {
@@ -37,6 +38,30 @@ ModelParams ModelParamOptions::Params() const {
   set(oNu, nu, p.nu);
   set(oNv, nv, p.nv);
   return p;
+}
+
+void AddCustomModelOptions(CLI::App& app) {
+  for (const char* command : {"eval", "integrate", "bake", "verify", "plan"}) {
+    CLI::App* sub = app.get_subcommand(command);
+    // Loaded while the command line is parsed, before the command runs: its id is then known
+    // to every lookup of the command (the model, --only, a scene's materials, a table's model).
+    sub->add_option_function<std::vector<std::string>>(
+           "--model-source",
+           [](const std::vector<std::string>& paths) {
+             for (const std::string& p : paths) LoadModelSource(p);
+           },
+           "a user's model: C++ source (kiln/model_abi.h), compiled into a cached library")
+        ->type_name("FILE.cpp")
+        ->allow_extra_args(false);  // one file each time: a scene path stays positional
+    sub->add_option_function<std::vector<std::string>>(
+           "--model-library",
+           [](const std::vector<std::string>& paths) {
+             for (const std::string& p : paths) LoadModelLibrary(p);
+           },
+           "a user's model: shared library built from a kiln/model_abi.h source")
+        ->type_name("FILE.so")
+        ->allow_extra_args(false);
+  }
 }
 
 std::vector<std::string> UniqueNames(const std::string& list) {

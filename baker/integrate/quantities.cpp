@@ -10,6 +10,15 @@ constexpr bool IsSpecular() {
   return std::decay_t<M>::kDomain == IntegrationDomain::HalfVector;
 }
 
+/// The view cosine a model is integrated at: a user's lobe (baker/custom/) at mu_o = 0 is taken
+/// in the limit from above, at kHorizonMu (its f may hold 0 / 0 there).
+template <class M>
+double ViewCosine(double mu_o) {
+  if constexpr (std::is_base_of_v<CustomModelBase, std::decay_t<M>>)
+    return std::max(mu_o, kHorizonMu);
+  return mu_o;
+}
+
 /// 2 integral_0^1 g(mu) mu dmu for a channel-valued g. E(mu) bends fastest near mu = 0
 /// (mu ln mu for the microfacet albedos), so the first panels are graded towards 0.
 template <int N, class G>
@@ -41,6 +50,7 @@ RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const Integration
   mu_o = Clamp(mu_o, 0.0, 1.0);
   return std::visit(
       [&](const auto& m) -> RhoParts {
+        mu_o = ViewCosine<decltype(m)>(mu_o);
         if constexpr (IsSpecular<decltype(m)>()) {
           auto w = [](const HalfSample&, double rho) { return Channels<1>{rho}; };
           return {IntegrateHalfVector<1>(m, mu_o, w, opt, stats)[0], 0};
@@ -73,6 +83,7 @@ std::array<double, 2> SplitSumDFG(const AnyModel& model, double mu_o, const Inte
   mu_o = Clamp(mu_o, 0.0, 1.0);
   return std::visit(
       [&](const auto& m) -> std::array<double, 2> {
+        mu_o = ViewCosine<decltype(m)>(mu_o);
         if constexpr (IsSpecular<decltype(m)>()) {
           auto unit = m;
           unit.fresnel = Fresnel{};

@@ -161,6 +161,8 @@ AnyModel MakeModel(const ModelInfo& info, const ModelParams& p) {
   a.rho = Get(info, p, "rho");
   a.f0 = Get(info, p, "f0");
   a.rs = Get(info, p, "rs");
+  a.eta = Get(info, p, "eta");
+  a.k = Get(info, p, "k");
   a.alpha = std::max(AlphaFromPerceptual(a.roughness), MinAlpha);
   a.fresnel = FresnelFromParams(p);
   a.nu = p.nu;

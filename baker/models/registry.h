@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "baker/models/custom_lobe.h"
 #include "baker/models/coupled_diffuse.h"
 #include "baker/models/disney_diffuse.h"
 #include "baker/models/fujii.h"
@@ -43,7 +44,9 @@ using AnyModel =
                  // issue #16: Unity's BRDFs, Ward, Lafortune, Kajiya-Kay
                  UnityBRDF1, UnityBRDF2, UnityBRDF3, WardBRDF, LafortuneBRDF, KajiyaKay,
                  // issue #15: sheen lobes
-                 CharlieSheen, CharlieSmithSheen, AshikhminVelvet>;
+                 CharlieSheen, CharlieSmithSheen, AshikhminVelvet,
+                 // a user's lobe (baker/custom/)
+                 CustomDiffuseModel, CustomSpecularModel>;
 
 /// Which fixed integration rule bakes a model's albedo-family tables (dfg, albedo, albedo-avg,
 /// ltc norm). Stated per model: a model is never baked by a rule it does not name. None: no
@@ -90,6 +93,7 @@ struct AxisDefault {
 /// not take the parameter).
 struct ModelArgs {
   double roughness = 0, rho = 0, f0 = 0, rs = 0;
+  double eta = 0, k = 0;         ///< as given or defaulted (a user's lobe takes them as numbers)
   double alpha = 0;              ///< max(roughness^2, MinAlpha)
   Fresnel fresnel;               ///< FresnelFromParams: f0 -> Schlick, eta (k) -> exact, else 1
   std::optional<double> nu, nv;  ///< as given
@@ -121,6 +125,10 @@ struct ModelInfo {
   const char* noTables = nullptr;
   /// Builds the model (MakeModel calls it after checking the parameters).
   ModelFactory make;
+  /// A run-time model's code hash (a user's lobe, baker/custom/: its source's or library's
+  /// FNV-1a 64 in hex); "" for a built-in model. Part of its tables' spec hash and method text,
+  /// so that an edited lobe makes its tables stale.
+  std::string codeHash;
 
   // --- How its tables are integrated -------------------------------------------------------
   /// The fixed rule of its dfg / albedo / albedo-avg / ltc-norm tables; None: adaptive only.
@@ -143,6 +151,10 @@ struct ModelInfo {
 
   // --- Which tables it has, over which axes ---------------------------------------------------
   CatalogueGroup catalogue = CatalogueGroup::None;
+  /// Its <id>-albedo, <id>-albedo-avg and, for a specular model, <id>-dfg tables on their
+  /// kinds' default axes resolve by name (`bake --only`, `verify`, `plan`) although no catalogue
+  /// lists them (a user's lobe, baker/custom/).
+  bool tablesByName = false;
   /// Its albedo is rho exactly (Lambert): a scene needs no table for it.
   bool albedoIsRho = false;
   /// The exact-Fresnel albedo kinds (fresnel-albedo, fresnel-albedo-avg) are baked for it.

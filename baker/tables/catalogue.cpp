@@ -138,6 +138,22 @@ std::vector<TableSpec> CatalogueEntries(const CatalogueOptions& opt, bool onRequ
   return out;
 }
 
+/// The tables of the models with ModelInfo::tablesByName (a user's lobe): albedo, albedo-avg
+/// and, for a specular model, dfg, on their kinds' default axes, before any size override.
+std::vector<TableSpec> TablesByName() {
+  std::vector<TableSpec> out;
+  for (const ModelInfo& m : AllModels()) {
+    if (!m.tablesByName) continue;
+    std::vector<Quantity> kinds = {Quantity::Albedo, Quantity::AlbedoAvg};
+    if (m.specular()) kinds.push_back(Quantity::Dfg);
+    for (Quantity k : kinds) {
+      const QuantityInfo& q = Describe(k);
+      out.push_back(q.makeSpec(m.id, q.defaultAxes(m.id)));
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<TableSpec> DefaultCatalogue(const CatalogueOptions& opt) {
@@ -160,6 +176,11 @@ std::vector<TableSpec> OnRequestTables(const CatalogueOptions& opt) {
 TableSpec CatalogueTable(const std::string& name, const CatalogueOptions& opt) {
   std::vector<std::string> names;
   for (TableSpec& s : CatalogueEntries(opt, true)) {
+    if (s.name == name) return s;
+    names.push_back(s.name);
+  }
+  for (TableSpec& s : TablesByName()) {  // a user's lobe loaded this run (baker/custom/)
+    Resize(s, opt.size);
     if (s.name == name) return s;
     names.push_back(s.name);
   }

@@ -41,6 +41,13 @@ const double* SheenClampedPoint(const TableSpec& spec, const double* x, double* 
   return buf;
 }
 
+/// The code hash of the model `id` names (ModelInfo::codeHash): a user's lobe's; "" for a
+/// built-in model or an id no model has.
+std::string CodeHashOf(const std::string& id) {
+  const ModelInfo* m = FindModel(id);
+  return m ? m->codeHash : "";
+}
+
 }  // namespace
 
 std::string TableSpec::ParamsText() const {
@@ -51,7 +58,11 @@ std::string TableSpec::ParamsText() const {
 
 std::string TableSpec::Method() const {
   const QuantityInfo& q = Describe(quantity);
-  return UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
+  std::string method = UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
+  // A user's lobe: its id and hash in the header (the hash is in HashText too).
+  if (const std::string hash = CodeHashOf(model); !hash.empty())
+    method += "; custom model '" + model + "', hash " + hash;
+  return method;
 }
 
 std::string TableSpec::HashText() const {
@@ -67,6 +78,9 @@ std::string TableSpec::HashText() const {
   // Roughness 0 as the smooth limit (QuantityInfo::smoothLimit) changed the texels of the tables
   // it applies to, and only theirs: they re-bake, the rest of the catalogue keeps its hash.
   if (SmoothLimitApplies(*this)) text += "|smooth-limit:1";
+  // A user's lobe (baker/custom/): the hash of its source or library, so an edited lobe makes
+  // its tables stale.
+  if (const std::string hash = CodeHashOf(model); !hash.empty()) text += "|model-hash:" + hash;
   for (const std::string& c : channels) text += "|c:" + c;
   for (const AxisSpec& a : axes)
     text += "|a:" + a.name + "," + G17(a.lo) + "," + G17(a.hi) + "," + std::to_string(a.size) +

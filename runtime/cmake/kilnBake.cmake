@@ -5,20 +5,25 @@
 #             [SCENE <file>]          # or what a glTF / kiln scene needs (kiln bake --scene)
 #             [SIZE <n>]              # kiln bake --size
 #             [FORMAT <format>]       # kiln bake --format, passed only when given
+#             [MODEL_SOURCE <file>...] # a user's lobe (kiln/model_abi.h), kiln bake --model-source
 #             [ARGS <arg>...])        # any other `kiln bake` arguments (-j 2, --header, ...)
 #
 # Adds the target <name> (built by default, `ALL`) that runs `kiln bake --out <dir> ...` through
 # a custom command whose output is a stamp file, <binary dir>/<name>.kiln-stamp. The command runs
-# again when the kiln executable, the scene file or the arguments change (or the stamp is
-# deleted); kiln then skips every table whose file in <dir> is up to date (same spec hash, same
-# pixel type, manifest entry present) and bakes only the missing and stale ones. A build with
-# nothing changed runs nothing. A relative OUT is taken from the current binary dir, a relative
-# SCENE from the current source dir. The kiln executable is the target kiln::kiln: imported by
-# find_package(kiln), or built when kiln's project is added with add_subdirectory.
+# again when the kiln executable, the scene file, a MODEL_SOURCE file or the arguments change (or
+# the stamp is deleted); kiln then skips every table whose file in <dir> is up to date (same spec
+# hash, same pixel type, manifest entry present) and bakes only the missing and stale ones. A
+# build with nothing changed runs nothing. A relative OUT is taken from the current binary dir, a
+# relative SCENE or MODEL_SOURCE from the current source dir. A MODEL_SOURCE lobe's tables are
+# named in TABLES (<id>-albedo, <id>-albedo-avg, <id>-dfg) or by the SCENE; an edited lobe makes
+# them stale (its hash is in their spec hash), so the next build re-bakes them. The kiln
+# executable is the target kiln::kiln: imported by find_package(kiln), or built when kiln's
+# project is added with add_subdirectory.
 include_guard(GLOBAL)
 
 function(kiln_bake)
-  cmake_parse_arguments(PARSE_ARGV 0 KB "" "TARGET;OUT;SCENE;SIZE;FORMAT" "TABLES;ARGS")
+  cmake_parse_arguments(PARSE_ARGV 0 KB "" "TARGET;OUT;SCENE;SIZE;FORMAT"
+                        "TABLES;ARGS;MODEL_SOURCE")
   if(KB_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "kiln_bake: unknown arguments: ${KB_UNPARSED_ARGUMENTS}")
   endif()
@@ -45,6 +50,11 @@ function(kiln_bake)
     list(APPEND args --scene "${scene}")
     list(APPEND depends "${scene}")
   endif()
+  foreach(source IN LISTS KB_MODEL_SOURCE)
+    get_filename_component(source "${source}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    list(APPEND args --model-source "${source}")
+    list(APPEND depends "${source}")
+  endforeach()
   if(DEFINED KB_SIZE)
     list(APPEND args --size "${KB_SIZE}")
   endif()

@@ -1,0 +1,49 @@
+#include "baker/models/custom_lobe.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace kiln {
+
+void ThrowBadCustomValue(const CustomLobe& lobe, double f, Vec3 wo, Vec3 wi, double roughness) {
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "model '%s' (%s): f = %g at wo = (%.17g, %.17g, %.17g), wi = (%.17g, %.17g, "
+                "%.17g), roughness %.17g: f must be finite and >= 0",
+                lobe.id.c_str(), lobe.origin.c_str(), f, wo.x, wo.y, wo.z, wi.x, wi.y, wi.z,
+                roughness);
+  throw CustomModelError(buf);
+}
+
+double CustomModelBase::Checked(Vec3 wo, Vec3 wi) const {
+  if (CosTheta(wo) < 0 || CosTheta(wi) < 0) return 0;
+  if (CosTheta(wo) == 0) wo = Normalize(Vec3{wo.x, wo.y, kHorizonMu});
+  const double o[3] = {wo.x, wo.y, wo.z}, i[3] = {wi.x, wi.y, wi.z};
+  double f = lobe->paramCount > 0 ? lobe->evalParams(o, i, roughness, params.data())
+                                  : lobe->eval(o, i, roughness);
+  if (!(f >= 0) || !std::isfinite(f)) ThrowBadCustomValue(*lobe, f, wo, wi, roughness);
+  return f;
+}
+
+int CustomSpecularModel::PhiKinks(double mu_o, double sinTheta_o, PolarParam h,
+                                  double* cosPhi) const {
+  // mu_l = 2 (o.h) cos_h - mu_o with o.h = sin_o sin_h cos(phi) + mu_o cos_h.
+  const double den = 2 * h.cosTheta * sinTheta_o * h.sinTheta;
+  if (!(den > 0)) return 0;
+  int count = 0;
+  for (double m = importance.alpha / 4; count < 4; m *= 4)
+    cosPhi[count++] = (m + mu_o - 2 * mu_o * Sqr(h.cosTheta)) / den;
+  return count;
+}
+
+double CustomSpecularModel::HalfWeight(const HalfSample& s) const {
+  double f = Checked(s.wo, s.wi);
+  if (f == 0) return 0;
+  // tan^2 from the normal's components: 1 - c^2 cancels where alpha is tiny.
+  double a2 = Sqr(importance.alpha), c = s.cosTheta_h;
+  double tan2 = (Sqr(s.wm.x) + Sqr(s.wm.y)) / (c * c);
+  double invQ = Pi * a2 * c * c * c * Sqr(1 + tan2 / a2);
+  return f * fresnel(s.oh) * s.mu_l * 4 * s.oh * invQ / (2 * Pi);
+}
+
+}  // namespace kiln
