@@ -56,7 +56,7 @@ TEST_CASE("kiln eval and integrate take a lobe by --model-source or --model-libr
   CHECK(unknown.exitCode != 0);  // not loaded: an unknown model
 }
 
-TEST_CASE("kiln bake --only <id>-albedo bakes a table naming the lobe; verify checks it",
+TEST_CASE("kiln bake --only <id>-albedo bakes a table naming the lobe, verify checks it",
           "[custom][cli]") {
   UseTestCache();
   const std::string dir = TempDir("custom_bake"), src = Example("normalized_phong.cpp");
