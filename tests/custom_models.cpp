@@ -5,10 +5,7 @@
 // does not compile, breaks the ABI or returns NaN, infinite or negative values is refused with
 // the compiler's lines or the directions where it happened.
 #include <catch2/catch.hpp>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -227,32 +224,4 @@ TEST_CASE("the example lobes load: a normalised Phong and a custom sheen with a 
         Approx(0.5 * Evaluate(MakeModel(sheen.id, full), wo, wi)).epsilon(1e-14));
   half.rho = 2;
   CHECK_THROWS_WITH(MakeModel(sheen.id, half), Contains("outside [0, 1]"));
-}
-
-// Not run by default (hidden tag): the 128 x 128 albedo of the user's GGX against the built-in
-// ggx's, both by adaptive quadrature to the table's tolerance, on 2 threads; prints both times.
-TEST_CASE("a user's GGX albedo bakes within 3x of the built-in ggx's adaptive bake",
-          "[.custom-speed]") {
-  ExampleLobe("user_ggx.cpp");
-  auto seconds = [](const TableSpec& spec) {
-    std::vector<double> values(spec.TexelCount());
-    tbb::task_arena arena(2);
-    auto start = std::chrono::steady_clock::now();
-    arena.execute([&] {
-      tbb::parallel_for(size_t(0), spec.TexelCount(), [&](size_t i) {
-        double x[2];
-        NodeEvaluationPoint(spec, i, x);
-        IntegrationStats stats;
-        values[i] = EvaluateSpec(spec, x, spec.tol, stats)[0];
-      });
-    });
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  double builtin = seconds(CatalogueTable("ggx-albedo"));
-  double user = seconds(CatalogueTable("user-ggx-albedo"));
-  std::printf(
-      "128 x 128 albedo by adaptive quadrature, 2 threads: ggx %.2f s, user-ggx %.2f s "
-      "(%.2fx)\n",
-      builtin, user, user / builtin);
-  CHECK(user <= 3 * builtin);
 }
