@@ -144,6 +144,22 @@ std::string AtlasCsv(const AtlasResult& result);
 /// a colour bar each (max_df on a log10 scale when it spans more than three decades).
 std::string AtlasPng(const AtlasResult& result);
 
+/// One heatmap panel of a PNG: values over a (mu, roughness) grid, mu fastest; `allowLog`: log10
+/// when they span more than three decades; `unit` labels the colour bar.
+struct HeatmapPanel {
+  std::string title;
+  std::vector<double> values;
+  bool allowLog = false;
+  std::string unit;
+};
+
+/// A PNG of heatmap panels side by side over an nMu x nR grid (viridis, a colour bar each, the
+/// first and last mu and roughness on the axes, `axis` naming the roughness axis) under a
+/// one-line `heading`.
+std::string HeatmapPng(const std::string& heading, const std::vector<HeatmapPanel>& panels, int nMu,
+                       int nR, double muFirst, double muLast, double rFirst, double rLast,
+                       const std::string& axis);
+
 /// docs/atlas/README.md: per pair the worst |dE| and worst max_df and where, the methods, the
 /// mappings, and `command`, the command that regenerated it.
 std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOptions& opt,

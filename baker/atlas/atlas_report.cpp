@@ -51,52 +51,39 @@ void Fill(std::vector<std::uint8_t>& img, int width, int x0, int y0, int w, int 
 
 }  // namespace
 
-std::string AtlasPng(const AtlasResult& r) {
-  std::vector<double> dE, df;
-  for (const AtlasCell& c : r.cells) {
-    dE.push_back(c.dE);
-    df.push_back(c.maxDf);
-  }
-  Panel panels[2] = {MakePanel("dE = E_cheap - E_ref", dE, false),
-                     MakePanel("max_wi (f_cheap - f_ref) mu_i  abs", df, true)};
-  const int cellW = std::max(1, 256 / r.nMu), cellH = std::max(1, 256 / r.nR);
-  const int imgW = cellW * r.nMu, imgH = cellH * r.nR;
+std::string HeatmapPng(const std::string& heading, const std::vector<HeatmapPanel>& in, int nMu,
+                       int nR, double muFirst, double muLast, double rFirst, double rLast,
+                       const std::string& axis) {
+  std::vector<Panel> panels;
+  for (const HeatmapPanel& h : in) panels.push_back(MakePanel(h.title, h.values, h.allowLog));
+  const int cellW = std::max(1, 256 / nMu), cellH = std::max(1, 256 / nR);
+  const int imgW = cellW * nMu, imgH = cellH * nR;
   const int left = 64, gap = 40, top = 52;
   const int panelW = left + imgW + gap;
-  const int width = 2 * panelW + 16, height = top + imgH + 80;
+  const int slots = std::max<int>(2, static_cast<int>(panels.size()));
+  const int width = slots * panelW + 16, height = top + imgH + 80;
   std::vector<std::uint8_t> img(static_cast<size_t>(width) * height * 3, 24);
-  auto sideText = [](const AtlasSide& x) {
-    std::string t = x.params.empty() ? x.model : x.model + " " + x.params;
-    if (x.rescale == AtlasRescale::BlinnPhong204) t += " (s+2.04)/(8 pi)";
-    if (x.map == AtlasRoughnessMap::FujiiSigmaPrime) t += " with sigma prime = B/A";
-    return t;
-  };
-  DrawText(img, width, height, 8, 6,
-           r.pair.name + ":  " + sideText(r.pair.cheap) + "  vs  " + sideText(r.pair.ref), kWhite);
-  for (int k = 0; k < 2; ++k) {
+  DrawText(img, width, height, 8, 6, heading, kWhite);
+  for (size_t k = 0; k < panels.size(); ++k) {
     const Panel& p = panels[k];
-    const int x0 = k * panelW + left;
+    const int x0 = static_cast<int>(k) * panelW + left;
     DrawText(img, width, height, x0, 22, p.title, kWhite);
-    DrawText(img, width, height, x0 - left + 4, 38, r.pair.axis + " (up)", kGrey);
+    DrawText(img, width, height, x0 - left + 4, 38, axis + " (up)", kGrey);
     double span = p.hi - p.lo;
-    for (int i = 0; i < r.nR; ++i)
-      for (int j = 0; j < r.nMu; ++j) {
-        double t = span > 0 ? (p.v[static_cast<size_t>(i) * r.nMu + j] - p.lo) / span : 0.5;
+    for (int i = 0; i < nR; ++i)
+      for (int j = 0; j < nMu; ++j) {
+        double t = span > 0 ? (p.v[static_cast<size_t>(i) * nMu + j] - p.lo) / span : 0.5;
         std::uint8_t rgb[3];
         viridis(t, rgb);
-        Fill(img, width, x0 + j * cellW, top + (r.nR - 1 - i) * cellH, cellW, cellH, rgb);
+        Fill(img, width, x0 + j * cellW, top + (nR - 1 - i) * cellH, cellW, cellH, rgb);
       }
-    const AtlasCell& first = r.cells.front();
-    const AtlasCell& last = r.cells.back();
     // y axis: roughness, first node at the bottom.
-    DrawText(img, width, height, x0 - TextWidth(G(last.roughness)) - 4, top, G(last.roughness),
-             kWhite);
-    DrawText(img, width, height, x0 - TextWidth(G(first.roughness)) - 4, top + imgH - 7,
-             G(first.roughness), kWhite);
+    DrawText(img, width, height, x0 - TextWidth(G(rLast)) - 4, top, G(rLast), kWhite);
+    DrawText(img, width, height, x0 - TextWidth(G(rFirst)) - 4, top + imgH - 7, G(rFirst), kWhite);
     // x axis: mu.
     const int xa = top + imgH + 4;
-    DrawText(img, width, height, x0, xa, G(first.mu), kWhite);
-    DrawText(img, width, height, x0 + imgW - TextWidth(G(last.mu)), xa, G(last.mu), kWhite);
+    DrawText(img, width, height, x0, xa, G(muFirst), kWhite);
+    DrawText(img, width, height, x0 + imgW - TextWidth(G(muLast)), xa, G(muLast), kWhite);
     DrawText(img, width, height, x0 + imgW / 2 - TextWidth("mu (view)") / 2, xa, "mu (view)",
              kGrey);
     // Colour bar with its ends.
@@ -109,10 +96,32 @@ std::string AtlasPng(const AtlasResult& r) {
     std::string lo = G(p.lo, "%.3g"), hi = G(p.hi, "%.3g");
     DrawText(img, width, height, x0, yb + 14, lo, kWhite);
     DrawText(img, width, height, x0 + imgW - TextWidth(hi), yb + 14, hi, kWhite);
-    const std::string unit = k == 0 ? "dE" : (p.log10 ? "log10 max_df" : "max_df");
+    const std::string unit = p.log10 ? "log10 " + in[k].unit : in[k].unit;
     DrawText(img, width, height, x0 + imgW / 2 - TextWidth(unit) / 2, yb + 14, unit, kGrey);
   }
   return encodePngRgb8(width, height, img);
+}
+
+std::string AtlasPng(const AtlasResult& r) {
+  std::vector<double> dE, df;
+  for (const AtlasCell& c : r.cells) {
+    dE.push_back(c.dE);
+    df.push_back(c.maxDf);
+  }
+  auto sideText = [](const AtlasSide& x) {
+    std::string t = x.params.empty() ? x.model : x.model + " " + x.params;
+    if (x.rescale == AtlasRescale::BlinnPhong204) t += " (s+2.04)/(8 pi)";
+    if (x.map == AtlasRoughnessMap::FujiiSigmaPrime) t += " with sigma prime = B/A";
+    return t;
+  };
+  const std::vector<HeatmapPanel> panels = {
+      {"dE = E_cheap - E_ref", dE, false, "dE"},
+      {"max_wi (f_cheap - f_ref) mu_i  abs", df, true, "max_df"}};
+  const AtlasCell& first = r.cells.front();
+  const AtlasCell& last = r.cells.back();
+  return HeatmapPng(r.pair.name + ":  " + sideText(r.pair.cheap) + "  vs  " + sideText(r.pair.ref),
+                    panels, r.nMu, r.nR, first.mu, last.mu, first.roughness, last.roughness,
+                    r.pair.axis);
 }
 
 std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOptions& opt,
@@ -141,7 +150,9 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
        "argmax_phi_i) and `<name>.png` (dE and max_df over (mu, roughness); max_df on a log10 "
        "scale where it spans more than three decades, zeros floored six decades below its "
        "maximum). Method and mappings: [docs/models.md, \"Error atlas\"](../models.md#error-atlas)."
-       "\n\n";
+       " The approximations engines ship in place of a whole table (EnvBRDFApprox, three.js's "
+       "DFG and sheen approximations, Lazarov's EnvironmentBRDF) are measured against kiln's "
+       "exact integrals in [tables.md](tables.md).\n\n";
   s += "| pair | cheap | reference | roughness axis | worst abs(dE) | at (mu, r) | worst max_df | "
        "at (mu, r) | argmax (mu_i, phi_i) |\n";
   s += "|---|---|---|---|---|---|---|---|---|\n";

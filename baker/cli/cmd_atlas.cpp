@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "baker/atlas/atlas.h"
+#include "baker/atlas/atlas_tables.h"
 #include "baker/cli/commands.h"
 #include "baker/io/atomic_write.h"
 #include "baker/util/did_you_mean.h"
@@ -17,18 +18,23 @@ void RegisterAtlas(CLI::App& app) {
       "atlas",
       "error atlas of the cheap approximations: per pair DIR/<pair>.csv and DIR/<pair>.png "
       "(albedo difference and max cosine-weighted BRDF difference over (mu, roughness)) and "
-      "DIR/README.md");
+      "DIR/README.md; the approximations engines ship in place of a table against kiln's exact "
+      "integrals: DIR/<name>.csv, DIR/<name>.png and DIR/tables.md");
   struct Args {
     std::string out = "docs/atlas";
     std::string only;
+    std::string section = "all";
     int threads = 0;
     int grid = 32;
   };
   auto args = std::make_shared<Args>();
   sub->add_option("--out,-o", args->out, "output folder (created if missing)")
       ->capture_default_str();
-  auto* oOnly =
-      sub->add_option("--only", args->only, "comma-separated pair names (default: every pair)");
+  auto* oOnly = sub->add_option(
+      "--only", args->only,
+      "comma-separated pair or table-approximation names (default: every one of the sections)");
+  sub->add_option("--section", args->section, "pairs (README.md), tables (tables.md) or all")
+      ->capture_default_str();
   sub->add_option("--grid", args->grid, "nodes per axis of the (mu, roughness) grid")
       ->capture_default_str();
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
@@ -37,22 +43,35 @@ void RegisterAtlas(CLI::App& app) {
     if (args->out.empty()) throw std::invalid_argument("atlas: --out '' names no folder");
     if (args->grid < 2 || args->grid > 256)
       throw std::invalid_argument("atlas: --grid must be in [2, 256]");
+    if (args->section != "all" && args->section != "pairs" && args->section != "tables")
+      throw std::invalid_argument("atlas: --section must be pairs, tables or all, not '" +
+                                  args->section + "'");
+    const bool doPairs = args->section != "tables", doTables = args->section != "pairs";
     std::vector<AtlasPair> pairs;
+    std::vector<TableApproximation> approxs;
     if (oOnly->count()) {
       std::vector<std::string> known;
-      for (const AtlasPair& p : AtlasPairs()) known.push_back(p.name);
+      if (doPairs)
+        for (const AtlasPair& p : AtlasPairs()) known.push_back(p.name);
+      if (doTables)
+        for (const TableApproximation& t : TableApproximations()) known.push_back(t.name);
       for (const std::string& name : UniqueNames(args->only)) {  // a,a runs a once
-        const AtlasPair* found = nullptr;
+        bool found = false;
         for (const AtlasPair& p : AtlasPairs())
-          if (p.name == name) found = &p;
+          if (doPairs && p.name == name) pairs.push_back(p), found = true;
+        for (const TableApproximation& t : TableApproximations())
+          if (doTables && t.name == name) approxs.push_back(t), found = true;
         if (!found)
-          throw std::invalid_argument("atlas: unknown pair '" + name + "'" +
+          // "pair" unless only table approximations are searched.
+          throw std::invalid_argument(std::string("atlas: unknown ") +
+                                      (doPairs ? "pair" : "approximation") + " '" + name + "'" +
                                       DidYouMean(name, known));
-        pairs.push_back(*found);
       }
-      if (pairs.empty()) throw std::invalid_argument("atlas: --only '' names no pair");
+      if (pairs.empty() && approxs.empty())
+        throw std::invalid_argument("atlas: --only '' names no pair");
     } else {
-      pairs = AtlasPairs();
+      if (doPairs) pairs = AtlasPairs();
+      if (doTables) approxs = TableApproximations();
     }
     for (const AtlasPair& p : pairs) CheckAtlasPair(p);
     std::error_code ec;
@@ -70,8 +89,15 @@ void RegisterAtlas(CLI::App& app) {
       std::printf("%s: done\n", p.name.c_str());
       std::fflush(stdout);
     }
+    std::vector<TableApproximationResult> tables;
+    for (const TableApproximation& t : approxs) {
+      tables.push_back(ComputeTableApproximation(t, opt));
+      std::printf("%s: done\n", t.name.c_str());
+      std::fflush(stdout);
+    }
     std::string command = "kiln atlas --out " + args->out;
     if (args->grid != 32) command += " --grid " + std::to_string(args->grid);
+    if (args->section != "all") command += " --section " + args->section;
     if (oOnly->count()) command += " --only " + args->only;
     // Every file is written to a temporary file first and all are renamed together.
     std::vector<std::unique_ptr<PendingFile>> files;
@@ -83,7 +109,12 @@ void RegisterAtlas(CLI::App& app) {
       add(r.pair.name + ".csv", AtlasCsv(r));
       add(r.pair.name + ".png", AtlasPng(r));
     }
-    add("README.md", AtlasReadme(results, opt, command));
+    if (!results.empty()) add("README.md", AtlasReadme(results, opt, command));
+    for (const TableApproximationResult& r : tables) {
+      add(r.approx.name + ".csv", TableApproximationCsv(r));
+      add(r.approx.name + ".png", TableApproximationPng(r));
+    }
+    if (!tables.empty()) add("tables.md", TableApproximationsReadme(tables, opt, command));
     std::vector<PendingFile*> raw;
     for (auto& f : files) raw.push_back(f.get());
     PendingFile::CommitAll(raw);
