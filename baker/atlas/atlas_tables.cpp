@@ -157,6 +157,15 @@ std::string TableApproximationPng(const TableApproximationResult& r) {
       p.values.push_back(r.approximate[k * nc + c] - r.exact[k * nc + c]);
     panels.push_back(std::move(p));
   }
+  // A log scale shows the error away from a singular corner (the sheen's grazing rim).
+  HeatmapPanel worst{"max abs error over the channels", {}, true, "abs error"};
+  for (size_t k = 0; k < r.mu.size(); ++k) {
+    double w = 0;
+    for (size_t c = 0; c < nc; ++c)
+      w = std::max(w, std::abs(r.approximate[k * nc + c] - r.exact[k * nc + c]));
+    worst.values.push_back(w);
+  }
+  panels.push_back(std::move(worst));
   return HeatmapPng(r.approx.name + ":  " + r.approx.label + "  vs  " + r.approx.table, panels,
                     r.nMu, r.nR, r.mu.front(), r.mu.back(), r.roughness.front(), r.roughness.back(),
                     "roughness");
@@ -180,7 +189,9 @@ std::string TableApproximationsReadme(const std::vector<TableApproximationResult
       std::to_string(opt.muNodes) + " x " + std::to_string(opt.roughnessNodes) + " grid (mu = j/" +
       std::to_string(opt.muNodes - 1) +
       ", roughness over the table's domain, ends included; columns mu, roughness, exact_<ch>, "
-      "approx_<ch>, max_abs_err) and `<name>.png` (approx - exact per channel). `max, mu >= 1/4` "
+      "approx_<ch>, max_abs_err) and `<name>.png` (approx - exact per channel, then the max abs "
+      "error over the channels, on a log10 scale where it spans more than three decades). `max, mu "
+      ">= 1/4` "
       "is the same search over views with mu >= 1/4 only: there Neubelt's sheen visibility "
       "1 / (4 (mu_o + mu_l - mu_o mu_l)) is at most 1 for every light, so three.js's saturate of "
       "it never acts (kiln's `charlie`, like Filament's, has no clamp); for the GGX tables it is "

@@ -57,7 +57,8 @@ TableApproximationResult ComputeTableApproximation(const TableApproximation& app
 /// The CSV: mu,roughness, then exact_<channel>... , approx_<channel>..., max_abs_err; %.9g.
 std::string TableApproximationCsv(const TableApproximationResult& result);
 
-/// The PNG: per channel a heatmap of approx - exact over (mu, roughness).
+/// The PNG: per channel a heatmap of approx - exact over (mu, roughness), then the max abs error
+/// over the channels (log10 where it spans more than three decades).
 std::string TableApproximationPng(const TableApproximationResult& result);
 
 /// docs/atlas/tables.md: per approximation its table, max, median and where the max is, the
