@@ -37,15 +37,16 @@ std::string CompileHeaderProgram(const std::string& header, const std::string& f
                                  const std::string& dir) {
   std::ofstream(dir + "/fit.h") << header;
   std::ofstream(dir + "/main.cpp") << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
-                                      "  float x[2], out[4];\n"
+                                      "  float x[2], out[4] = {0, 0, 0, 0};\n"
                                       "  while (std::scanf(\"%a %a\", &x[0], &x[1]) == 2) {\n    "
                                    << function
                                    << "(x, out);\n    std::printf(\"%a %a\\n\", out[0], out[1]);\n"
                                       "  }\n}\n";
   std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
                     "/main.cpp > " + dir + "/cc.log 2>&1";
+  const int status = std::system(cmd.c_str());
   INFO(test::ReadFile(dir + "/cc.log"));
-  REQUIRE(std::system(cmd.c_str()) == 0);
+  REQUIRE(status == 0);
   return dir + "/prog";
 }
 
@@ -242,4 +243,64 @@ TEST_CASE("three.js's 16 x 16 DFGLUTData, sampled bilinearly, measured against t
   // Far from the fits' bounds, as docs/fits.md lists.
   CHECK(rep.max > 0.01);
   CHECK(rep.median < 0.05);
+}
+
+TEST_CASE(
+    "A fresnel-dielectric fit follows the grazing layer near eta = 1 (layer-eta warp), in the "
+    "emitted C++ and shaders as measured",
+    "[fit][fresnel]") {
+  // Dielectric Fresnel's grazing layer has width sqrt(eta^2 - 1): a fixed-degree form in mu
+  // misses it near eta = 1 (0.51 off eta = 1 with the plain warps); the layer-eta warp follows it
+  // down to the float just above 1, leaving only eta = 1 itself (F = 0, no interface).
+  FitOptions opt;
+  opt.terms = 64;
+  opt.threads = 2;
+  const FitResult fit = FitTable(CatalogueTable("fresnel-dielectric"), opt);
+  CHECK(fit.form.axes[0].warp == FitWarp::LayerEta);
+  CHECK(fit.error.maxOffJump < 0.03);
+  CHECK(fit.error.median < 0.01);
+  const std::string dir = test::TempDir("fit_fresnel");
+  const std::string header = FitCppHeader(fit, "test");
+  CHECK(header.find("layer-eta") != std::string::npos);
+  const std::string prog = CompileHeaderProgram(header, "kiln_fit_fresnel_dielectric", dir);
+  // Points near eta = 1 and at grazing, the float just above 1 among them.
+  const float points[][2] = {{1e-4f, 1.00000012f}, {3e-4f, 1.0001f}, {0.01f, 1.01f},
+                             {0.5f, 1.5f},         {0.05f, 1.2f},    {1.0f, 3.0f}};
+  {
+    std::ofstream in(dir + "/points.txt");
+    for (auto& p : points) {
+      char b[80];
+      std::snprintf(b, sizeof b, "%a %a\n", p[0], p[1]);
+      in << b;
+    }
+  }
+  REQUIRE(std::system((prog + " < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
+  std::istringstream out(test::ReadFile(dir + "/out.txt"));
+  const double stated = StatedBound(fit.error.maxOffJump);
+  for (auto& p : points) {
+    std::string a, b;
+    REQUIRE(static_cast<bool>(out >> a >> b));
+    const float emitted = std::strtof(a.c_str(), nullptr);
+    float own[1];
+    EvaluateFit(fit.form, p, own);
+    INFO("mu " << p[0] << " eta " << p[1]);
+    CHECK(emitted == own[0]);  // the bits kiln measured
+    const double x[2] = {p[0], p[1]};
+    IntegrationStats stats;
+    const double exact = EvaluateSpec(CatalogueTable("fresnel-dielectric"), x, stats)[0];
+    CHECK(std::fabs(emitted - exact) <= stated);
+  }
+  std::string log;
+  const std::string glslMain =
+      "\nin vec2 p; out vec4 color;\nvoid main() { color = vec4(kiln_fit_fresnel_dielectric(p)); "
+      "}\n";
+  int code = Glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain,
+                     ".frag", "-S frag", dir, log);
+  if (code != 0) FAIL_CHECK("GLSL ES 3.00: " << log);
+  const std::string hlslMain =
+      "\nfloat4 main(float2 p : TEXCOORD0) : SV_Target { return "
+      "float4(kiln_fit_fresnel_dielectric(p).xxxx); }\n";
+  code = Glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
+                 "-D -V -e main -S frag -o " + dir + "/shader.spv", dir, log);
+  if (code != 0) FAIL_CHECK("HLSL: " << log);
 }

@@ -68,6 +68,9 @@ Samples SampleExact(const TableSpec& spec, const std::vector<FitAxis>& axes, int
     // (below mu ~ 1e-10; fit.h kLayerJumpMu).
     if (axes[0].warp == FitWarp::Layer && s.x[i * dims + 1] == 0)
       s.x[i * dims + 1] = kLayerRoughnessFloor;
+    // Likewise eta below the float just above 1 (fit.h kEtaLayerFloor).
+    if (axes[0].warp == FitWarp::LayerEta && s.x[i * dims + 1] < kEtaLayerFloor)
+      s.x[i * dims + 1] = kEtaLayerFloor;
   }
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
@@ -156,6 +159,21 @@ Samples CheckPoints(const TableSpec& spec, const FitForm& skeleton, int threads)
   a.x.insert(a.x.end(), b.x.begin(), b.x.end());
   a.values.insert(a.values.end(), b.values.begin(), b.values.end());
   a.count += b.count;
+  // A (mu, eta) table's points below the float just above 1 are on the jump (fit.h
+  // kEtaLayerFloor) or between floats: left out.
+  if (skeleton.axes.size() == 2 && skeleton.axes[0].name == "mu" &&
+      skeleton.axes[1].name == "eta") {
+    const size_t channels = a.values.size() / a.count;
+    Samples kept;
+    for (size_t i = 0; i < a.count; ++i) {
+      if (a.x[i * 2 + 1] < kEtaLayerFloor) continue;
+      kept.x.insert(kept.x.end(), a.x.begin() + i * 2, a.x.begin() + i * 2 + 2);
+      kept.values.insert(kept.values.end(), a.values.begin() + i * channels,
+                         a.values.begin() + (i + 1) * channels);
+      ++kept.count;
+    }
+    return kept;
+  }
   return a;
 }
 
@@ -180,17 +198,22 @@ double CheckError(const FitForm& form, const Samples& check) {
 /// squares to samples at kWarpFitSamples Chebyshev points per axis (every combination in a fixed
 /// order: ties keep the earlier).
 std::vector<FitWarp> ChooseWarps(const TableSpec& spec, int threads) {
-  const FitWarp all[] = {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4, FitWarp::Layer};
+  const FitWarp all[] = {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4, FitWarp::Layer,
+                         FitWarp::LayerEta};
   FitForm form = Skeleton(spec);
   const bool twoD = form.axes.size() == 2;
   // The Layer warp only on mu before roughness.
   const bool layer = twoD && form.axes[0].name == "mu" && form.axes[1].name == "roughness";
+  // The LayerEta warp only on mu before eta.
+  const bool layerEta = twoD && form.axes[0].name == "mu" && form.axes[1].name == "eta";
   const Samples check = CheckPoints(spec, form, threads);
   std::vector<FitWarp> best;
   double bestError = INFINITY;
   for (FitWarp w0 : all)
     for (FitWarp w1 : all) {
-      if (w1 == FitWarp::Layer || (w0 == FitWarp::Layer && !layer)) continue;
+      if (IsLayerWarp(w1) || (w0 == FitWarp::Layer && !layer) ||
+          (w0 == FitWarp::LayerEta && !layerEta))
+        continue;
       if (!twoD && w1 != FitWarp::Linear) continue;
       form.axes[0].warp = w0;
       form.axes[0].degree = twoD ? kWarpDegree2D : kWarpDegree1D;

@@ -20,6 +20,15 @@ namespace kiln {
 constexpr double kLayerRoughnessFloor = 1e-6;
 constexpr double kLayerJumpMu = 1e-9;
 
+/// The dielectric Fresnel's counterpart (a (mu, eta) table, the LayerEta warp): at eta exactly 1
+/// there is no interface and F = 0 for mu > 0, while at the next float, kEtaLayerFloor =
+/// 1 + 2^-23, a grazing layer of width sqrt(eta^2 - 1) = 4.88e-4 remains, where F rises to 1.
+/// A LayerEta fit samples eta at or above kEtaLayerFloor (the float axis has nothing between),
+/// and its max off the jump leaves out eta = 1 with mu < kEtaJumpMu (beyond it the layer's F at
+/// 1 + 2^-23 is below 1e-5).
+constexpr double kEtaLayerFloor = 1.0 + 1.0 / 8388608.0;
+constexpr double kEtaJumpMu = 0.02;
+
 /// What `kiln fit` asks for: a bound (the smallest form meeting it) or a number of terms.
 struct FitOptions {
   /// > 0: the cheapest form (fewest operations) whose searched max off the mirror's jump

@@ -13,8 +13,18 @@ constexpr int kMaxDegree = 31;
 /// The smallest scale c of the Layer warp: kiln's smallest alpha (models/roughness.h MinAlpha),
 /// below which the lobes' grazing layer keeps its width.
 constexpr float kLayerFloor = 1e-12f;
+/// The LayerEta warp's smallest scale: sqrt(eta^2 - 1) at the float just above 1 (fit.h
+/// kEtaLayerFloor).
+constexpr float kEtaLayerScaleF = 4.8828137e-4f;
 /// Bisection steps inverting the Layer warp (double).
 constexpr int kLayerBisections = 200;
+
+/// The layer warp's scale c at axis 1's clamped value r, in float (the emitted code's steps).
+float LayerScaleFloat(FitWarp warp, float r) {
+  if (warp == FitWarp::LayerEta)
+    return std::max(std::sqrt(std::abs(r * r - 1.0f)), kEtaLayerScaleF);
+  return std::max(r * r, kLayerFloor);
+}
 
 /// x clamped to the axis, in float.
 float ClampedFloat(const FitAxis& axis, float x) {
@@ -29,8 +39,8 @@ float WarpedFloat(const FitAxis& axis, float v, float r) {
   float u = (v - lo) * inv;
   if (axis.warp == FitWarp::Sqrt) u = std::sqrt(u);
   if (axis.warp == FitWarp::Root4) u = std::sqrt(std::sqrt(u));
-  if (axis.warp == FitWarp::Layer) {
-    const float c = std::max(r * r, kLayerFloor);
+  if (IsLayerWarp(axis.warp)) {
+    const float c = LayerScaleFloat(axis.warp, r);
     u = (std::sqrt(std::sqrt(u)) + u * (1.0f + c) / (u + c)) * 0.5f;
   }
   return u * 2.0f - 1.0f;
@@ -40,8 +50,10 @@ float WarpedFloat(const FitAxis& axis, float v, float r) {
 double WarpDouble(FitWarp warp, double u, double r) {
   if (warp == FitWarp::Sqrt) return std::sqrt(u);
   if (warp == FitWarp::Root4) return std::sqrt(std::sqrt(u));
-  if (warp == FitWarp::Layer) {
-    const double c = std::max(r * r, static_cast<double>(kLayerFloor));
+  if (IsLayerWarp(warp)) {
+    const double c = warp == FitWarp::LayerEta ? std::max(std::sqrt(std::abs(r * r - 1)),
+                                                          static_cast<double>(kEtaLayerScaleF))
+                                               : std::max(r * r, static_cast<double>(kLayerFloor));
     return 0.5 * (std::sqrt(std::sqrt(u)) + u * (1 + c) / (u + c));
   }
   return u;
@@ -66,14 +78,18 @@ const char* FitWarpName(FitWarp w) {
       return "root4";
     case FitWarp::Layer:
       return "layer";
+    case FitWarp::LayerEta:
+      return "layer-eta";
   }
   return "linear";
 }
 
 FitWarp FitWarpFromName(const std::string& name) {
-  for (FitWarp w : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4, FitWarp::Layer})
+  for (FitWarp w :
+       {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4, FitWarp::Layer, FitWarp::LayerEta})
     if (name == FitWarpName(w)) return w;
-  throw std::invalid_argument("unknown fit warp '" + name + "' (linear, sqrt, root4, layer)");
+  throw std::invalid_argument("unknown fit warp '" + name +
+                              "' (linear, sqrt, root4, layer, layer-eta)");
 }
 
 int FitForm::TermsPerChannel() const {
@@ -85,15 +101,19 @@ int FitForm::TermsPerChannel() const {
 int FitForm::SqrtCount() const {
   int n = 0;
   for (const FitAxis& a : axes)
-    n += a.warp == FitWarp::Sqrt ? 1 : a.warp == FitWarp::Linear ? 0 : 2;
+    n += a.warp == FitWarp::Sqrt       ? 1
+         : a.warp == FitWarp::Linear   ? 0
+         : a.warp == FitWarp::LayerEta ? 3  // root4 and sqrt(|eta^2 - 1|)
+                                       : 2;
   return n;
 }
 
 int FitForm::OperationCount() const {
   int ops = SqrtCount();
   for (const FitAxis& a : axes) {
-    ops += 2 + 2 + 2;                        // clamp, normalise, s = 2 w - 1
-    if (a.warp == FitWarp::Layer) ops += 8;  // r r, max, u + c, 1 + c, mul, div, add, half
+    ops += 2 + 2 + 2;                            // clamp, normalise, s = 2 w - 1
+    if (a.warp == FitWarp::Layer) ops += 8;      // r r, max, u + c, 1 + c, mul, div, add, half
+    if (a.warp == FitWarp::LayerEta) ops += 10;  // the same and - 1, abs
     if (a.degree >= 2) ops += 1 + 2 * (a.degree - 1);  // s + s, then a multiply-subtract each
   }
   const int nc = static_cast<int>(channels.size());
@@ -121,7 +141,7 @@ void PointAtWarped(const FitForm& form, const double* s, double* x) {
     double u = w;
     if (a.warp == FitWarp::Sqrt) u = w * w;
     if (a.warp == FitWarp::Root4) u = (w * w) * (w * w);
-    if (a.warp == FitWarp::Layer) {
+    if (IsLayerWarp(a.warp)) {
       double lo = 0, hi = 1;  // the warp increases in u
       for (int i = 0; i < kLayerBisections && hi > lo; ++i) {
         const double mid = 0.5 * (lo + hi);

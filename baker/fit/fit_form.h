@@ -14,8 +14,15 @@ namespace kiln {
 /// axis 0 of a (mu, roughness) fit only) kiln's root4-layer warp with an unclamped scale:
 /// w = (u^(1/4) + u (1 + c) / (u + c)) / 2, c = max(r^2, 1e-12) with r axis 1's clamped value
 /// (the table's root4-layer warp), which follows the grazing layer of a microfacet lobe (a
-/// function of mu / alpha, alpha = r^2, at least kiln's smallest alpha 1e-12).
-enum class FitWarp { Linear, Sqrt, Root4, Layer };
+/// function of mu / alpha, alpha = r^2, at least kiln's smallest alpha 1e-12). LayerEta (axis 0
+/// of a (mu, eta) fit only) is the same warp with c = max(sqrt(|eta^2 - 1|), 4.8828137e-4), eta
+/// axis 1's clamped value (the table's layer-eta warp; the floor is the float just above 1's,
+/// fit.h kEtaLayerFloor): dielectric Fresnel's grazing layer near eta = 1 is a function of
+/// mu / sqrt(eta^2 - 1).
+enum class FitWarp { Linear, Sqrt, Root4, Layer, LayerEta };
+
+/// Whether `w` is one of the layer warps (Layer, LayerEta): axis 0's warp scaled by axis 1.
+inline bool IsLayerWarp(FitWarp w) { return w == FitWarp::Layer || w == FitWarp::LayerEta; }
 
 /// "linear", "sqrt", "root4", "layer".
 const char* FitWarpName(FitWarp w);

@@ -131,10 +131,12 @@ FitErrorReport MeasureFitError(const TableSpec& spec, const FitForm& form, int t
   }
   // The max off the mirror's jump (fit.h kLayerJumpMu), over the probes and the climbs' tops.
   const bool layerAxes = dims == 2 && form.axes[0].name == "mu" && form.axes[1].name == "roughness";
+  const bool etaAxes = dims == 2 && form.axes[0].name == "mu" && form.axes[1].name == "eta";
   auto onJump = [&](const Probe& p) {
     double x[2];
     PointAtWarped(form, p.s, x);
-    return layerAxes && static_cast<float>(x[1]) == 0.0f && x[0] < kLayerJumpMu;
+    return (layerAxes && static_cast<float>(x[1]) == 0.0f && x[0] < kLayerJumpMu) ||
+           (etaAxes && static_cast<float>(x[1]) == 1.0f && x[0] < kEtaJumpMu);
   };
   for (const Probe& p : probes)
     if (!onJump(p)) rep.maxOffJump = std::max(rep.maxOffJump, p.error);

@@ -98,10 +98,15 @@ std::string Body(const FitForm& f, Dialect d) {
       << lit(static_cast<float>(1.0 / (ax.hi - ax.lo))) << ";\n";
     if (ax.warp == FitWarp::Sqrt) o << "    u = " << sq << "(u);\n";
     if (ax.warp == FitWarp::Root4) o << "    u = " << sq << "(" << sq << "(u));\n";
+    const std::string mx = d == Dialect::Cpp ? "std::max" : "max";
     if (ax.warp == FitWarp::Layer)
-      o << "    float lc = " << (d == Dialect::Cpp ? "std::max" : "max") << "(v1 * v1, "
-        << lit(1e-12f) << ");\n    u = (" << sq << "(" << sq << "(u)) + u * (" << lit(1.0f)
-        << " + lc) / (u + lc)) * " << lit(0.5f) << ";\n";
+      o << "    float lc = " << mx << "(v1 * v1, " << lit(1e-12f) << ");\n";
+    if (ax.warp == FitWarp::LayerEta)
+      o << "    float lc = " << mx << "(" << sq << "(" << (d == Dialect::Cpp ? "std::abs" : "abs")
+        << "(v1 * v1 - " << lit(1.0f) << ")), " << lit(4.8828137e-4f) << ");\n";
+    if (IsLayerWarp(ax.warp))
+      o << "    u = (" << sq << "(" << sq << "(u)) + u * (" << lit(1.0f) << " + lc) / (u + lc)) * "
+        << lit(0.5f) << ";\n";
     o << "    float s = u * " << lit(2.0f) << " - " << lit(1.0f) << ";\n";
     o << "    " << t << "[0] = " << lit(1.0f) << ";\n    " << t << "[1] = s;\n";
     o << "    float s2 = s + s;\n";
