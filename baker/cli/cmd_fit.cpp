@@ -61,7 +61,7 @@ void RegisterFit(CLI::App& app) {
     l.WriteBytes(FitHlsl(fit, KILN_VERSION));
     PendingFile::CommitAll({&h, &g, &l});
     std::printf(
-        "%s: max error %.3e (off the mirror's jump %.3e, median %.3e) over %lld points; "
+        "%s: max error %.3e (off the jump %.3e, median %.3e) over %lld points; "
         "%d terms per channel, %d operations; wrote %s.{h,glsl,hlsl}\n",
         spec.name.c_str(), fit.error.max, fit.error.maxOffJump, fit.error.median, fit.error.points,
         fit.form.TermsPerChannel(), fit.form.OperationCount(), base.c_str());

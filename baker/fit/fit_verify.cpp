@@ -34,8 +34,7 @@ FitVerifyResult VerifyFitHeader(const std::string& path, int threads) {
   r.ok = r.measured.max <= r.fit.statedMax && r.measured.maxOffJump <= r.fit.statedOffJump;
   if (!r.ok) {
     char b[200];
-    std::snprintf(b, sizeof b,
-                  "max error %.4g (off the mirror's jump %.4g) exceeds the stated %.3g (%.3g)",
+    std::snprintf(b, sizeof b, "max error %.4g (off the jump %.4g) exceeds the stated %.3g (%.3g)",
                   r.measured.max, r.measured.maxOffJump, r.fit.statedMax, r.fit.statedOffJump);
     r.problem = b;
   }

@@ -42,10 +42,15 @@ std::string Preamble(const FitResult& fit, const std::string& version) {
   for (size_t d = 0; d < f.axes.size(); ++d)
     o << " " << f.axes[d].name << "=" << fit.error.where[d];
   o << "; median " << G3(fit.error.median) << ").\n";
-  if (fit.error.maxOffJump != fit.error.max)
+  const bool etaJump = f.axes.size() == 2 && f.axes[1].name == "eta";
+  if (fit.error.maxOffJump != fit.error.max && !etaJump)
     o << "// max error off the mirror's jump = " << G3(StatedBound(fit.error.maxOffJump))
       << ": leaving out roughness exactly 0 with mu < 1e-9, where kiln's exact integrals jump\n"
       << "//   from the grazing layer of its smallest alpha (1e-12) to the mirror's values.\n";
+  if (fit.error.maxOffJump != fit.error.max && etaJump)
+    o << "// max error off the jump = " << G3(StatedBound(fit.error.maxOffJump))
+      << ": leaving out eta exactly 1 with mu < 0.02, where F = 0 (no interface) while at\n"
+      << "//   the next float, 1 + 2^-23, a grazing layer of width 4.9e-4 rises to 1.\n";
   o << "// operations: " << f.OperationCount() << " per evaluation of all channels ("
     << f.SqrtCount() << " sqrt), " << f.TermsPerChannel() << " coefficients per channel.\n";
   o << "// source: kiln " << version << ", table " << f.table << ", spec " << fit.specHash
