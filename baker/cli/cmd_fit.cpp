@@ -20,7 +20,8 @@ constexpr double kDefaultFitMaxError = 2e-3;
 void RegisterFit(CLI::App& app) {
   auto* sub = app.add_subcommand(
       "fit",
-      "fit a closed form (Chebyshev polynomial in warped axes) to a 1D or 2D table's exact "
+      "fit a closed form (Chebyshev polynomial in warped axes, or Horner's rule for one axis) "
+      "to a 1D or 2D table's exact "
       "integrals; writes DIR/TABLE-fit.h, .glsl, .hlsl stating the max error found by a search");
   struct Args {
     std::string table, out = ".";
@@ -62,9 +63,10 @@ void RegisterFit(CLI::App& app) {
     PendingFile::CommitAll({&h, &g, &l});
     std::printf(
         "%s: max error %.3e (off the jump %.3e, median %.3e) over %lld points; "
-        "%d terms per channel, %d operations; wrote %s.{h,glsl,hlsl}\n",
+        "%s form, %d terms per channel, %d operations; wrote %s.{h,glsl,hlsl}\n",
         spec.name.c_str(), fit.error.max, fit.error.maxOffJump, fit.error.median, fit.error.points,
-        fit.form.TermsPerChannel(), fit.form.OperationCount(), base.c_str());
+        FitBasisName(fit.form.basis), fit.form.TermsPerChannel(), fit.form.OperationCount(),
+        base.c_str());
   });
 }
 

@@ -29,8 +29,11 @@ FitForm Skeleton(const TableSpec& spec) {
 }
 
 namespace {
-constexpr int kMaxDegree2D = 16;       ///< largest degree per axis of a 2D fit
-constexpr int kMaxDegree1D = 30;       ///< largest degree of a 1D fit
+constexpr int kMaxDegree2D = 16;  ///< largest degree per axis of a 2D fit
+constexpr int kMaxDegree1D = 30;  ///< largest degree of a 1D fit
+/// Largest degree of a 1D Power (Horner) form: beyond it the monomials' least squares loses
+/// accuracy, and a Chebyshev form of lower degree has fewer operations anyway.
+constexpr int kMaxDegreePower = 12;
 constexpr int kSamples2D = 48;         ///< Chebyshev samples per axis of a 2D fit
 constexpr int kSamples1D = 256;        ///< samples of a 1D fit
 constexpr int kWarpSamples2D = 33;     ///< check points per axis (and grid) choosing the warps
@@ -87,6 +90,13 @@ Samples SampleExact(const TableSpec& spec, const std::vector<FitAxis>& axes, int
 void DesignRow(const FitForm& form, const double* x, double* row) {
   const std::vector<FitAxis>& axes = form.axes;
   double t0[kMaxDegree1D + 1], t1[kMaxDegree1D + 1] = {1}, s[2];
+  if (form.basis == FitBasis::Power) {
+    const double v = std::min(std::max(x[0], axes[0].lo), axes[0].hi);
+    const double t = PowerVariable(axes[0], v);
+    row[0] = 1;
+    for (int k = 1; k <= axes[0].degree; ++k) row[k] = row[k - 1] * t;
+    return;
+  }
   WarpedCoordinates(form, x, s);
   ChebyshevRow(axes[0].degree, s[0], t0);
   const int n1 = axes.size() == 2 ? axes[1].degree + 1 : 1;
@@ -233,31 +243,30 @@ std::vector<FitWarp> ChooseWarps(const TableSpec& spec, int threads) {
   return best;
 }
 
-/// The degree candidates in the order they are tried: by operation count, then degree 0 first.
-std::vector<std::vector<int>> DegreeCandidates(const FitForm& skeleton) {
-  std::vector<std::vector<int>> out;
-  if (skeleton.axes.size() == 1) {
-    for (int n = 1; n <= kMaxDegree1D; ++n) out.push_back({n});
-    return out;
-  }
-  for (int a = 1; a <= kMaxDegree2D; ++a)
-    for (int b = 1; b <= kMaxDegree2D; ++b)
-      if (std::abs(a - b) <= 4) out.push_back({a, b});
-  auto ops = [&](const std::vector<int>& d) {
+/// The candidate forms in the order they are tried: by operation count (stable: a 1D Power
+/// form before the Chebyshev form of as many operations, then degree 0 first).
+std::vector<FitForm> Candidates(const FitForm& skeleton) {
+  std::vector<FitForm> out;
+  auto add = [&](FitBasis basis, const std::vector<int>& degrees) {
     FitForm f = skeleton;
-    for (size_t k = 0; k < d.size(); ++k) f.axes[k].degree = d[k];
-    return f.OperationCount();
+    f.basis = basis;
+    for (size_t k = 0; k < degrees.size(); ++k) f.axes[k].degree = degrees[k];
+    out.push_back(f);
   };
-  std::stable_sort(
-      out.begin(), out.end(),
-      [&](const std::vector<int>& x, const std::vector<int>& y) { return ops(x) < ops(y); });
+  if (skeleton.axes.size() == 1) {
+    for (int n = 1; n <= kMaxDegreePower; ++n) add(FitBasis::Power, {n});
+    for (int n = 1; n <= kMaxDegree1D; ++n) add(FitBasis::Chebyshev, {n});
+  } else {
+    for (int a = 1; a <= kMaxDegree2D; ++a)
+      for (int b = 1; b <= kMaxDegree2D; ++b)
+        if (std::abs(a - b) <= 4) add(FitBasis::Chebyshev, {a, b});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const FitForm& x, const FitForm& y) {
+    return x.OperationCount() < y.OperationCount();
+  });
   return out;
 }
 
-FitForm WithDegrees(FitForm form, const std::vector<int>& degrees) {
-  for (size_t k = 0; k < degrees.size(); ++k) form.axes[k].degree = degrees[k];
-  return form;
-}
 }  // namespace
 
 bool Fittable(const TableSpec& spec) {
@@ -276,28 +285,34 @@ FitResult FitTable(const TableSpec& spec, const FitOptions& opt) {
   Samples s = SampleExact(spec, skeleton.axes, twoD ? kSamples2D : kSamples1D, opt.threads);
   FitResult result;
   result.specHash = spec.Hash();
-  std::vector<std::vector<int>> candidates = DegreeCandidates(skeleton);
+  const std::vector<FitForm> candidates = Candidates(skeleton);
   if (opt.terms > 0) {
-    // The candidate with at most `terms` coefficients and the smallest sample max.
+    // The Chebyshev candidate with at most `terms` coefficients and the smallest sample max.
     double best = INFINITY;
-    for (const std::vector<int>& d : candidates) {
-      FitForm f = WithDegrees(skeleton, d);
-      if (f.TermsPerChannel() > opt.terms) continue;
+    for (FitForm f : candidates) {
+      if (f.basis != FitBasis::Chebyshev || f.TermsPerChannel() > opt.terms) continue;
       double e = FitCoefficients(f, s, 0);
       if (e < best) {
         best = e;
         result.form = f;
       }
     }
-    if (!result.form.axes.empty()) FitCoefficients(result.form, s, kLawsonIterations);
     if (result.form.axes.empty())
       throw std::invalid_argument("fit: --terms " + std::to_string(opt.terms) + " is too few");
+    FitCoefficients(result.form, s, kLawsonIterations);
     result.error = MeasureFitError(spec, result.form, opt.threads);
+    // A one-axis table: the Power form of the same degree when its searched max is no larger.
+    if (!twoD && result.form.axes[0].degree <= kMaxDegreePower) {
+      FitForm power = result.form;
+      power.basis = FitBasis::Power;
+      FitCoefficients(power, s, kLawsonIterations);
+      FitErrorReport rep = MeasureFitError(spec, power, opt.threads);
+      if (rep.max <= result.error.max) result = {power, rep, result.specHash};
+    }
     return result;
   }
   double bestFound = INFINITY;
-  for (const std::vector<int>& d : candidates) {
-    FitForm f = WithDegrees(skeleton, d);
+  for (FitForm f : candidates) {
     if (FitCoefficients(f, s, 0) > kScreenFactor * opt.maxError) continue;
     FitCoefficients(f, s, kLawsonIterations);
     FitErrorReport rep = MeasureFitError(spec, f, opt.threads);

@@ -59,6 +59,26 @@ double WarpDouble(FitWarp warp, double u, double r) {
   return u;
 }
 
+/// The Power form's t of the clamped value v, in float (the emitted code's steps).
+float PowerVariableFloat(const FitAxis& axis, float v) {
+  float t = axis.lo == 0 ? v : v - static_cast<float>(axis.lo);
+  if (axis.warp == FitWarp::Sqrt) t = std::sqrt(t);
+  if (axis.warp == FitWarp::Root4) t = std::sqrt(std::sqrt(t));
+  return t;
+}
+
+/// A one-axis Power form's channels: Horner's rule from the highest coefficient down.
+void EvaluatePower(const FitForm& form, const float* x, float* out) {
+  const float t = PowerVariableFloat(form.axes[0], ClampedFloat(form.axes[0], x[0]));
+  const int n = form.axes[0].degree + 1;
+  const float* c = form.coefficients.data();
+  for (size_t ch = 0; ch < form.channels.size(); ++ch, c += n) {
+    float p = c[n - 1];
+    for (int k = n - 2; k >= 0; --k) p = c[k] + t * p;
+    out[ch] = p;
+  }
+}
+
 /// T_0..T_degree at s, in float, by the recurrence the emitted code runs.
 void ChebyshevFloat(float s, int degree, float* t) {
   t[0] = 1.0f;
@@ -92,6 +112,19 @@ FitWarp FitWarpFromName(const std::string& name) {
                               "' (linear, sqrt, root4, layer, layer-eta)");
 }
 
+const char* FitBasisName(FitBasis b) { return b == FitBasis::Power ? "horner" : "chebyshev"; }
+
+FitBasis FitBasisFromName(const std::string& name) {
+  if (name == "chebyshev") return FitBasis::Chebyshev;
+  if (name == "horner") return FitBasis::Power;
+  throw std::invalid_argument("unknown fit form '" + name + "' (chebyshev, horner)");
+}
+
+double PowerVariable(const FitAxis& axis, double v) {
+  const double t = v - axis.lo;
+  return WarpDouble(axis.warp, t, 0);
+}
+
 int FitForm::TermsPerChannel() const {
   int n = 1;
   for (const FitAxis& a : axes) n *= a.degree + 1;
@@ -110,6 +143,10 @@ int FitForm::SqrtCount() const {
 
 int FitForm::OperationCount() const {
   int ops = SqrtCount();
+  if (basis == FitBasis::Power) {
+    const int nc = static_cast<int>(channels.size());
+    return ops + 2 + (axes[0].lo == 0 ? 0 : 1) + nc * 2 * axes[0].degree;
+  }
   for (const FitAxis& a : axes) {
     ops += 2 + 2 + 2;                            // clamp, normalise, s = 2 w - 1
     if (a.warp == FitWarp::Layer) ops += 8;      // r r, max, u + c, 1 + c, mul, div, add, half
@@ -161,6 +198,7 @@ void ChebyshevRow(int degree, double s, double* t) {
 }
 
 void EvaluateFit(const FitForm& form, const float* x, float* out) {
+  if (form.basis == FitBasis::Power) return EvaluatePower(form, x, out);
   float t0[kMaxDegree + 1], t1[kMaxDegree + 1];
   const bool twoD = form.axes.size() == 2;
   const float v0 = ClampedFloat(form.axes[0], x[0]);

@@ -1,7 +1,8 @@
 // A closed-form fit of a table (`kiln fit`, docs/fits.md): per channel, a tensor product of
 // Chebyshev polynomials in warped axes. Axis d's value x is clamped to [lo, hi], mapped to
 // w = ((x - lo) / (hi - lo))^p (p = 1, 1/2 or 1/4: the warp) and to s = 2 w - 1 in [-1, 1];
-// the channel is sum_ij c_ij T_i(s_0) T_j(s_1). The evaluation here is the float arithmetic the
+// the channel is sum_ij c_ij T_i(s_0) T_j(s_1). A one-axis fit may instead be a power series
+// evaluated by Horner's rule (FitBasis::Power). The evaluation here is the float arithmetic the
 // emitted C++, GLSL and HLSL perform, in the same order, so the bound measured with it holds for
 // the emitted code.
 #pragma once
@@ -29,6 +30,17 @@ const char* FitWarpName(FitWarp w);
 /// The warp named `name`; throws std::invalid_argument for another name.
 FitWarp FitWarpFromName(const std::string& name);
 
+/// The polynomial basis of a fit. Chebyshev: the tensor product above. Power (one axis only):
+/// c_0 + t (c_1 + t (c_2 + ... + t c_n)) by Horner's rule in t = warp(v - lo), v the clamped
+/// axis value and the warp's power of the plain difference (linear t = v - lo, sqrt, root4): the
+/// normalisation 1 / (hi - lo) is folded into the coefficients, and v - lo is skipped for lo = 0.
+enum class FitBasis { Chebyshev, Power };
+
+/// "chebyshev", "horner".
+const char* FitBasisName(FitBasis b);
+/// The basis named `name`; throws std::invalid_argument for another name.
+FitBasis FitBasisFromName(const std::string& name);
+
 /// One fitted axis: its declared domain, warp and polynomial degree.
 struct FitAxis {
   std::string name;
@@ -43,12 +55,15 @@ struct FitForm {
   std::string table;  ///< the table's name, e.g. "ggx-dfg"
   std::vector<std::string> channels;
   std::vector<FitAxis> axes;
-  std::vector<float> coefficients;  ///< channel-major, then axis 0's index, then axis 1's
+  std::vector<float> coefficients;       ///< channel-major, then axis 0's index, then axis 1's
+  FitBasis basis = FitBasis::Chebyshev;  ///< Power: one axis, coefficients of t^0 .. t^degree
 
   /// Coefficients per channel: the product of (degree + 1) over the axes.
   int TermsPerChannel() const;
   /// The float operations of one evaluation of every channel: clamps, warps (sqrt counted as
-  /// one), the Chebyshev recurrences and the multiply-adds of the sums (multiply and add each one).
+  /// one), the Chebyshev recurrences and the multiply-adds of the sums (multiply and add each one);
+  /// a Power form: the clamp, v - lo unless lo = 0, the warp's sqrt and per channel a multiply
+  /// and an add per degree.
   int OperationCount() const;
   /// The sqrt among them.
   int SqrtCount() const;
@@ -60,6 +75,10 @@ void EvaluateFit(const FitForm& form, const float* x, float* out);
 
 /// The Chebyshev values T_0..T_degree at s in [-1, 1], in double (the least-squares design).
 void ChebyshevRow(int degree, double s, double* t);
+
+/// The Power form's variable t = warp(v - lo) of the clamped value v of a one-axis fit, in
+/// double (the least-squares design; the float evaluation takes the same steps).
+double PowerVariable(const FitAxis& axis, double v);
 
 /// The warped coordinates s in [-1, 1] (one per axis) of the point x, in double.
 void WarpedCoordinates(const FitForm& form, const double* x, double* s);

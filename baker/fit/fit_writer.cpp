@@ -27,6 +27,15 @@ std::string G3(double v) {
   return b;
 }
 
+/// The Power form's variable t of the clamped value v, in the dialect's syntax (`sq` its sqrt).
+std::string PowerVariableText(const FitAxis& a, const std::string& lo, const std::string& sq) {
+  const std::string d = a.lo == 0 ? "v" : "(v - " + lo + ")";
+  const std::string arg = d[0] == '(' ? d : "(" + d + ")";
+  if (a.warp == FitWarp::Sqrt) return sq + arg;
+  if (a.warp == FitWarp::Root4) return sq + "(" + sq + arg + ")";
+  return d;
+}
+
 /// The comment block every file starts with (`c` the line comment of the dialect).
 std::string Preamble(const FitResult& fit, const std::string& version) {
   const FitForm& f = fit.form;
@@ -51,12 +60,17 @@ std::string Preamble(const FitResult& fit, const std::string& version) {
     o << "// max error off the jump = " << G3(StatedBound(fit.error.maxOffJump))
       << ": leaving out eta exactly 1 with mu < 0.02, where F = 0 (no interface) while at\n"
       << "//   the next float, 1 + 2^-23, a grazing layer of width 4.9e-4 rises to 1.\n";
+  if (f.basis == FitBasis::Power)
+    o << "// form: c0 + t (c1 + t (c2 + ...)) by Horner's rule, t = "
+      << PowerVariableText(f.axes[0], F9(static_cast<float>(f.axes[0].lo)), "sqrt")
+      << ", v = " << f.axes[0].name << " clamped to its domain.\n";
   o << "// operations: " << f.OperationCount() << " per evaluation of all channels ("
     << f.SqrtCount() << " sqrt), " << f.TermsPerChannel() << " coefficients per channel.\n";
   o << "// source: kiln " << version << ", table " << f.table << ", spec " << fit.specHash
     << "; channels";
   for (const std::string& c : f.channels) o << " " << c;
-  o << ".\n// kiln-fit-form: table=" << f.table << " spec=" << fit.specHash << " channels=";
+  o << ".\n// kiln-fit-form: table=" << f.table << " form=" << FitBasisName(f.basis)
+    << " spec=" << fit.specHash << " channels=";
   for (size_t c = 0; c < f.channels.size(); ++c) o << (c ? "," : "") << f.channels[c];
   o << " axes=";
   for (size_t d = 0; d < f.axes.size(); ++d) {
@@ -70,20 +84,54 @@ std::string Preamble(const FitResult& fit, const std::string& version) {
   return o.str();
 }
 
-/// The body shared by the three dialects: warped coordinates, Chebyshev values, sums.
-std::string Body(const FitForm& f, Dialect d) {
+/// The coefficient array c[] in the dialect's syntax.
+std::string CoefficientArray(const FitForm& f, Dialect d) {
   const std::string flt = d == Dialect::Cpp ? "f" : "";
-  auto lit = [&](float v) { return F9(v) + flt; };
   std::ostringstream o;
-  const int n0 = f.axes[0].degree + 1, n1 = f.axes.size() == 2 ? f.axes[1].degree + 1 : 1;
   const int total = static_cast<int>(f.coefficients.size());
   if (d == Dialect::Glsl)
     o << "  const float c[" << total << "] = float[" << total << "](";
   else
     o << "  static const float c[" << total << "] = {";
   for (int k = 0; k < total; ++k)
-    o << (k % 6 ? " " : "\n      ") << lit(f.coefficients[k]) << (k + 1 < total ? "," : "");
+    o << (k % 6 ? " " : "\n      ") << F9(f.coefficients[k]) << flt << (k + 1 < total ? "," : "");
   o << (d == Dialect::Glsl ? ");\n" : "};\n");
+  return o.str();
+}
+
+/// The body of a one-axis Power form: the clamp, t, and per channel Horner's rule
+/// c[0] + t * (c[1] + t * (... + t * c[n])), the float steps of EvaluateFit.
+std::string PowerBody(const FitForm& f, Dialect d) {
+  const std::string flt = d == Dialect::Cpp ? "f" : "";
+  const FitAxis& ax = f.axes[0];
+  const std::string lo = F9(static_cast<float>(ax.lo)) + flt,
+                    hi = F9(static_cast<float>(ax.hi)) + flt;
+  std::ostringstream o;
+  o << CoefficientArray(f, d);
+  o << "  float v = "
+    << (d == Dialect::Cpp ? "std::min(std::max(x[0], " + lo + "), " + hi + ")"
+                          : "clamp(xa[0], " + lo + ", " + hi + ")")
+    << ";\n";
+  o << "  float t = " << PowerVariableText(ax, lo, d == Dialect::Cpp ? "std::sqrt" : "sqrt")
+    << ";\n";
+  const int n = ax.degree + 1;
+  for (size_t ch = 0; ch < f.channels.size(); ++ch) {
+    const size_t base = ch * n;
+    o << "  " << (d == Dialect::Cpp ? "out[" : "o[") << ch << "] = ";
+    for (int k = 0; k < n - 1; ++k) o << "c[" << base + k << "] + t * (";
+    o << "c[" << base + n - 1 << "]" << std::string(n - 1, ')') << ";\n";
+  }
+  return o.str();
+}
+
+/// The body shared by the three dialects: warped coordinates, Chebyshev values, sums.
+std::string Body(const FitForm& f, Dialect d) {
+  if (f.basis == FitBasis::Power) return PowerBody(f, d);
+  const std::string flt = d == Dialect::Cpp ? "f" : "";
+  auto lit = [&](float v) { return F9(v) + flt; };
+  std::ostringstream o;
+  const int n0 = f.axes[0].degree + 1, n1 = f.axes.size() == 2 ? f.axes[1].degree + 1 : 1;
+  o << CoefficientArray(f, d);
   const std::string sq = d == Dialect::Cpp ? "std::sqrt" : "sqrt";
   for (size_t a = 0; a < f.axes.size(); ++a) {
     const FitAxis& ax = f.axes[a];
@@ -227,6 +275,8 @@ ParsedFit ParseFitHeader(const std::string& text, const std::string& path) {
   const std::string line = text.substr(at + tag.size(), text.find('\n', at) - at - tag.size());
   ParsedFit p;
   p.form.table = Field(line, "table");
+  const std::string basis = Field(line, "form");
+  p.form.basis = basis.empty() ? FitBasis::Chebyshev : FitBasisFromName(basis);
   p.specHash = Field(line, "spec");
   p.form.channels = Split(Field(line, "channels"), ',');
   p.statedMax = Number(Field(line, "max-error"), path);
