@@ -1,0 +1,202 @@
+// Specification: the Horner (power-basis) form of a one-axis `kiln fit` (baker/fit/,
+// docs/fits.md): c0 + t (c1 + t (c2 + ...)) in t = warp(v - lo), whose emitted C++ computes the
+// bits kiln measured, whose form line makes `kiln verify` re-measure the Horner evaluation, and
+// which brings a one-axis fit under a bilinear fetch's address arithmetic.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "baker/fit/fit_writer.h"
+#include "baker/tables/catalogue.h"
+#include "cli_util.h"
+#include "test_util.h"
+
+namespace {
+using namespace kiln;
+
+/// The table of the tests below: its average albedo's Horner fit is fast to fit and to search.
+const char* const kHornerTable = "fujii-normalized-albedo-avg";
+
+/// The bilinear fetch's address arithmetic of a one-axis table at a linear warp, counted as
+/// docs/fits.md counts it: clamp (2), (x - lo) / (hi - lo) (2), w (n - 1) (1), floor (1), the
+/// weight (1), the neighbour's index min(i + 1, n - 1) (2).
+constexpr int kFetchAddressOpsLinear1D = 2 + 2 + 1 + 1 + 1 + 2;
+
+/// kiln fit kHornerTable --max-error 1e-3, fitted once.
+const FitResult& HornerFit() {
+  static const FitResult fit = [] {
+    FitOptions opt;
+    opt.maxError = 1e-3;
+    opt.threads = 2;
+    return FitTable(CatalogueTable(kHornerTable), opt);
+  }();
+  return fit;
+}
+
+/// Compiles `header` (function `function`, one axis, up to 4 channels) with -Werror into a
+/// program that reads one %a value a line and prints the channels in %a; runs it on `xs` and
+/// returns its outputs, channels per point.
+std::vector<float> RunEmitted(const std::string& header, const std::string& function,
+                              const std::vector<float>& xs, size_t channels,
+                              const std::string& dir) {
+  std::ofstream(dir + "/fit.h") << header;
+  std::ofstream(dir + "/main.cpp") << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
+                                      "  float x[1], out[4] = {0, 0, 0, 0};\n"
+                                      "  while (std::scanf(\"%a\", &x[0]) == 1) {\n    "
+                                   << function
+                                   << "(x, out);\n"
+                                      "    std::printf(\"%a %a %a %a\\n\", out[0], out[1], out[2], "
+                                      "out[3]);\n  }\n}\n";
+  const std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
+                          "/main.cpp > " + dir + "/cc.log 2>&1";
+  const int status = std::system(cmd.c_str());
+  INFO(test::ReadFile(dir + "/cc.log"));
+  REQUIRE(status == 0);
+  {
+    std::ofstream in(dir + "/points.txt");
+    for (float x : xs) {
+      char b[40];
+      std::snprintf(b, sizeof b, "%a\n", x);
+      in << b;
+    }
+  }
+  REQUIRE(std::system((dir + "/prog < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
+  std::istringstream out(test::ReadFile(dir + "/out.txt"));
+  std::vector<float> values;
+  for (size_t i = 0; i < xs.size(); ++i)
+    for (size_t c = 0; c < 4; ++c) {
+      std::string v;
+      REQUIRE(static_cast<bool>(out >> v));
+      if (c < channels) values.push_back(std::strtof(v.c_str(), nullptr));
+    }
+  return values;
+}
+
+/// Points across [lo, hi] and beyond it (the clamp), the ends included.
+std::vector<float> AxisPoints(double lo, double hi) {
+  std::vector<float> xs = {static_cast<float>(lo), static_cast<float>(hi),
+                           static_cast<float>(lo - 0.5), static_cast<float>(hi + 0.5)};
+  test::Rng rng(34);
+  for (int i = 0; i < 200; ++i) xs.push_back(static_cast<float>(lo + (hi - lo) * rng.Uniform()));
+  return xs;
+}
+
+/// Checks that the emitted C++ of `fit` gives EvaluateFit's bits at AxisPoints.
+void CheckEmittedBits(const FitResult& fit, const std::string& dir) {
+  const FitForm& f = fit.form;
+  const std::vector<float> xs = AxisPoints(f.axes[0].lo, f.axes[0].hi);
+  const std::vector<float> emitted =
+      RunEmitted(FitCppHeader(fit, "test"), FitFunctionName(f.table), xs, f.channels.size(), dir);
+  for (size_t i = 0; i < xs.size(); ++i) {
+    float own[4];
+    EvaluateFit(f, &xs[i], own);
+    for (size_t c = 0; c < f.channels.size(); ++c) {
+      INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " at " << xs[i] << " channel "
+                   << c);
+      CHECK(emitted[i * f.channels.size() + c] == own[c]);
+    }
+  }
+}
+}  // namespace
+
+TEST_CASE("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives kiln's bits",
+          "[fit][horner]") {
+  const FitResult& fit = HornerFit();
+  REQUIRE(fit.form.basis == FitBasis::Power);
+  CHECK(fit.error.max <= 1e-3);
+  const std::string header = FitCppHeader(fit, "test");
+  CHECK(header.find("form=horner") != std::string::npos);
+  CHECK(header.find("c[0] + t * (c[1] + t * (") != std::string::npos);
+  CheckEmittedBits(fit, test::TempDir("fit_horner_cpp"));
+}
+
+TEST_CASE(
+    "The emitted Horner C++ gives kiln's bits for a domain not starting at 0, the sqrt and "
+    "root4 warps and two channels",
+    "[fit][horner]") {
+  // Forms built by hand (the writer and the evaluator, not the fitting): t = warp(v - lo).
+  FitResult fit;
+  fit.form.table = "charlie-albedo-avg";
+  fit.form.channels = {"A", "B"};
+  fit.form.basis = FitBasis::Power;
+  FitAxis axis;
+  axis.name = "roughness";
+  axis.lo = 0.045;
+  axis.hi = 1;
+  axis.degree = 4;
+  fit.form.axes = {axis};
+  fit.form.coefficients = {0.9f, -0.31f, 0.27f, -0.11f, 0.013f, 0.1f, 0.21f, -0.3f, 0.05f, 0.7f};
+  fit.error.where = {0.5};
+  const std::string dir = test::TempDir("fit_horner_warps");
+  for (FitWarp warp : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4}) {
+    fit.form.axes[0].warp = warp;
+    fit.form.axes[0].lo = 0.045;
+    CheckEmittedBits(fit, dir);
+    fit.form.axes[0].lo = 0;
+    CheckEmittedBits(fit, dir);
+  }
+  // The count: the clamp, v - lo, the warp's sqrt, a multiply and an add per degree and channel.
+  fit.form.axes[0].lo = 0.045;
+  fit.form.axes[0].warp = FitWarp::Root4;
+  CHECK(fit.form.OperationCount() == 2 + 1 + 2 + 2 * 2 * 4);
+  fit.form.axes[0].lo = 0;
+  fit.form.axes[0].warp = FitWarp::Linear;
+  CHECK(fit.form.OperationCount() == 2 + 2 * 2 * 4);
+}
+
+TEST_CASE("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops",
+          "[fit][horner]") {
+  // Its table's warp is linear: 9 operations before the fetch's memory reads. The Chebyshev form
+  // of the same degree spends more than that (6 per axis for the clamp, normalisation and
+  // s = 2 w - 1, then the recurrence and 2 per term).
+  REQUIRE(CatalogueTable(kHornerTable).axes[0].warp == Warp::Linear);
+  const FitResult& fit = HornerFit();
+  CHECK(fit.error.maxOffJump <= 1e-3);
+  CHECK(fit.form.OperationCount() < kFetchAddressOpsLinear1D);
+  FitForm chebyshev = fit.form;
+  chebyshev.basis = FitBasis::Chebyshev;
+  CHECK(chebyshev.OperationCount() > kFetchAddressOpsLinear1D);
+}
+
+TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficient was raised 1 %",
+          "[fit][horner][cli]") {
+  const std::string dir = test::TempDir("fit_horner_verify");
+  test::CommandResult r = test::RunKiln(std::string("fit ") + kHornerTable +
+                                        " --max-error 1e-3 --out " + dir + " -j 2");
+  INFO(r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.out.find("horner form") != std::string::npos);
+  const std::string path = dir + "/" + kHornerTable + "-fit.h";
+  r = test::RunKiln("verify " + path + " -j 2");
+  INFO(r.out << r.err);
+  CHECK(r.exitCode == 0);
+  const std::string text = test::ReadFile(path);
+  ParsedFit parsed = ParseFitHeader(text, path);
+  REQUIRE(parsed.form.basis == FitBasis::Power);
+  // The constant term 1 % larger: the re-measured max exceeds the stated one.
+  const size_t open = text.find('{', text.find("static const float c["));
+  const size_t close = text.find('}', open);
+  std::string list;
+  for (size_t k = 0; k < parsed.form.coefficients.size(); ++k) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%s%.9gf", k ? ", " : "",
+                  parsed.form.coefficients[k] * (k == 0 ? 1.01f : 1.0f));
+    list += b;
+  }
+  std::ofstream(path) << text.substr(0, open + 1) + list + text.substr(close);
+  r = test::RunKiln("verify " + path + " -j 2");
+  CHECK(r.exitCode != 0);
+  CHECK(r.err.find("exceeds the stated") != std::string::npos);
+  // The same coefficients read as a Chebyshev form are another function: verify measures the
+  // form the line names.
+  std::string relabelled = text;
+  relabelled.replace(relabelled.find("form=horner"), 11, "form=chebyshev");
+  std::ofstream(path) << relabelled;
+  r = test::RunKiln("verify " + path + " -j 2");
+  CHECK(r.exitCode != 0);
+  CHECK(r.err.find("exceeds the stated") != std::string::npos);
+}
