@@ -110,7 +110,7 @@ TEST_CASE("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives k
   CHECK(fit.error.max <= 1e-3);
   const std::string header = FitCppHeader(fit, "test");
   CHECK(header.find("form=horner") != std::string::npos);
-  CHECK(header.find("c[0] + t * (c[1] + t * (") != std::string::npos);
+  CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
   CheckEmittedBits(fit, test::TempDir("fit_horner_cpp"));
 }
 
@@ -199,4 +199,28 @@ TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficie
   r = test::RunKiln("verify " + path + " -j 2");
   CHECK(r.exitCode != 0);
   CHECK(r.err.find("exceeds the stated") != std::string::npos);
+}
+
+TEST_CASE("A Horner fit's GLSL and HLSL compile with glslangValidator", "[fit][horner][shaders]") {
+  REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
+  const FitResult& fit = HornerFit();
+  const std::string dir = test::TempDir("fit_horner_shaders");
+  const std::string name = FitFunctionName(fit.form.table);
+  auto glslang = [&](const std::string& text, const std::string& ext, const std::string& flags) {
+    std::ofstream(dir + "/shader" + ext) << text;
+    const std::string cmd = "glslangValidator " + flags + " " + dir + "/shader" + ext + " > " +
+                            dir + "/glslang.log 2>&1";
+    const int status = std::system(cmd.c_str());
+    INFO(test::ReadFile(dir + "/glslang.log"));
+    CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  };
+  const std::string glslMain =
+      "\nin float p; out vec4 color;\nvoid main() { color = vec4(" + name + "(p)); }\n";
+  glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain, ".frag",
+          "-S frag");
+  glslang("#version 330\n" + FitGlsl(fit, "test") + glslMain, ".frag", "-S frag");
+  const std::string hlslMain =
+      "\nfloat4 main(float p : TEXCOORD0) : SV_Target { return float4(" + name + "(p).xxxx); }\n";
+  glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
+          "-D -V -e main -S frag -o " + dir + "/shader.spv");
 }

@@ -118,8 +118,8 @@ std::string PowerBody(const FitForm& f, Dialect d) {
   for (size_t ch = 0; ch < f.channels.size(); ++ch) {
     const size_t base = ch * n;
     o << "  " << (d == Dialect::Cpp ? "out[" : "o[") << ch << "] = ";
-    for (int k = 0; k < n - 1; ++k) o << "c[" << base + k << "] + t * (";
-    o << "c[" << base + n - 1 << "]" << std::string(n - 1, ')') << ";\n";
+    for (int k = 0; k < n - 1; ++k) o << "c[" << base + k << "] + t * " << (k < n - 2 ? "(" : "");
+    o << "c[" << base + n - 1 << "]" << std::string(n - 2, ')') << ";\n";
   }
   return o.str();
 }
