@@ -118,7 +118,8 @@ TEST_CASE(
     "The emitted Horner C++ gives kiln's bits for a domain not starting at 0, the sqrt and "
     "root4 warps and two channels",
     "[fit][horner]") {
-  // Forms built by hand (the writer and the evaluator, not the fitting): t = warp(v - lo).
+  // Forms built by hand (the writer and the evaluator, not the fitting): t = warp(v - lo), or v
+  // for a linear axis.
   FitResult fit;
   fit.form.table = "charlie-albedo-avg";
   fit.form.channels = {"A", "B"};
@@ -139,13 +140,14 @@ TEST_CASE(
     fit.form.axes[0].lo = 0;
     CheckEmittedBits(fit, dir);
   }
-  // The count: the clamp, v - lo, the warp's sqrt, a multiply and an add per degree and channel.
+  // The count: the clamp, v - lo (a warped axis not starting at 0), the warp's sqrt, a
+  // multiply and an add per degree and channel. A linear axis's t is v: its shift is folded in.
   fit.form.axes[0].lo = 0.045;
   fit.form.axes[0].warp = FitWarp::Root4;
   CHECK(fit.form.OperationCount() == 2 + 1 + 2 + 2 * 2 * 4);
-  fit.form.axes[0].lo = 0;
   fit.form.axes[0].warp = FitWarp::Linear;
   CHECK(fit.form.OperationCount() == 2 + 2 * 2 * 4);
+  CHECK(FitCppHeader(fit, "test").find("float t = v;") != std::string::npos);
 }
 
 TEST_CASE("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops",

@@ -61,7 +61,7 @@ double WarpDouble(FitWarp warp, double u, double r) {
 
 /// The Power form's t of the clamped value v, in float (the emitted code's steps).
 float PowerVariableFloat(const FitAxis& axis, float v) {
-  float t = axis.lo == 0 ? v : v - static_cast<float>(axis.lo);
+  float t = PowerSubtractsLo(axis) ? v - static_cast<float>(axis.lo) : v;
   if (axis.warp == FitWarp::Sqrt) t = std::sqrt(t);
   if (axis.warp == FitWarp::Root4) t = std::sqrt(std::sqrt(t));
   return t;
@@ -121,7 +121,7 @@ FitBasis FitBasisFromName(const std::string& name) {
 }
 
 double PowerVariable(const FitAxis& axis, double v) {
-  const double t = v - axis.lo;
+  const double t = PowerSubtractsLo(axis) ? v - axis.lo : v;
   return WarpDouble(axis.warp, t, 0);
 }
 
@@ -145,7 +145,7 @@ int FitForm::OperationCount() const {
   int ops = SqrtCount();
   if (basis == FitBasis::Power) {
     const int nc = static_cast<int>(channels.size());
-    return ops + 2 + (axes[0].lo == 0 ? 0 : 1) + nc * 2 * axes[0].degree;
+    return ops + 2 + (PowerSubtractsLo(axes[0]) ? 1 : 0) + nc * 2 * axes[0].degree;
   }
   for (const FitAxis& a : axes) {
     ops += 2 + 2 + 2;                            // clamp, normalise, s = 2 w - 1

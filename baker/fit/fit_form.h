@@ -32,8 +32,9 @@ FitWarp FitWarpFromName(const std::string& name);
 
 /// The polynomial basis of a fit. Chebyshev: the tensor product above. Power (one axis only):
 /// c_0 + t (c_1 + t (c_2 + ... + t c_n)) by Horner's rule in t = warp(v - lo), v the clamped
-/// axis value and the warp's power of the plain difference (linear t = v - lo, sqrt, root4): the
-/// normalisation 1 / (hi - lo) is folded into the coefficients, and v - lo is skipped for lo = 0.
+/// axis value and the warp's power of the plain difference (sqrt, root4): the normalisation
+/// 1 / (hi - lo) is folded into the coefficients. A linear axis has t = v (the shift folded in
+/// too), and v - lo is skipped for lo = 0 (PowerSubtractsLo).
 enum class FitBasis { Chebyshev, Power };
 
 /// "chebyshev", "horner".
@@ -75,6 +76,11 @@ void EvaluateFit(const FitForm& form, const float* x, float* out);
 
 /// The Chebyshev values T_0..T_degree at s in [-1, 1], in double (the least-squares design).
 void ChebyshevRow(int degree, double s, double* t);
+
+/// Whether a Power form's t subtracts lo from v: a sqrt or root4 warp of an axis with lo != 0.
+inline bool PowerSubtractsLo(const FitAxis& axis) {
+  return axis.lo != 0 && axis.warp != FitWarp::Linear;
+}
 
 /// The Power form's variable t = warp(v - lo) of the clamped value v of a one-axis fit, in
 /// double (the least-squares design; the float evaluation takes the same steps).

@@ -29,7 +29,7 @@ std::string G3(double v) {
 
 /// The Power form's variable t of the clamped value v, in the dialect's syntax (`sq` its sqrt).
 std::string PowerVariableText(const FitAxis& a, const std::string& lo, const std::string& sq) {
-  const std::string d = a.lo == 0 ? "v" : "(v - " + lo + ")";
+  const std::string d = PowerSubtractsLo(a) ? "(v - " + lo + ")" : "v";
   const std::string arg = d[0] == '(' ? d : "(" + d + ")";
   if (a.warp == FitWarp::Sqrt) return sq + arg;
   if (a.warp == FitWarp::Root4) return sq + "(" + sq + arg + ")";
