@@ -1,11 +1,13 @@
 // Specification: `kiln fit` (baker/fit/): a closed form of a table's exact integrals whose
 // stated max error holds for the emitted C++ (compiled here with the system compiler), whose
 // shaders compile, which is the same for any thread count, and which `kiln verify` re-measures.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -15,6 +17,7 @@
 #include "baker/fit/least_squares.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
+#include "fit_emitted.h"
 #include "test_util.h"
 
 namespace {
@@ -29,25 +32,6 @@ const FitResult& GgxDfgFit() {
     return FitTable(CatalogueTable("ggx-dfg"), opt);
   }();
   return fit;
-}
-
-/// Compiles `header` with a main that reads "x0 x1" lines on stdin and prints the channels in
-/// %a; returns the program's path.
-std::string CompileHeaderProgram(const std::string& header, const std::string& function,
-                                 const std::string& dir) {
-  std::ofstream(dir + "/fit.h") << header;
-  std::ofstream(dir + "/main.cpp") << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
-                                      "  float x[2], out[4] = {0, 0, 0, 0};\n"
-                                      "  while (std::scanf(\"%a %a\", &x[0], &x[1]) == 2) {\n    "
-                                   << function
-                                   << "(x, out);\n    std::printf(\"%a %a\\n\", out[0], out[1]);\n"
-                                      "  }\n}\n";
-  std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
-                    "/main.cpp > " + dir + "/cc.log 2>&1";
-  const int status = std::system(cmd.c_str());
-  INFO(test::ReadFile(dir + "/cc.log"));
-  REQUIRE(status == 0);
-  return dir + "/prog";
 }
 
 /// glslangValidator on `text` in a file ending in `ext` with `flags`: its exit code.
@@ -92,30 +76,21 @@ TEST_CASE(
   CHECK(header.find("inline void kiln_fit_ggx_dfg(const float* x, float* out)") !=
         std::string::npos);
   CHECK(header.find("// max error E = ") != std::string::npos);
-  const std::string prog = CompileHeaderProgram(header, "kiln_fit_ggx_dfg", dir);
   // Random points, a third of them in the grazing, low-roughness corner.
   test::Rng rng(33);
   std::vector<std::array<float, 2>> points;
+  std::vector<float> flat;
   for (int i = 0; i < 300; ++i) {
     double u = rng.Uniform(), v = rng.Uniform();
     if (i % 3 == 0) u = std::pow(u, 8), v = std::pow(v, 4);
     points.push_back({static_cast<float>(u), static_cast<float>(v)});
+    flat.insert(flat.end(), {points.back()[0], points.back()[1]});
   }
-  {
-    std::ofstream in(dir + "/points.txt");
-    for (auto& p : points) {
-      char b[80];
-      std::snprintf(b, sizeof b, "%a %a\n", p[0], p[1]);
-      in << b;
-    }
-  }
-  REQUIRE(std::system((prog + " < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
-  std::istringstream out(test::ReadFile(dir + "/out.txt"));
+  const std::vector<float> out = test::RunEmittedFit(header, "kiln_fit_ggx_dfg", 2, flat, dir);
   const double stated = StatedBound(fit.error.maxOffJump);
-  for (auto& p : points) {
-    std::string a, b;
-    REQUIRE(static_cast<bool>(out >> a >> b));
-    const float emitted[2] = {std::strtof(a.c_str(), nullptr), std::strtof(b.c_str(), nullptr)};
+  for (size_t i = 0; i < points.size(); ++i) {
+    const std::array<float, 2>& p = points[i];
+    const float emitted[2] = {out[4 * i], out[4 * i + 1]};
     float own[2];
     EvaluateFit(fit.form, p.data(), own);
     INFO("mu " << p[0] << " roughness " << p[1]);
@@ -262,25 +237,17 @@ TEST_CASE(
   const std::string dir = test::TempDir("fit_fresnel");
   const std::string header = FitCppHeader(fit, "test");
   CHECK(header.find("layer-eta") != std::string::npos);
-  const std::string prog = CompileHeaderProgram(header, "kiln_fit_fresnel_dielectric", dir);
   // Points near eta = 1 and at grazing, the float just above 1 among them.
   const float points[][2] = {{1e-4f, 1.00000012f}, {3e-4f, 1.0001f}, {0.01f, 1.01f},
                              {0.5f, 1.5f},         {0.05f, 1.2f},    {1.0f, 3.0f}};
-  {
-    std::ofstream in(dir + "/points.txt");
-    for (auto& p : points) {
-      char b[80];
-      std::snprintf(b, sizeof b, "%a %a\n", p[0], p[1]);
-      in << b;
-    }
-  }
-  REQUIRE(std::system((prog + " < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
-  std::istringstream out(test::ReadFile(dir + "/out.txt"));
+  std::vector<float> flat;
+  for (auto& p : points) flat.insert(flat.end(), {p[0], p[1]});
+  const std::vector<float> out =
+      test::RunEmittedFit(header, "kiln_fit_fresnel_dielectric", 2, flat, dir);
   const double stated = StatedBound(fit.error.maxOffJump);
-  for (auto& p : points) {
-    std::string a, b;
-    REQUIRE(static_cast<bool>(out >> a >> b));
-    const float emitted = std::strtof(a.c_str(), nullptr);
+  for (size_t i = 0; i < std::size(points); ++i) {
+    const float* p = points[i];
+    const float emitted = out[4 * i];
     float own[1];
     EvaluateFit(fit.form, p, own);
     INFO("mu " << p[0] << " eta " << p[1]);

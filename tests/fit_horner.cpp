@@ -13,6 +13,7 @@
 #include "baker/fit/fit_writer.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
+#include "fit_emitted.h"
 #include "test_util.h"
 
 namespace {
@@ -37,45 +38,6 @@ const FitResult& HornerFit() {
   return fit;
 }
 
-/// Compiles `header` (function `function`, one axis, up to 4 channels) with -Werror into a
-/// program that reads one %a value a line and prints the channels in %a; runs it on `xs` and
-/// returns its outputs, channels per point.
-std::vector<float> RunEmitted(const std::string& header, const std::string& function,
-                              const std::vector<float>& xs, size_t channels,
-                              const std::string& dir) {
-  std::ofstream(dir + "/fit.h") << header;
-  std::ofstream(dir + "/main.cpp") << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
-                                      "  float x[1], out[4] = {0, 0, 0, 0};\n"
-                                      "  while (std::scanf(\"%a\", &x[0]) == 1) {\n    "
-                                   << function
-                                   << "(x, out);\n"
-                                      "    std::printf(\"%a %a %a %a\\n\", out[0], out[1], out[2], "
-                                      "out[3]);\n  }\n}\n";
-  const std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
-                          "/main.cpp > " + dir + "/cc.log 2>&1";
-  const int status = std::system(cmd.c_str());
-  INFO(test::ReadFile(dir + "/cc.log"));
-  REQUIRE(status == 0);
-  {
-    std::ofstream in(dir + "/points.txt");
-    for (float x : xs) {
-      char b[40];
-      std::snprintf(b, sizeof b, "%a\n", x);
-      in << b;
-    }
-  }
-  REQUIRE(std::system((dir + "/prog < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
-  std::istringstream out(test::ReadFile(dir + "/out.txt"));
-  std::vector<float> values;
-  for (size_t i = 0; i < xs.size(); ++i)
-    for (size_t c = 0; c < 4; ++c) {
-      std::string v;
-      REQUIRE(static_cast<bool>(out >> v));
-      if (c < channels) values.push_back(std::strtof(v.c_str(), nullptr));
-    }
-  return values;
-}
-
 /// Points across [lo, hi] and beyond it (the clamp), the ends included.
 std::vector<float> AxisPoints(double lo, double hi) {
   std::vector<float> xs = {static_cast<float>(lo), static_cast<float>(hi),
@@ -90,14 +52,14 @@ void CheckEmittedBits(const FitResult& fit, const std::string& dir) {
   const FitForm& f = fit.form;
   const std::vector<float> xs = AxisPoints(f.axes[0].lo, f.axes[0].hi);
   const std::vector<float> emitted =
-      RunEmitted(FitCppHeader(fit, "test"), FitFunctionName(f.table), xs, f.channels.size(), dir);
+      test::RunEmittedFit(FitCppHeader(fit, "test"), FitFunctionName(f.table), 1, xs, dir);
   for (size_t i = 0; i < xs.size(); ++i) {
     float own[4];
     EvaluateFit(f, &xs[i], own);
     for (size_t c = 0; c < f.channels.size(); ++c) {
       INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " at " << xs[i] << " channel "
                    << c);
-      CHECK(emitted[i * f.channels.size() + c] == own[c]);
+      CHECK(emitted[4 * i + c] == own[c]);
     }
   }
 }

@@ -1,0 +1,55 @@
+// Runs the C++ header `kiln fit` emits: compiled with the system compiler (-Werror) into a program
+// that reads points on stdin and prints the channels, so a test compares the emitted code's floats
+// with kiln's own evaluation and the exact integrals.
+#pragma once
+#include <catch2/catch.hpp>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "test_util.h"
+
+namespace kiln::test {
+
+/// Compiles `header`, whose function `function` takes `dims` axis values (at most 4), into `dir`
+/// with -std=c++17 -O2 -Wall -Wextra -Werror, runs it on `points` (dims floats per point, in
+/// order) and returns the 4 output slots per point (the channels first, zeros after them).
+inline std::vector<float> RunEmittedFit(const std::string& header, const std::string& function,
+                                        int dims, const std::vector<float>& points,
+                                        const std::string& dir) {
+  std::ofstream(dir + "/fit.h") << header;
+  std::ofstream(dir + "/main.cpp")
+      << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
+         "  float x[4] = {0, 0, 0, 0}, out[4] = {0, 0, 0, 0};\n"
+         "  for (;;) {\n    for (int i = 0; i < "
+      << dims << "; ++i)\n      if (std::scanf(\"%a\", &x[i]) != 1) return 0;\n    " << function
+      << "(x, out);\n    std::printf(\"%a %a %a %a\\n\", out[0], out[1], out[2], out[3]);\n"
+         "  }\n}\n";
+  const std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
+                          "/main.cpp > " + dir + "/cc.log 2>&1";
+  const int status = std::system(cmd.c_str());
+  INFO(ReadFile(dir + "/cc.log"));
+  REQUIRE(status == 0);
+  {
+    std::ofstream in(dir + "/points.txt");
+    for (float x : points) {
+      char b[40];
+      std::snprintf(b, sizeof b, "%a\n", x);
+      in << b;
+    }
+  }
+  REQUIRE(std::system((dir + "/prog < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
+  std::istringstream out(ReadFile(dir + "/out.txt"));
+  std::vector<float> values;
+  for (size_t i = 0; i < 4 * (points.size() / dims); ++i) {
+    std::string v;
+    REQUIRE(static_cast<bool>(out >> v));
+    values.push_back(std::strtof(v.c_str(), nullptr));
+  }
+  return values;
+}
+
+}  // namespace kiln::test
