@@ -154,6 +154,11 @@ class LookupSearch {
 
  private:
   Sample Evaluate(size_t cell, const std::array<double, 3>& u) const;
+  /// The point (axis units) at cell-local u of `cell`, as PointAtWarped places it.
+  void PointIn(size_t cell, const std::array<double, 3>& u, double* x) const;
+  /// Lets the kind integrate these (cell, probe) points together before they are evaluated
+  /// (QuantityInfo::prepareSearch): only sooner, never other values.
+  void Prepare(const std::vector<std::pair<size_t, size_t>>& what);
   bool Spent(double share) const;
   void EvaluateAll(std::vector<Sample>& out, size_t base,
                    const std::vector<std::pair<size_t, size_t>>& what);
@@ -233,16 +238,31 @@ void LookupSearch::OrderCells() {
     order_.resize(static_cast<size_t>(opt_.maxCells));
 }
 
-Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const {
+void LookupSearch::PointIn(size_t cell, const std::array<double, 3>& u, double* x) const {
   int c[3] = {static_cast<int>(cell % nc_[0]), static_cast<int>(cell / nc_[0] % nc_[1]),
               static_cast<int>(cell / nc_[0] / nc_[1])};
-  double t[3] = {0, 0, 0}, x[3];
+  double t[3] = {0, 0, 0};
   for (int i = 0; i < D_; ++i) {
     int a = active_[i];
     double ua = std::min(1.0, std::max(0.0, u[i]));
     t[a] = std::min(1.0, (c[a] + ua) / static_cast<double>(n_[a] - 1));
   }
   PointAtWarped(spec_, t, x);
+}
+
+void LookupSearch::Prepare(const std::vector<std::pair<size_t, size_t>>& what) {
+  const QuantityInfo& q = Describe(spec_.quantity);
+  const bool fixedRule = opt_.refTol <= 0 && (opt_.bakeRule || !q.searchRule);
+  if (!q.prepareSearch || !fixedRule || !UsesFixedRule(spec_) || what.empty()) return;
+  std::vector<double> points(3 * what.size(), 0.0);
+  for (size_t i = 0; i < what.size(); ++i)
+    PointIn(what[i].first, probes_[what[i].second], &points[3 * i]);
+  arena_.execute([&] { q.prepareSearch(spec_, points.data(), what.size()); });
+}
+
+Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const {
+  double x[3] = {0, 0, 0};
+  PointIn(cell, u, x);
   IntegrationStats st;
   std::vector<double> exact = opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st)
                               : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
@@ -282,6 +302,10 @@ void LookupSearch::Probe() {
     if (chunk <= 0) break;
     size_t base = probeSamples_.size();
     probeSamples_.resize(base + static_cast<size_t>(chunk));
+    std::vector<std::pair<size_t, size_t>> what;
+    for (size_t i = base; i < probeSamples_.size(); ++i)
+      what.push_back({order_[i / P_], static_cast<size_t>(i % P_)});
+    Prepare(what);
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(base, probeSamples_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
@@ -300,6 +324,7 @@ void LookupSearch::Probe() {
 void LookupSearch::EvaluateAll(std::vector<Sample>& out, size_t base,
                                const std::vector<std::pair<size_t, size_t>>& what) {
   out.resize(base + what.size());
+  Prepare(what);
   arena_.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, what.size(), 1),
                       [&](const tbb::blocked_range<size_t>& r) {

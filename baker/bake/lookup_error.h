@@ -79,7 +79,9 @@ std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel = 0
 /// cell's warped coordinates, clamped to the cell, to a local maximum. A table of at most 1,024
 /// cells whose automatic budget probed only some of them (a costly reference) also gets every
 /// other cell's centre, outside the budget, and the worst of those (as many as were probed, at
-/// least 8) probed in full before the climbs. Every point is placed by PointAtWarped.
+/// least 8) probed in full before the climbs. Every point is placed by PointAtWarped. Before
+/// each batch of points (a chunk of probes, the centre sweep) the kind may integrate the batch
+/// together (QuantityInfo::prepareSearch: the same values, sooner).
 /// Deterministic: the same report for any thread count (oneTBB).
 LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
                                      const LookupSearchOptions& opt);

@@ -28,6 +28,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -113,7 +117,53 @@ inline double PanelPoint(const Panel& p, double t, double* dmu) {
   return p.kink > 0 ? p.c + s * s : p.c - s * s;
 }
 
+/// The points PrepareDielectricAverageColumn integrated ahead: {E_avg_R, E_avg_T} at
+/// kDielectricAverageNodes and the evaluations one point takes, by the bits of (alpha, eta).
+class AveragePointMemo {
+ public:
+  struct Value {
+    std::array<double, 2> e{0, 0};
+    long long evals = 0;
+  };
+  bool Find(double alpha, double eta, Value& out) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = map_.find(KeyOf(alpha, eta));
+    if (it == map_.end()) return false;
+    out = it->second;
+    return true;
+  }
+  /// Keeps v unless the memo holds kMaxPoints already.
+  void Keep(double alpha, double eta, const Value& v) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (map_.size() < kMaxPoints) map_.emplace(KeyOf(alpha, eta), v);
+  }
+
+ private:
+  static constexpr size_t kMaxPoints = 1 << 16;
+  using Key = std::pair<std::uint64_t, std::uint64_t>;
+  static Key KeyOf(double a, double b) {
+    Key k;
+    std::memcpy(&k.first, &a, sizeof a);
+    std::memcpy(&k.second, &b, sizeof b);
+    return k;
+  }
+  std::mutex mutex_;
+  std::map<Key, Value> map_;
+};
+
+AveragePointMemo& PointMemo() {
+  static AveragePointMemo memo;
+  return memo;
+}
+
 }  // namespace
+
+void PrepareDielectricAverageColumn(double alpha, const double* etas, int n) {
+  std::array<double, 2> out[kMaxDielectricColumn];
+  long long evals = 0;
+  FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, kDielectricAverageNodes, out, &evals);
+  for (int e = 0; e < n; ++e) PointMemo().Keep(alpha, etas[e], {out[e], evals});
+}
 
 std::array<double, 2> SmoothDielectricAlbedoAverage(double eta) {
   if (eta < 1) {
@@ -130,6 +180,11 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
   // evaluations): the lookup-error searches of r-avg and t-avg, whose every point needs both
   // channels, integrate each point they share once.
   if (eta >= kDielectricTableEtaMin) {
+    AveragePointMemo::Value v;
+    if (PointMemo().Find(alpha, eta, v)) {
+      if (evals) *evals += v.evals;
+      return v.e;
+    }
     std::array<double, 2> e;
     FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, &e, evals);
     return e;
@@ -174,8 +229,12 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 }
 
 double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals) {
+  return FixedRuleDielectricExitAverageR(alpha, eta, nodes, TunedDielectricRuleOptions(), evals);
+}
+
+double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
+                                       const DielectricRuleOptions& opt, long long* evals) {
   const GaussRule01& g = CachedGaussLegendre01(nodes);
-  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
   double sum = 0;
   for (const Panel& p : Panels(alpha, eta))
     for (size_t k = 0; k < g.x.size(); ++k) {
@@ -186,8 +245,22 @@ double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long
   return sum;
 }
 
+DielectricRuleOptions SearchDielectricRuleOptions() {
+  DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  // The tuned {24, 12, 4, 2} outer and {12, 10, 6, 6} inner nodes per weight class.
+  const int outer[4] = {12, 8, 4, 2}, inner[4] = {10, 10, 6, 6};
+  std::copy(outer, outer + 4, opt.outerNodes);
+  std::copy(inner, inner + 4, opt.innerNodes);
+  return opt;
+}
+
 double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals) {
   const double etaIn = 1 / eta;
+  AveragePointMemo::Value v;
+  if (nodes == kDielectricAverageNodes && PointMemo().Find(alpha, etaIn, v)) {
+    if (evals) *evals += v.evals;
+    return eta * eta * v.e[1];
+  }
   std::array<double, 2> e;
   FixedRuleDielectricAlbedoAverageColumn(alpha, &etaIn, 1, nodes, &e, evals);
   return eta * eta * e[1];

@@ -14,6 +14,7 @@
 #pragma once
 #include <array>
 
+#include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/hemisphere.h"
 
 namespace kiln {
@@ -39,6 +40,15 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
                                             std::array<double, 2>* out, long long* evals);
 
+/// Integrates {E_avg_R, E_avg_T} at (alpha, etas[e]) for n entering etas (1 <= n <=
+/// kMaxDielectricColumn, every eta >= kDielectricTableEtaMin) as one column and keeps each point
+/// in a memo that FixedRuleDielectricAlbedoAverage(alpha, eta, evals) and, at eta = 1 / etas[e],
+/// FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, evals) read first: the
+/// same bits and evaluations as the point alone (a column gives each eta a column of one's bits),
+/// one walk for the n points (the lookup-error searches' points of one roughness,
+/// QuantityInfo::prepareSearch). Thread-safe.
+void PrepareDielectricAverageColumn(double alpha, const double* etas, int n);
+
 /// The exit side (1 / eta >= kDielectricTableEtaMin): E_avg_R by the mu rule of E_R alone
 /// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures), and E_avg_T by
 /// reciprocity from the entering side, E_avg_T(eta) = eta^2 E_avg_T(1 / eta) (the importance
@@ -46,6 +56,11 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 /// entering column's rule at 1 / eta. FixedRuleDielectricAlbedoAverage gives both there.
 double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals);
 double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals);
+/// The exit side's E_avg_R with E_R by the node counts `opt` (FixedRuleDielectricReflectance):
+/// the lookup-error search's cheaper form (kSearchDielectricRuleOptions, nodes
+/// kSearchDielectricAverageNodes).
+double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
+                                       const DielectricRuleOptions& opt, long long* evals);
 
 /// The same averages by adaptive quadrature over mu (Gauss-Kronrod on the same panels) of the
 /// adaptive E (DielectricAlbedo to tol / 10): the reference, to about tol (absolute).
@@ -58,6 +73,18 @@ std::array<double, 2> SmoothDielectricAlbedoAverage(double eta);
 
 /// Gauss nodes per mu panel of the bake's rule.
 constexpr int kDielectricAverageNodes = 10;
+
+/// The lookup-error search's form of the exit side's E_avg_R (QuantityInfo::searchRule; each
+/// point of the search is a whole mu rule of E_R walks): kSearchDielectricAverageNodes per mu
+/// panel over E_R by SearchDielectricRuleOptions(), about 0.37 of the bake rule's evaluations,
+/// within kSearchRuleBound (fixed_rule_microfacet.h) of the bake's rule
+/// (tests/integrate_dielectric_search_columns.cpp holds it there over a held-out grid).
+constexpr int kSearchDielectricAverageNodes = 7;
+/// The E_R node counts of that form: the bulk's outer and inner panels take fewer nodes.
+DielectricRuleOptions SearchDielectricRuleOptions();
+/// Its evaluations are charged this many times each (the bake rule's evaluations over its own,
+/// measured 2.7: the search's budget buys the points it bought with the bake's rule).
+constexpr double kSearchDielectricAverageCharge = 2.7;
 
 /// The error the fixed rule adds to that of the E it averages (tests hold it to adaptive).
 constexpr double kDielectricAverageBound = 2e-7;

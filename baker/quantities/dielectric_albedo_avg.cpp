@@ -4,10 +4,17 @@
 // Turquin-style multiple-scattering compensation of glass reads next to the 3D E tables (Cycles
 // bakes them beside its 3D ones). Entering: eta in [1.1, 3]; exit: eta' = 1/eta in [1/3, 1/1.1].
 // One family, four kinds (which channel, which side), as quantities/dielectric_albedo.cpp.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
 #include <iterator>
+#include <map>
 
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
+#include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/math/quadrature.h"
 #include "baker/quantities/common.h"
 #include "baker/quantities/dielectric_columns.h"
@@ -97,6 +104,22 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   return {e[transmit ? 1 : 0]};
 }
 
+/// The lookup-error search's form of the exit side's E_avg_R (QuantityInfo::searchRule): the mu
+/// rule at kSearchDielectricAverageNodes over E_R by SearchDielectricRuleOptions(), within
+/// kSearchRuleBound of FixedRule, its evaluations charged at the bake rule's rate.
+std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
+  CheckModel(spec);
+  const auto [r, eta] = PointOf(spec, x);
+  if (!(1 / eta >= kDielectricTableEtaMin && eta < 1)) return FixedRule(spec, x, stats);
+  const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+  long long evals = 0;
+  const double e = FixedRuleDielectricExitAverageR(alpha, eta, kSearchDielectricAverageNodes,
+                                                   SearchDielectricRuleOptions(), &evals);
+  stats.evals += std::llround(static_cast<double>(evals) * kSearchDielectricAverageCharge);
+  stats.errorEstimate = kSearchRuleBound;
+  return {e};
+}
+
 /// The entering side's texels by columns of eta (quantities/dielectric_columns.h): the mu
 /// panels and E's walks are shared by the whole eta axis; each texel the bits FixedRule gives.
 void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<long long>& evals,
@@ -125,6 +148,40 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   };
   how.bound = kDielectricRuleBound + kDielectricAverageBound;
   BakeDielectricColumns(spec, threads, how, table, evals, errors);
+}
+
+/// QuantityInfo::prepareSearch of the kinds the entering columns give (r-avg, t-avg, and
+/// t-exit-avg at 1 / eta'): the search's points of one roughness integrated as columns of
+/// entering etas, the columns in parallel, into the memo the fixed rule reads first
+/// (PrepareDielectricAverageColumn: the same bits and evaluations as one point at a time). A
+/// roughness with one point is left to the fixed rule.
+void PrepareSearch(const TableSpec& spec, const double* points, size_t n) {
+  if (!UsesRule(spec)) return;
+  const bool exitT = KindOf(spec.quantity).exit;
+  std::map<double, std::vector<double>> byAlpha;
+  for (size_t i = 0; i < n; ++i) {
+    const auto [r, e] = PointOf(spec, points + 3 * i);
+    const double etaIn = exitT && e < 1 ? 1 / e : e;
+    if (r == 0 || !(etaIn >= kDielectricTableEtaMin)) continue;
+    byAlpha[std::max(AlphaFromPerceptual(r), MinAlpha)].push_back(etaIn);
+  }
+  std::vector<std::pair<double, std::vector<double>>> columns;
+  for (auto& [alpha, etas] : byAlpha) {
+    std::sort(etas.begin(), etas.end());
+    etas.erase(std::unique(etas.begin(), etas.end()), etas.end());
+    if (etas.size() < 2) continue;
+    for (size_t b = 0; b < etas.size(); b += kMaxDielectricColumn)
+      columns.push_back(
+          {alpha, std::vector<double>(etas.begin() + static_cast<long>(b),
+                                      etas.begin() + static_cast<long>(std::min(
+                                                         etas.size(), b + kMaxDielectricColumn)))});
+  }
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, columns.size(), 1),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t c = range.begin(); c != range.end(); ++c)
+                        PrepareDielectricAverageColumn(columns[c].first, columns[c].second.data(),
+                                                       static_cast<int>(columns[c].second.size()));
+                    });
 }
 
 std::string FixedRuleMethod(const TableSpec&) {
@@ -211,7 +268,12 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   // entering: E by the eta columns' rule (integrate/dielectric_albedo.cpp).
   // 6, exit: E_avg_R by E_R's own panels, E_avg_T by reciprocity from the entering side.
   q.fixedRuleVersion = KindOf(Q).exit ? "6" : "5";
-  if (!KindOf(Q).exit || KindOf(Q).transmit) q.bakeTable = BakeTable;
+  if (!KindOf(Q).exit || KindOf(Q).transmit) {
+    q.bakeTable = BakeTable;
+    q.prepareSearch = PrepareSearch;
+  } else {
+    q.searchRule = SearchRule;  // the exit side's E_avg_R: one mu rule of E_R walks a point
+  }
   q.evaluate = Evaluate;
   q.verifyReference = VerifyReference;
   q.smoothLimit = SmoothLimit;

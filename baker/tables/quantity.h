@@ -126,6 +126,12 @@ struct QuantityInfo {
   /// charged at the bake rule's rate (kSearch*Charge: the search's budget buys the same points).
   std::vector<double> (*searchRule)(const TableSpec& spec, const double* x,
                                     IntegrationStats& stats) = nullptr;
+  /// Before the lookup-error search evaluates a batch of points (`n` points of 3 coordinates,
+  /// axis order), lets the kind integrate them together (a column of etas shared by the points of
+  /// one roughness) into a memo its fixed rule reads: the same bits and evaluation counts as one
+  /// point at a time, only sooner. Called only when the search evaluates the fixed rule. Null:
+  /// none.
+  void (*prepareSearch)(const TableSpec& spec, const double* points, size_t n) = nullptr;
   // --- Tables derived from another table's nodes (issue #13) ------------------------------
   /// A kind whose node values follow from another table's at the same nodes (a microfacet
   /// albedo is A + B of its dfg table): fills `source` with that table's spec and returns true
