@@ -15,12 +15,18 @@ void ThrowBadCustomValue(const CustomLobe& lobe, double f, Vec3 wo, Vec3 wi, dou
   throw CustomModelError(buf);
 }
 
-double CustomModelBase::Checked(Vec3 wo, Vec3 wi) const {
+double CustomModelBase::Checked(Vec3 wo, Vec3 wi, const Vec3* wh) const {
   if (CosTheta(wo) < 0 || CosTheta(wi) < 0) return 0;
-  if (CosTheta(wo) == 0) wo = Normalize(Vec3{wo.x, wo.y, kHorizonMu});
+  if (CosTheta(wo) == 0) wo = Normalize(Vec3{wo.x, wo.y, horizonMu});
   const double o[3] = {wo.x, wo.y, wo.z}, i[3] = {wi.x, wi.y, wi.z};
-  double f = lobe->paramCount > 0 ? lobe->evalParams(o, i, roughness, params.data())
-                                  : lobe->eval(o, i, roughness);
+  double f;
+  if (wh && lobe->evalHalf) {
+    const double h[3] = {wh->x, wh->y, wh->z};
+    f = lobe->evalHalf(o, h, i, roughness, params.data());
+  } else {
+    f = lobe->paramCount > 0 ? lobe->evalParams(o, i, roughness, params.data())
+                             : lobe->eval(o, i, roughness);
+  }
   if (!(f >= 0) || !std::isfinite(f)) ThrowBadCustomValue(*lobe, f, wo, wi, roughness);
   return f;
 }
@@ -37,7 +43,7 @@ int CustomSpecularModel::PhiKinks(double mu_o, double sinTheta_o, PolarParam h,
 }
 
 double CustomSpecularModel::HalfWeight(const HalfSample& s) const {
-  double f = Checked(s.wo, s.wi);
+  double f = Checked(s.wo, s.wi, &s.wm);
   if (f == 0) return 0;
   // tan^2 from the normal's components: 1 - c^2 cancels where alpha is tiny.
   double a2 = Sqr(importance.alpha), c = s.cosTheta_h;
