@@ -167,3 +167,20 @@ TEST_CASE(
   CHECK_THAT(plain.out, !Contains("user-ggx"));  // only when loaded
   CHECK(Kiln("list --models --tables").exitCode != 0);
 }
+
+TEST_CASE(
+    "kiln bench --custom-lobe times a lobe's albedo against a built-in model's in interleaved "
+    "rounds and prints the medians and their ratio",
+    "[custom][cli][bench]") {
+  UseTestCache();
+  const std::string lobe = "--custom-lobe " + Q(Example("user_ggx.cpp"));
+  CommandResult r = Kiln("bench " + lobe + " --size 4 --rounds 2 -j 1");
+  INFO(r.out << r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.out, Contains("user-ggx-albedo against ggx-albedo, 4 x 4 nodes, adaptive"));
+  CHECK_THAT(r.out, Contains("round 1: user-ggx-albedo ") && Contains("round 2: user-ggx-albedo "));
+  CHECK_THAT(r.out, Contains("median: user-ggx-albedo ") && Contains("; ratio "));
+  CHECK_THAT(r.out, Contains("max node difference"));
+  CHECK(Kiln("bench " + lobe + " --quick").exitCode != 0);
+  CHECK(Kiln("bench " + lobe + " --against no-such-model --size 4").exitCode != 0);
+}
