@@ -182,5 +182,8 @@ TEST_CASE(
   CHECK_THAT(r.out, Contains("median: user-ggx-albedo ") && Contains("; ratio "));
   CHECK_THAT(r.out, Contains("max node difference"));
   CHECK(Kiln("bench " + lobe + " --quick").exitCode != 0);
+  CommandResult alone = Kiln("bench --rounds 2 --quick");
+  CHECK(alone.exitCode != 0);
+  CHECK_THAT(alone.err, Contains("--rounds needs --custom-lobe"));
   CHECK(Kiln("bench " + lobe + " --against no-such-model --size 4").exitCode != 0);
 }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "baker/bench/bench.h"
 #include "baker/bench/catalogue_report.h"
@@ -58,14 +59,19 @@ void RegisterBench(CLI::App& app) {
       "instead: time the 128 x 128 albedo of a user's lobe (FILE.cpp or FILE.so) against "
       "--against's, both by adaptive quadrature to the same tolerance, in interleaved rounds: "
       "medians and their ratio (docs/benchmarks.md)");
-  sub->add_option("--against", args->lobe.against, "with --custom-lobe: the built-in model")
-      ->capture_default_str();
-  sub->add_option("--rounds", args->lobe.rounds, "with --custom-lobe: timed rounds")
-      ->capture_default_str();
-  sub->add_option("--size", args->lobe.size, "with --custom-lobe: nodes per axis")
-      ->capture_default_str();
-  sub->callback([args, oOnly, oOut, oLobe] {
+  // The options only --custom-lobe takes.
+  const std::vector<CLI::Option*> lobeOnly = {
+      sub->add_option("--against", args->lobe.against, "with --custom-lobe: the built-in model")
+          ->capture_default_str(),
+      sub->add_option("--rounds", args->lobe.rounds, "with --custom-lobe: timed rounds")
+          ->capture_default_str(),
+      sub->add_option("--size", args->lobe.size, "with --custom-lobe: nodes per axis")
+          ->capture_default_str()};
+  sub->callback([args, oOnly, oOut, oLobe, lobeOnly] {
     CheckThreads("bench", args->threads);
+    for (CLI::Option* o : lobeOnly)
+      if (o->count() && !oLobe->count())
+        throw std::invalid_argument("bench: " + o->get_name() + " needs --custom-lobe");
     if (oLobe->count()) {
       if (args->quick || args->catalogue)
         throw std::invalid_argument("bench: --custom-lobe takes neither --quick nor --catalogue");
