@@ -75,7 +75,8 @@ struct CustomDiffuseModel : CustomModelBase {
 
 /// A custom lobe integrated over half vectors walked by a GGX lobe of the lobe's importance
 /// alpha (integrate/hemisphere.h); `fresnel` multiplies f (F = 1 unless set, as for the
-/// built-in microfacet models: the dfg tables split F out of a lobe that holds none).
+/// built-in microfacet models: the dfg tables split F out of a lobe that holds none). The walk's
+/// half vector reaches the lobe through kiln_model_eval_half when it defines that function.
 struct CustomSpecularModel : CustomModelBase {
   static constexpr IntegrationDomain kDomain = IntegrationDomain::HalfVector;
   GGXDistribution importance;
