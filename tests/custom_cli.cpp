@@ -1,14 +1,16 @@
 // Specification: the commands that take a model take a user's lobe too, by --model-source
 // FILE.cpp or --model-library FILE.so: eval and integrate print its values, bake --only
 // <id>-albedo writes a self-describing table (model id and hash in its header) that a second
-// bake finds up to date and `kiln verify` checks, plan reads a kiln scene naming the id. A lobe
-// that does not compile is one error with the compiler's lines; a lobe that crashes the process
-// mid-bake leaves every file that was there intact.
+// bake finds up to date and `kiln verify` checks, plan reads a kiln scene naming the id, list
+// shows the lobe and its tables (baked by adaptive quadrature). A lobe that does not compile is
+// one error with the compiler's lines; a lobe that crashes the process mid-bake leaves every
+// file that was there intact.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <nlohmann/json.hpp>
 
 #include "baker/custom/compiler.h"
 #include "cli_util.h"
@@ -122,4 +124,66 @@ TEST_CASE("a lobe that crashes mid-bake leaves every existing file intact", "[cu
   for (const auto& e : std::filesystem::directory_iterator(dir))
     if (e.path().extension() != ".tmp") after[e.path().filename()] = ReadFile(e.path());
   CHECK(after == before);
+}
+
+TEST_CASE(
+    "kiln list with --model-source lists the lobe among the models and its tables with their "
+    "method, adaptive quadrature",
+    "[custom][cli][list]") {
+  UseTestCache();
+  const std::string load = "--model-source " + Q(Example("user_ggx.cpp"));
+  for (const std::string& models : {"list " + load, "list --models " + load}) {
+    CommandResult r = Kiln(models);
+    INFO(models << "\n" << r.err);
+    REQUIRE(r.exitCode == 0);
+    CHECK_THAT(r.out, Contains("\nuser-ggx roughness=") && Contains("custom model from"));
+    CHECK_THAT(r.out, Contains("\nggx "));  // the built-in models are still there
+  }
+  CommandResult text = Kiln("list --tables " + load);
+  REQUIRE(text.exitCode == 0);
+  for (const char* name : {"user-ggx-albedo", "user-ggx-albedo-avg", "user-ggx-dfg"})
+    CHECK_THAT(text.out, Contains(std::string("\n") + name + "  [on request]  "));
+  CHECK_THAT(text.out, Contains("; method: half-vector space: adaptive Gauss-Kronrod"));
+  CHECK_THAT(text.out,
+             Contains("custom model 'user-ggx', hash " + FileHash(Example("user_ggx.cpp"))));
+  CommandResult json = Kiln("list --tables --json " + load);
+  REQUIRE(json.exitCode == 0);
+  std::map<std::string, nlohmann::json> byName;
+  for (const auto& t : nlohmann::json::parse(json.out)) byName[t.at("name")] = t;
+  REQUIRE(byName.count("user-ggx-dfg") == 1);
+  const nlohmann::json& albedo = byName.at("user-ggx-albedo");
+  CHECK(albedo.at("model") == "user-ggx");
+  CHECK(albedo.at("custom_model").get<bool>());
+  CHECK_FALSE(albedo.at("default_catalogue").get<bool>());
+  CHECK_THAT(albedo.at("method").get<std::string>(), Contains("adaptive"));
+  // The average quotes its E table's method: the lobe's id and hash once.
+  const std::string avgMethod = byName.at("user-ggx-albedo-avg").at("method");
+  const size_t first = avgMethod.find("custom model 'user-ggx'");
+  REQUIRE(first != std::string::npos);
+  CHECK(avgMethod.find("custom model 'user-ggx'", first + 1) == std::string::npos);
+  CHECK_FALSE(byName.at("ggx-albedo").at("custom_model").get<bool>());
+  CHECK_THAT(byName.at("ggx-albedo").at("method").get<std::string>(), Contains("fixed"));
+  CommandResult plain = Kiln("list --tables");
+  CHECK_THAT(plain.out, !Contains("user-ggx"));  // only when loaded
+  CHECK(Kiln("list --models --tables").exitCode != 0);
+}
+
+TEST_CASE(
+    "kiln bench --custom-lobe times a lobe's albedo against a built-in model's in interleaved "
+    "rounds and prints the medians and their ratio",
+    "[custom][cli][bench]") {
+  UseTestCache();
+  const std::string lobe = "--custom-lobe " + Q(Example("user_ggx.cpp"));
+  CommandResult r = Kiln("bench " + lobe + " --size 4 --rounds 2 -j 1");
+  INFO(r.out << r.err);
+  REQUIRE(r.exitCode == 0);
+  CHECK_THAT(r.out, Contains("user-ggx-albedo against ggx-albedo, 4 x 4 nodes, adaptive"));
+  CHECK_THAT(r.out, Contains("round 1: user-ggx-albedo ") && Contains("round 2: user-ggx-albedo "));
+  CHECK_THAT(r.out, Contains("median: user-ggx-albedo ") && Contains("; ratio "));
+  CHECK_THAT(r.out, Contains("max node difference"));
+  CHECK(Kiln("bench " + lobe + " --quick").exitCode != 0);
+  CommandResult alone = Kiln("bench --rounds 2 --quick");
+  CHECK(alone.exitCode != 0);
+  CHECK_THAT(alone.err, Contains("--rounds needs --custom-lobe"));
+  CHECK(Kiln("bench " + lobe + " --against no-such-model --size 4").exitCode != 0);
 }

@@ -3,9 +3,11 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 #include "baker/bench/bench.h"
 #include "baker/bench/catalogue_report.h"
+#include "baker/bench/custom_lobe_bench.h"
 #include "baker/io/atomic_write.h"
 #include "baker/cli/bench_commands.h"
 #include "baker/cli/commands.h"
@@ -26,6 +28,7 @@ void RegisterBench(CLI::App& app) {
     int samples = 6;
     bool noReference = false;
     bool noLookupError = false;
+    CustomLobeBenchOptions lobe;
   };
   auto args = std::make_shared<Args>();
   sub->add_flag("--quick", args->quick, "small tables and sweeps: under a minute (CI smoke run)");
@@ -51,8 +54,31 @@ void RegisterBench(CLI::App& app) {
                 "slowest part: times only)");
   sub->add_flag("--no-lookup-error", args->noLookupError,
                 "with --catalogue: bake the texels only, without the lookup-error searches");
-  sub->callback([args, oOnly, oOut] {
+  auto* oLobe = sub->add_option(
+      "--custom-lobe", args->lobe.source,
+      "instead: time the 128 x 128 albedo of a user's lobe (FILE.cpp or FILE.so) against "
+      "--against's, both by adaptive quadrature to the same tolerance, in interleaved rounds: "
+      "medians and their ratio (docs/benchmarks.md)");
+  // The options only --custom-lobe takes.
+  const std::vector<CLI::Option*> lobeOnly = {
+      sub->add_option("--against", args->lobe.against, "with --custom-lobe: the built-in model")
+          ->capture_default_str(),
+      sub->add_option("--rounds", args->lobe.rounds, "with --custom-lobe: timed rounds")
+          ->capture_default_str(),
+      sub->add_option("--size", args->lobe.size, "with --custom-lobe: nodes per axis")
+          ->capture_default_str()};
+  sub->callback([args, oOnly, oOut, oLobe, lobeOnly] {
     CheckThreads("bench", args->threads);
+    for (CLI::Option* o : lobeOnly)
+      if (o->count() && !oLobe->count())
+        throw std::invalid_argument("bench: " + o->get_name() + " needs --custom-lobe");
+    if (oLobe->count()) {
+      if (args->quick || args->catalogue)
+        throw std::invalid_argument("bench: --custom-lobe takes neither --quick nor --catalogue");
+      args->lobe.threads = args->threads > 0 ? args->threads : 2;
+      RunCustomLobeBench(args->lobe, stdout);
+      return;
+    }
     if (oOut->count() && args->out.empty())
       throw std::invalid_argument("bench: --out '' names no folder");
     if (args->out.empty()) args->out = DefaultBenchFolder(args->quick, args->catalogue);

@@ -18,8 +18,9 @@ struct ModelParamOptions {
 };
 
 /// Adds --model-source FILE.cpp and --model-library FILE.so (each may repeat) to the commands
-/// that take a model (eval, integrate, bake, verify, plan): the user's lobe (kiln/model_abi.h,
-/// baker/custom/) is loaded and registered while the line is parsed. main() calls it once.
+/// that take a model (eval, integrate, bake, verify, plan) and to list: the user's lobe
+/// (kiln/model_abi.h, baker/custom/) is loaded and registered while the line is parsed. main()
+/// calls it once.
 void AddCustomModelOptions(CLI::App& app);
 
 /// The comma-separated names in `list`, each once, in the order of their first appearance
@@ -66,16 +67,19 @@ std::vector<std::string> NumbersAsPositionals(int argc, char** argv);
 struct ListedTable {
   TableSpec spec;
   bool inDefaultCatalogue = true;
+  bool customModel = false;  ///< a table of a user's lobe (loaded by --model-source / -library)
 };
 
 /// Every table kiln can bake by name: the default catalogue in its order, then the on-request
-/// tables, each name once.
+/// tables, then the tables of the user's lobes loaded in this process (albedo, albedo-avg and,
+/// for a specular lobe, dfg), each name once.
 std::vector<ListedTable> AllListedTables();
 
 /// One line per table ("NAME  [default|on request]  AXES[ at P = V, ...]  # MEANING", AXES as
 /// kiln plan prints them: "mu 0..1 (32, sqrt) x roughness ...", then the model parameters the
-/// table is baked at, if any), or (json) a JSON array of objects with keys name, model,
-/// quantity, channels, axes (name, lo, hi, size, warp), params, default_catalogue, description.
+/// table is baked at, if any; a user's lobe's table adds "; method: ..." after the meaning), or
+/// (json) a JSON array of objects with keys name, model, quantity, channels, axes (name, lo, hi,
+/// size, warp), params, default_catalogue, custom_model, method, description.
 std::string FormatTableList(const std::vector<ListedTable>& tables, bool json);
 
 /// kiln list [--tables [--json]]: the models, or every table kiln can bake.

@@ -41,7 +41,7 @@ ModelParams ModelParamOptions::Params() const {
 }
 
 void AddCustomModelOptions(CLI::App& app) {
-  for (const char* command : {"eval", "integrate", "bake", "verify", "plan"}) {
+  for (const char* command : {"eval", "integrate", "bake", "verify", "plan", "list"}) {
     CLI::App* sub = app.get_subcommand(command);
     // Loaded while the command line is parsed, before the command runs: its id is then known
     // to every lookup of the command (the model, --only, a scene's materials, a table's model).

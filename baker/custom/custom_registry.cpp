@@ -52,6 +52,7 @@ AnyModel MakeCustom(const CustomLobe* lobe, const std::vector<ParamInfo>& params
     throw CustomModelError("model '" + lobe->id + "': kiln_model_importance_alpha(" +
                            std::to_string(base.roughness) + ") is not a positive number");
   m.importance.alpha = std::max(alpha, MinAlpha);
+  m.horizonMu = std::min(kHorizonMu, kHorizonMuPerAlpha * m.importance.alpha);
   return m;
 }
 

@@ -125,6 +125,8 @@ static const ModelInfo& LoadAs(const std::string& path, const std::string& hash,
   if (auto ec = Symbol<int (*)()>(handle, "kiln_model_energy_conserving"))
     lobe.energyConserving = ec() != 0;
   lobe.importanceAlpha = Symbol<double (*)(double)>(handle, "kiln_model_importance_alpha");
+  if (lobe.specular)
+    lobe.evalHalf = Symbol<decltype(lobe.evalHalf)>(handle, "kiln_model_eval_half");
   std::vector<ParamInfo> params = ReadParams(handle, where, lobe);
   return RegisterCustomLobe(lobe, std::move(params));
 }

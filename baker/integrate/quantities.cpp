@@ -10,12 +10,12 @@ constexpr bool IsSpecular() {
   return std::decay_t<M>::kDomain == IntegrationDomain::HalfVector;
 }
 
-/// The view cosine a model is integrated at: a user's lobe (baker/custom/) at mu_o = 0 is taken
-/// in the limit from above, at kHorizonMu (its f may hold 0 / 0 there).
+/// The view cosine model m is integrated at: a user's lobe (baker/custom/) at mu_o = 0 is taken
+/// in the limit from above, at its horizonMu (its f may hold 0 / 0 there).
 template <class M>
-double ViewCosine(double mu_o) {
+double ViewCosine(const M& m, double mu_o) {
   if constexpr (std::is_base_of_v<CustomModelBase, std::decay_t<M>>)
-    return std::max(mu_o, kHorizonMu);
+    return std::max(mu_o, m.horizonMu);
   return mu_o;
 }
 
@@ -50,7 +50,7 @@ RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const Integration
   mu_o = Clamp(mu_o, 0.0, 1.0);
   return std::visit(
       [&](const auto& m) -> RhoParts {
-        mu_o = ViewCosine<decltype(m)>(mu_o);
+        mu_o = ViewCosine(m, mu_o);
         if constexpr (IsSpecular<decltype(m)>()) {
           auto w = [](const HalfSample&, double rho) { return Channels<1>{rho}; };
           return {IntegrateHalfVector<1>(m, mu_o, w, opt, stats)[0], 0};
@@ -83,7 +83,7 @@ std::array<double, 2> SplitSumDFG(const AnyModel& model, double mu_o, const Inte
   mu_o = Clamp(mu_o, 0.0, 1.0);
   return std::visit(
       [&](const auto& m) -> std::array<double, 2> {
-        mu_o = ViewCosine<decltype(m)>(mu_o);
+        mu_o = ViewCosine(m, mu_o);
         if constexpr (IsSpecular<decltype(m)>()) {
           auto unit = m;
           unit.fresnel = Fresnel{};

@@ -22,6 +22,9 @@ constexpr int kMaxCustomParams = 4;
 constexpr double kDefaultImportanceAlphaMin = 1e-3;
 /// The view cosine at which a custom lobe is evaluated for a view on the horizon (mu_o = 0).
 constexpr double kHorizonMu = 1e-12;
+/// A specular lobe's horizon view cosine is at most this times its importance alpha: a lobe of
+/// width alpha sees mu_o << alpha as the horizon (kHorizonMu itself for alpha >= 1e-3).
+constexpr double kHorizonMuPerAlpha = 1e-9;
 
 /// A lobe that returned a NaN, infinite or negative f (the message names where).
 struct CustomModelError : std::runtime_error {
@@ -39,6 +42,8 @@ struct CustomLobe {
   double (*eval)(const double*, const double*, double) = nullptr;
   double (*evalParams)(const double*, const double*, double, const double*) = nullptr;
   double (*importanceAlpha)(double) = nullptr;
+  /// kiln_model_eval_half (specular lobes): f given the walk's half vector too, or nullptr.
+  double (*evalHalf)(const double*, const double*, const double*, double, const double*) = nullptr;
 };
 
 /// Throws CustomModelError for an f that is NaN, infinite or negative at (wo, wi).
@@ -49,11 +54,16 @@ struct CustomModelBase {
   const CustomLobe* lobe = nullptr;
   double roughness = 0.5;
   std::array<double, kMaxCustomParams> params{};
+  /// The view cosine a view on the horizon is evaluated at (kHorizonMu, or less for a sharp
+  /// specular lobe: kHorizonMuPerAlpha).
+  double horizonMu = kHorizonMu;
 
   /// The lobe's f at (wo, wi), checked (finite, >= 0); 0 below the horizon. A view on the
-  /// horizon (mu_o = 0, the first node of every mu axis) is evaluated at mu_o = kHorizonMu: the
+  /// horizon (mu_o = 0, the first node of every mu axis) is evaluated at mu_o = horizonMu: the
   /// limit from above, which a lobe with a 1 / mu_o factor has where mu_o = 0 itself is 0 / 0.
-  double Checked(Vec3 wo, Vec3 wi) const;
+  /// With `wh` (the unit half vector of (wo, wi) as an integrator generated it) and a lobe that
+  /// defines kiln_model_eval_half, f comes from that function.
+  double Checked(Vec3 wo, Vec3 wi, const Vec3* wh = nullptr) const;
 };
 
 /// A custom lobe integrated over light directions (kiln_model_is_specular() == 0).
@@ -65,7 +75,8 @@ struct CustomDiffuseModel : CustomModelBase {
 
 /// A custom lobe integrated over half vectors walked by a GGX lobe of the lobe's importance
 /// alpha (integrate/hemisphere.h); `fresnel` multiplies f (F = 1 unless set, as for the
-/// built-in microfacet models: the dfg tables split F out of a lobe that holds none).
+/// built-in microfacet models: the dfg tables split F out of a lobe that holds none). The walk's
+/// half vector reaches the lobe through kiln_model_eval_half when it defines that function.
 struct CustomSpecularModel : CustomModelBase {
   static constexpr IntegrationDomain kDomain = IntegrationDomain::HalfVector;
   GGXDistribution importance;

@@ -59,9 +59,11 @@ std::string TableSpec::ParamsText() const {
 std::string TableSpec::Method() const {
   const QuantityInfo& q = Describe(quantity);
   std::string method = UsesFixedRule(*this) ? q.fixedRuleMethod(*this) : q.method(*this);
-  // A user's lobe: its id and hash in the header (the hash is in HashText too).
-  if (const std::string hash = CodeHashOf(model); !hash.empty())
-    method += "; custom model '" + model + "', hash " + hash;
+  // A user's lobe: its id and hash in the header (the hash is in HashText too), once (an
+  // average's method quotes its E table's, which already names them).
+  const std::string hash = CodeHashOf(model);
+  const std::string lobe = "; custom model '" + model + "', hash " + hash;
+  if (!hash.empty() && method.find(lobe) == std::string::npos) method += lobe;
   return method;
 }
 

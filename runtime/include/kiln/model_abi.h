@@ -50,6 +50,17 @@ void kiln_model_param_range(int index, double* lo, double* hi, double* def);
 /// when the model declares parameters.
 double kiln_model_eval_params(const double wo[3], const double wi[3], double roughness,
                               const double* params);
+/// f(wo, wi) of a specular lobe given also wh = (wo + wi) / |wo + wi|, the half vector kiln's
+/// half-vector walk generated: its components carry full relative precision, where wo + wi
+/// rounded from the two directions holds the half vector's slope only to ~1e-16 absolute (too
+/// coarse for a lobe sharper than alpha ~1e-7). `params` holds the declared parameters' values in
+/// declaration order (not to be read when none is declared). When present, kiln integrates a
+/// specular lobe with it instead of kiln_model_eval / kiln_model_eval_params (which it still uses
+/// for single evaluations); it must agree with them up to rounding. A lobe written in terms of
+/// the half vector's components (tan^2 theta_h = (wh.x^2 + wh.y^2) / wh.z^2) keeps its precision
+/// down to alpha = 1e-12.
+double kiln_model_eval_half(const double wo[3], const double wh[3], const double wi[3],
+                            double roughness, const double* params);
 
 #ifdef __cplusplus
 }
