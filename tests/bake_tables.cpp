@@ -1,11 +1,14 @@
 // The bake: every texel within 1e-6 of the exact integral for every table kind, bit-identical
 // output for any thread count, self-describing metadata.
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <set>
 
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
+#include "baker/verify/bake_error.h"
 #include "cli_util.h"
 #include "test_bake_cache.h"
 #include "test_util.h"
@@ -70,6 +73,28 @@ std::vector<size_t> ShardTexels(size_t n, int shard, size_t rotation) {
 constexpr double kTexelRefTol = 1e-9;
 constexpr double kTexelRefTolE = 1e-11;
 
+/// Seeded Latin-hypercube texels of a 2D average's check, besides its corners and its
+/// worst-departing texels.
+constexpr int kAverageSampleTexels = 4;
+
+/// The texels the check compares, of which ShardTexels deals the shards theirs: every one of a
+/// table of E (every 7th above 60 texels, ShardTexels), every one of a 1D average; a 2D average
+/// (each texel an integral of integrals: ~1e7 integrand evaluations for the glass averages)
+/// at the nodes `kiln verify` checks (verify::BakeCheckNodes, its own seed): every corner, the
+/// kBakeWorstNodes texels that depart most from the line through their neighbours (where a
+/// texel off its function shows), and kAverageSampleTexels Latin-hypercube texels.
+std::vector<size_t> CheckedTexels(const TableSpec& spec, const Table& t) {
+  const bool average = std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos;
+  if (average && spec.axes.size() >= 2) {
+    std::vector<size_t> nodes = verify::BakeCheckNodes(spec, t, kAverageSampleTexels, 0x74657874);
+    std::sort(nodes.begin(), nodes.end());
+    return nodes;
+  }
+  std::vector<size_t> all(spec.TexelCount());
+  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return all;
+}
+
 /// Re-integrates shard `shard` of the sampled texels (ShardTexels) of each of OneOfEachKind(5)
 /// by adaptive quadrature (kTexelRefTol for an average, whose reference is an integral of
 /// integrals: the glass averages take ~20M integrand evaluations a texel at 1e-10, 30% fewer at
@@ -82,9 +107,11 @@ void CheckTexelsAgainstExact(int shard) {
     BakeOptions opt;
     opt.measureLookupError = false;
     const Table& t = test::CachedBake(spec, opt);
-    size_t nc = spec.channels.size(), n = spec.TexelCount();
+    const size_t nc = spec.channels.size();
+    const std::vector<size_t> checked = CheckedTexels(spec, t);
     double worst = 0;
-    for (size_t i : ShardTexels(n, shard, k)) {
+    for (size_t j : ShardTexels(checked.size(), shard, k)) {
+      const size_t i = checked[j];
       double x[3];
       NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
       IntegrationStats st;
