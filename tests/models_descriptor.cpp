@@ -35,6 +35,9 @@ std::string Escaped(const std::string& id) {
 /// either side, .compare("id"), strcmp(..., "id").
 std::vector<std::string> ComparisonsWith(const std::string& path, const std::string& text,
                                          const std::string& id) {
+  // Every form below holds the quoted id: a text without it has none, and skips the regex
+  // (std::regex is slow to build and to run: once per file and id, the scan took seconds).
+  if (text.find("\"" + id + "\"") == std::string::npos) return {};
   const std::string q = "\"" + Escaped(id) + "\"";
   const std::regex re("(==|!=)\\s*" + q + "|" + q + "\\s*(==|!=)|compare\\(\\s*" + q +
                       "|strn?cmp\\([^;]*" + q);

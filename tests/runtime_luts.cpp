@@ -103,58 +103,7 @@ TEST_CASE("A lookup at a node of any committed table returns the stored texel ex
   }
 }
 
-// `kiln verify` against adaptive quadrature (independent of the fixed rules the tables were baked
-// with) on a strided sample of each table's cells, and its bake-error check at the corners and
-// the worst-departing nodes only (--bake-nodes 0; the sampled nodes: `kiln verify luts`). The
-// tables are dealt into eight shards, one test each, so that no single test carries the whole
-// catalogue's cost on a busy machine (a table's -r and -t siblings, 4 apart in name order, land
-// in different shards).
-static void VerifyShard(int shard) {
-  constexpr int kShards = 8;
-  std::vector<std::string> files = TableFiles();
-  std::string paths;
-  int n = 0;
-  for (size_t i = shard; i < files.size(); i += kShards, ++n)
-    paths += " " + LutsDir() + "/" + files[i];
-  REQUIRE(n > 0);
-  auto r = test::RunKiln("verify" + paths + " --points 4 --cells 8 --tol 1e-6 --bake-nodes 0 -j 2");
-  INFO(r.out << r.err);
-  CHECK(r.exitCode == 0);
-  CHECK(r.out.find(std::to_string(n) + " tables, 0 over their bound") != std::string::npos);
-}
-
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 1 of 8",
-          "[luts]") {
-  VerifyShard(0);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 2 of 8",
-          "[luts]") {
-  VerifyShard(1);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 3 of 8",
-          "[luts]") {
-  VerifyShard(2);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 4 of 8",
-          "[luts]") {
-  VerifyShard(3);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 5 of 8",
-          "[luts]") {
-  VerifyShard(4);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 6 of 8",
-          "[luts]") {
-  VerifyShard(5);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 7 of 8",
-          "[luts]") {
-  VerifyShard(6);
-}
-TEST_CASE("Every committed table passes kiln verify (a strided sample of its cells), shard 8 of 8",
-          "[luts]") {
-  VerifyShard(7);
-}
+// Every committed table passes `kiln verify`: tests/verify_committed_luts.cpp.
 
 TEST_CASE(
     "Default 2D microfacet tables: lookup error below 1e-3 over the whole domain, "
