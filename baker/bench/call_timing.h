@@ -36,6 +36,12 @@ constexpr int kPlainTableSize = 128;
 /// floor a table lookup is measured against (random mu and roughness in [0, 1]).
 CallTiming TimePlainBilinear(long long calls, int batches);
 
+/// `calls` lookups per batch in a plain trilinear table of n0 x n1 x n2 texels of `channels`
+/// interleaved float channels: x linear in mu, y linear in sqrt(roughness), z linear, float
+/// arithmetic, clamp to edge, no warp and no validation. The floor a 3D table lookup of the
+/// same size is measured against (random coordinates in [0, 1]).
+CallTiming TimePlainTrilinear(int n0, int n1, int n2, int channels, long long calls, int batches);
+
 /// `calls` evaluations per batch of a closed-form fit (fit/fit_form.h EvaluateFit, the float
 /// arithmetic of the emitted code) at random points inside its axes.
 CallTiming TimeFit(const FitForm& form, long long calls, int batches);

@@ -843,18 +843,12 @@ class LutSampler {
     return true;
   }
 
-  /// The float path's linear lookup on a table of D axes and C channels (C = 0: any number):
-  /// warps, cells and interpolation in float (kiln/lut_float_path.h), axis 0's layer scale
-  /// from axis 1 (detail::floatLayerScale) when it has the root4-layer warp. Scalar code, no
-  /// arrays: the cells stay in registers.
+  /// The float path's interpolation of C channels (C = 0: the view's) from the cells of the
+  /// D axes: (1 - f) a + f b along axis 0, then 1, then 2.
   template <int D, int C>
-  KILN_INLINE void floatLinear(const double* x, float* out) const noexcept {
-    using detail::floatCellAt;
+  KILN_INLINE void floatTaps(const detail::FloatCell& k0, const detail::FloatCell& k1,
+                             const detail::FloatCell& k2, float* out) const noexcept {
     using detail::floatLerp;
-    const float c = floatLayer_ ? detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]) : 0.0f;
-    const detail::FloatCell k0 = floatCellAt(float_[0], x[0], c);
-    const detail::FloatCell k1 = D >= 2 ? floatCellAt(float_[1], x[1], c) : detail::FloatCell{};
-    const detail::FloatCell k2 = D >= 3 ? floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
     const std::size_t s0 = k0.step, s1 = k1.step;
     const float* p = view_.data + (k0.offset + k1.offset + k2.offset);
     const float* q = p + k2.step;
@@ -870,6 +864,47 @@ class LutSampler {
       }
       out[ch] = v;
     }
+  }
+
+  /// Axis 0's root4-layer scale at the point x, from axis 1 (0 when axis 0 has another warp).
+  KILN_INLINE float floatLayerScaleAt(const double* x) const noexcept {
+    return floatLayer_ ? detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]) : 0.0f;
+  }
+
+  /// The float path's linear lookup on a table of D axes and C channels (C = 0: any number):
+  /// warps, cells and interpolation in float (kiln/lut_float_path.h), axis 0's layer scale
+  /// from axis 1 (detail::floatLayerScale) when it has the root4-layer warp. Scalar code, no
+  /// arrays: the cells stay in registers.
+  template <int D, int C>
+  KILN_INLINE void floatLinear(const double* x, float* out) const noexcept {
+    using detail::floatCellAt;
+    const float c = floatLayerScaleAt(x);
+    const detail::FloatCell k0 = floatCellAt(float_[0], x[0], c);
+    const detail::FloatCell k1 = D >= 2 ? floatCellAt(float_[1], x[1], c) : detail::FloatCell{};
+    const detail::FloatCell k2 = D >= 3 ? floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
+    floatTaps<D, C>(k0, k1, k2, out);
+  }
+
+  /// The float path's batch call: on a table with a root4-layer axis 0, 4 points at a time,
+  /// their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where available), then
+  /// their taps; the other points (and every point of other tables) one by one. The same
+  /// floats as floatLinear for every point.
+  template <int D, int C>
+  void floatBatch(const double* xs, std::size_t count, float* out) const noexcept {
+    const std::size_t nc = static_cast<std::size_t>(C > 0 ? C : view_.channels);
+    std::size_t k = 0;
+    // Without a root4-layer axis the warps are cheap: one point after the other is faster.
+    for (; floatLayer_ && k + 4 <= count; k += 4) {
+      const double* x = xs + k * D;
+      float c[4];
+      for (int j = 0; j < 4; ++j) c[j] = floatLayerScaleAt(x + j * D);
+      detail::FloatCell cells[3][4];
+      for (int d = 0; d < D; ++d) detail::floatCells4(float_[d], x + d, D, c, cells[d]);
+      for (int j = 0; j < 4; ++j)
+        floatTaps<D, C>(cells[0][j], D >= 2 ? cells[1][j] : detail::FloatCell{},
+                        D >= 3 ? cells[2][j] : detail::FloatCell{}, out + (k + j) * nc);
+    }
+    for (; k < count; ++k) floatLinear<D, C>(xs + k * D, out + k * nc);
   }
 
   /// A float-path lookup of one point (floatLinear<D, C>).
@@ -1107,11 +1142,11 @@ class LutSampler {
     const std::size_t nc = static_cast<std::size_t>(view_.channels);
     if (floatLinear_ != nullptr && filter == Filter::Linear) {
       if (nc == 1) {
-        for (std::size_t k = 0; k < count; ++k) floatLinear<D, 1>(xs + k * D, out + k);
+        floatBatch<D, 1>(xs, count, out);
       } else if (nc == 2) {
-        for (std::size_t k = 0; k < count; ++k) floatLinear<D, 2>(xs + k * D, out + k * 2);
+        floatBatch<D, 2>(xs, count, out);
       } else {
-        for (std::size_t k = 0; k < count; ++k) floatLinear<D, 0>(xs + k * D, out + k * nc);
+        floatBatch<D, 0>(xs, count, out);
       }
       return;
     }
