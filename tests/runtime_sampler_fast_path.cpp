@@ -261,3 +261,28 @@ TEST_CASE("An invalid view samples to zeros, one point or a batch", "[runtime][s
   CHECK(one[1] == 0.0f);
   CHECK_FALSE(LutSampler().valid());
 }
+
+TEST_CASE("The float path's bound is a small part of every committed table's lookup error",
+          "[runtime][sampler][luts]") {
+  int floatTables = 0;
+  double worstShare = 0.0;
+  std::string worstTable;
+  for (const std::string& name : LutFiles()) {
+    Table t = loadTable(LutsDir() + "/" + name);
+    const LutView v = t.view();
+    if (!LutSampler(v).floatPath()) continue;
+    ++floatTables;
+    INFO(name);
+    REQUIRE(t.lookupError.max > 0.0);
+    for (int c = 0; c < v.channels; ++c) {
+      const double share = test::FloatPathBound(v, c) / t.lookupError.max;
+      if (share > worstShare) {
+        worstShare = share;
+        worstTable = name;
+      }
+    }
+  }
+  INFO("largest bound / declared lookup error: " << worstShare << " (" << worstTable << ")");
+  CHECK(floatTables >= 40);
+  CHECK(worstShare < 0.1);
+}
