@@ -1,8 +1,9 @@
 // A lookup at a grid node returns the stored texel bit for bit: on every node of every
-// committed table, through LutSampler (one point and the batch call) and LutView::sample, for
-// the linear and the cubic filter. Nodes no lookup reaches are left out: the layer-limit nodes
-// of a collapsed row (Axis::holdsLayerLimit at layer scale 0) and nodes that share their
-// position with a neighbour (a Root4LayerSplit2 row whose middle pieces have zero width).
+// committed table, through LutSampler (one point, the batch call and sampleDouble) and
+// LutView::sample, for the linear and the cubic filter. Nodes no lookup reaches are left out: the
+// layer-limit nodes of a collapsed row (Axis::holdsLayerLimit at layer scale 0) and nodes that
+// share their position with a neighbour (a Root4LayerSplit2 row whose middle pieces have zero
+// width).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -55,18 +56,19 @@ int NodeMisses(const LutView& v, Filter filter) {
   ReachableNodes(v, xs, ids);
   const LutSampler sampler(v);
   const std::size_t count = ids.size() / 3, nc = static_cast<std::size_t>(v.channels);
-  std::vector<float> batch(count * nc), one(nc), viaView(nc);
+  std::vector<float> batch(count * nc), one(nc), viaView(nc), twice(nc);
   sampler.sample(xs.data(), count, batch.data(), filter);
   int misses = 0;
   for (std::size_t k = 0; k < count; ++k) {
     const double* x = &xs[k * static_cast<std::size_t>(v.dims)];
     sampler.sample(x, one.data(), filter);
     v.sample(x, viaView.data(), filter);
+    sampler.sampleDouble(x, twice.data(), filter);
     for (std::size_t c = 0; c < nc; ++c) {
       const uint32_t stored =
           Bits(v.at(ids[3 * k], ids[3 * k + 1], ids[3 * k + 2], static_cast<int>(c)));
-      const bool miss =
-          Bits(one[c]) != stored || Bits(batch[k * nc + c]) != stored || Bits(viaView[c]) != stored;
+      const bool miss = Bits(one[c]) != stored || Bits(batch[k * nc + c]) != stored ||
+                        Bits(viaView[c]) != stored || Bits(twice[c]) != stored;
       if (miss && misses < 3)
         UNSCOPED_INFO(
             "node (" << ids[3 * k] << ", " << ids[3 * k + 1] << ", " << ids[3 * k + 2]

@@ -682,9 +682,9 @@ struct LutView {
 
   /// Interpolates every channel at the point x (dims values, in axis order,
   /// in axis units; each is clamped to its axis, NaN maps to lo) and writes
-  /// `channels` floats to out: LutSampler::sample's results (the float path for a linear
-  /// lookup on linear, sqrt, root4 and root4-layer axes, double arithmetic otherwise); at a
-  /// node the stored value is returned bit for bit. Writes zeros when the view is not valid().
+  /// `channels` floats to out: the reference lookup, in double (LutSampler::sampleDouble: the
+  /// baker measures the tables' lookup errors with it); at a node the stored value is returned
+  /// bit for bit. Writes zeros when the view is not valid().
   /// Builds a LutSampler (validating the view) and samples through it; to look up many
   /// points, build the LutSampler once.
   void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept;
@@ -708,7 +708,8 @@ struct LutView {
 /// to 4^dims (cubic) loads per channel, with no validation, no allocation, no exception and no
 /// global state. It copies the view (not the data: the data must outlive the sampler).
 ///
-/// Two paths, the same for one point, the batch call and LutView::sample (which calls it):
+/// Two paths; sample() and the batch call take the float path wherever it applies and give the
+/// same floats for a point, sampleDouble() and LutView::sample (which calls it) the double path:
 ///  - The float path (floatPath()): a linear lookup on a table whose axes all have the linear,
 ///    sqrt or root4 warp, or root4-layer on axis 0 (ggx-dfg and most of the catalogue). Warps,
 ///    cells and interpolation in float (kiln/lut_float_path.h), branch-free but for the choice
@@ -716,7 +717,7 @@ struct LutView {
 ///    onto it, so a lookup at a node returns the stored float bit for bit; elsewhere a result
 ///    is within  sum_d 2 kFloatNodeSnap (N_d - 1) G_d + kFloatLerpUlps ulp(V)  of the double
 ///    lookup below (G_d: the largest difference of neighbouring texels along axis d, V: the
-///    largest |texel|), far inside the tables' declared lookup errors.
+///    largest |texel|). A table's declared lookup error is that of the double path.
 ///  - The double path (every other lookup): the texel coordinates of Axis::texel (snapped onto
 ///    nodes within kNodeSnap), double weights, summed in the order of the nodes in memory.
 /// A const sampler may be used from any number of threads at once.
@@ -781,7 +782,17 @@ class LutSampler {
       for (int c = 0; c < view_.channels; ++c) out[c] = 0.0f;
       return;
     }
-    sampleValid(x, out, filter);
+    sampleValid(x, out, filter, true);
+  }
+
+  /// The double path for every lookup (see the class comment), the float path never: the
+  /// reference LutView::sample gives and the baker's lookup errors are measured with.
+  void sampleDouble(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (!valid_) {
+      for (int c = 0; c < view_.channels; ++c) out[c] = 0.0f;
+      return;
+    }
+    sampleValid(x, out, filter, false);
   }
 
   /// Batch lookup of `count` points. Layout: point k is xs[k * dims .. k * dims + dims - 1]
@@ -844,7 +855,7 @@ class LutSampler {
   }
 
   /// The float path's interpolation of C channels (C = 0: the view's) from the cells of the
-  /// D axes: (1 - f) a + f b along axis 0, then 1, then 2.
+  /// D axes: detail::floatLerp along axis 0, then 1, then 2.
   template <int D, int C>
   KILN_INLINE void floatTaps(const detail::FloatCell& k0, const detail::FloatCell& k1,
                              const detail::FloatCell& k2, float* out) const noexcept {
@@ -922,9 +933,11 @@ class LutSampler {
     return kByShape[dims - 1][channels <= 2 ? channels : 0];
   }
 
-  void sampleValid(const double* x, float* out, Filter filter) const noexcept {
+  /// A lookup on a valid sampler: the float path where it applies and `floatPath` allows it,
+  /// the double path otherwise.
+  void sampleValid(const double* x, float* out, Filter filter, bool floatPath) const noexcept {
     const bool cubic = filter == Filter::Cubic;
-    if (floatLinear_ != nullptr && !cubic) {
+    if (floatPath && floatLinear_ != nullptr && !cubic) {
       (this->*floatLinear_)(x, out);
       return;
     }
@@ -1177,7 +1190,7 @@ class LutSampler {
 };
 
 inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {
-  LutSampler(*this).sample(x, out, filter);
+  LutSampler(*this).sampleDouble(x, out, filter);
 }
 
 }  // namespace kiln

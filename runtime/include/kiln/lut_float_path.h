@@ -156,8 +156,9 @@ KILN_INLINE void floatCells4(const FloatAxis& a, const double* x, std::size_t st
 #endif
 }
 
-/// (1 - f) a + f b: a exactly at f = 0 (b is then a itself, FloatCell::step = 0).
-KILN_INLINE float floatLerp(float a, float b, float f) noexcept { return (1.0f - f) * a + f * b; }
+/// a - f (a - b) = (1 - f) a + f b: a exactly where a == b (a constant stretch of a table,
+/// and every node: FloatCell::step = 0 there, so b is a itself), -0 included.
+KILN_INLINE float floatLerp(float a, float b, float f) noexcept { return a - f * (a - b); }
 
 }  // namespace detail
 }  // namespace kiln
