@@ -35,13 +35,13 @@ void ReachableNodes(const LutView& v, std::vector<double>& xs, std::vector<int>&
                      v.dims >= 3 ? v.axis[2].node(i2) : 0.0};
       const double c = v.layerScaleAt(x), split = v.splitAt(x);
       const Axis& a = v.axis[0];
+      std::vector<double> row(static_cast<size_t>(n0));
+      for (int i0 = 0; i0 < n0; ++i0) row[i0] = a.node(i0, c, split);
       for (int i0 = 0; i0 < n0; ++i0) {
-        x[0] = a.node(i0, c, split);
+        x[0] = row[i0];
         const double t = n0 > 1 ? static_cast<double>(i0) / (n0 - 1) : 0.0;
         if (c == 0.0 && isLayerWarp(a.warp) && a.holdsLayerLimit(t)) continue;
-        if ((i0 > 0 && a.node(i0 - 1, c, split) == x[0]) ||
-            (i0 + 1 < n0 && a.node(i0 + 1, c, split) == x[0]))
-          continue;
+        if ((i0 > 0 && row[i0 - 1] == x[0]) || (i0 + 1 < n0 && row[i0 + 1] == x[0])) continue;
         xs.insert(xs.end(), x, x + v.dims);
         ids.insert(ids.end(), {i0, i1, i2});
       }

@@ -265,29 +265,43 @@ TEST_CASE("An invalid view samples to zeros, one point or a batch", "[runtime][s
   CHECK_FALSE(LutSampler().valid());
 }
 
-TEST_CASE("The float path's bound is a small part of every committed table's lookup error",
-          "[runtime][sampler][luts]") {
+TEST_CASE(
+    "The float path departs from the double path by at most a fifth of every committed "
+    "table's declared lookup error, or 2 float ulps",
+    "[runtime][sampler][luts]") {
   int floatTables = 0;
   double worstShare = 0.0;
   std::string worstTable;
   for (const std::string& name : LutFiles()) {
     Table t = loadTable(LutsDir() + "/" + name);
     const LutView v = t.view();
-    if (!LutSampler(v).floatPath()) continue;
+    const LutSampler sampler(v);
+    if (!sampler.floatPath()) continue;
     ++floatTables;
     INFO(name);
     REQUIRE(t.lookupError.max > 0.0);
-    for (int c = 0; c < v.channels; ++c) {
-      // A table whose interpolation is (near) exact declares an error at rounding level; the
-      // float path's rounding is then compared with 1e-6, the slack of kiln verify --tol 1e-6.
-      const double share = test::FloatPathBound(v, c) / std::fmax(t.lookupError.max, 1e-6);
-      if (share > worstShare) {
-        worstShare = share;
-        worstTable = name;
-      }
+    const std::vector<double> xs = Points(v, 3000, 11);
+    std::vector<float> fast(v.channels), exact(v.channels);
+    double departure = 0.0;
+    for (size_t k = 0; k < xs.size(); k += v.dims) {
+      sampler.sample(&xs[k], fast.data());
+      sampler.sampleDouble(&xs[k], exact.data());
+      for (int c = 0; c < v.channels; ++c)
+        departure = std::fmax(departure, std::fabs(double(fast[c]) - double(exact[c])));
+    }
+    // Measured against a fifth of the declared error plus 2 float ulps of the largest texel
+    // (a table whose interpolation is exact declares an error below float rounding).
+    float vmax = 0.0f;
+    for (size_t k = 0; k < v.valueCount(); ++k) vmax = std::fmax(vmax, std::fabs(v.data[k]));
+    const double ulp = std::nextafter(vmax, std::numeric_limits<float>::infinity()) - vmax;
+    const double share = departure / (0.2 * t.lookupError.max + 2.0 * ulp);
+    if (share > worstShare) {
+      worstShare = share;
+      worstTable = name;
     }
   }
-  INFO("largest bound / declared lookup error: " << worstShare << " (" << worstTable << ")");
+  INFO("largest departure / (declared lookup error / 5 + 2 ulps): " << worstShare << " ("
+                                                                    << worstTable << ")");
   CHECK(floatTables >= 40);
-  CHECK(worstShare < 0.1);
+  CHECK(worstShare <= 1.0);
 }

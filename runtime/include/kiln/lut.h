@@ -711,7 +711,8 @@ struct LutView {
 /// Two paths; sample() and the batch call take the float path wherever it applies and give the
 /// same floats for a point, sampleDouble() and LutView::sample (which calls it) the double path:
 ///  - The float path (floatPath()): a linear lookup on a table whose axes all have the linear,
-///    sqrt or root4 warp, or root4-layer on axis 0 (ggx-dfg and most of the catalogue). Warps,
+///    sqrt or root4 warp, or root4-layer on axis 0 (ggx-dfg and most of the catalogue), and
+///    whose texels are finite and at most detail::kFloatPathMaxValue in magnitude. Warps,
 ///    cells and interpolation in float (kiln/lut_float_path.h), branch-free but for the choice
 ///    of warp. A texel coordinate within detail::kFloatNodeSnap (N - 1) of a node is snapped
 ///    onto it, so a lookup at a node returns the stored float bit for bit; elsewhere a result
@@ -727,7 +728,14 @@ class LutSampler {
   LutSampler() noexcept = default;
 
   /// Prepares `view`; valid() is view.valid().
-  explicit LutSampler(const LutView& view) noexcept : view_(view), valid_(view.valid()) {
+  explicit LutSampler(const LutView& view) noexcept : LutSampler(view, true) {}
+
+ private:
+  friend struct LutView;
+
+  /// Prepares `view`, and its float path only when `floatPath` (LutView::sample, which takes
+  /// the double path, skips the scan of the texels it needs).
+  LutSampler(const LutView& view, bool floatPath) noexcept : view_(view), valid_(view.valid()) {
     if (!valid_) return;
     std::size_t stride = static_cast<std::size_t>(view.channels);
     for (int d = 0; d < 3; ++d) {
@@ -754,17 +762,20 @@ class LutSampler {
     coupled_ = view.dims >= 2 && isLayerWarp(view.axis[0].warp);
     split_ = coupled_ && (view.axis[0].warp == Warp::Root4LayerSplit ||
                           view.axis[0].warp == Warp::Root4LayerSplit2);
-    if (prepareFloatPath(view)) {
+    if (floatPath && prepareFloatPath(view) &&
+        detail::floatPathValues(view.data, view.valueCount())) {
       floatLayer_ = coupled_;
       floatLinear_ = floatLinearFor(view.dims, view.channels);
     }
   }
 
+ public:
   /// True when the view it was built from is valid() (LutView::valid).
   bool valid() const noexcept { return valid_; }
 
   /// True when linear lookups take the float path (see the class comment): every axis has the
-  /// linear, sqrt or root4 warp, or axis 0 root4-layer.
+  /// linear, sqrt or root4 warp, or axis 0 root4-layer, and every texel is finite and at most
+  /// detail::kFloatPathMaxValue in magnitude.
   bool floatPath() const noexcept { return floatLinear_ != nullptr; }
 
   /// The view it samples.
@@ -1190,7 +1201,7 @@ class LutSampler {
 };
 
 inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {
-  LutSampler(*this).sampleDouble(x, out, filter);
+  LutSampler(*this, false).sampleDouble(x, out, filter);
 }
 
 }  // namespace kiln

@@ -33,6 +33,19 @@ enum class FloatWarp { Linear, Sqrt, Root4, Root4Layer };
 /// snaps onto the node: 16 float ulps of 1, four times the float warps' largest error.
 constexpr float kFloatNodeSnap = 0x1p-20f;
 
+/// The largest |texel| of a table the float path takes. Beyond it (the ltc fits' entries reach
+/// 6e5) float rounding is no longer small against a table's declared lookup error, an absolute
+/// error measured where the values are small.
+constexpr float kFloatPathMaxValue = 1024.0f;
+
+/// True when each of the `count` floats at data is finite and at most kFloatPathMaxValue in
+/// magnitude (a NaN fails).
+inline bool floatPathValues(const float* data, std::size_t count) noexcept {
+  for (std::size_t i = 0; i < count; ++i)
+    if (!(std::fabs(data[i]) <= kFloatPathMaxValue)) return false;
+  return true;
+}
+
 /// Float roundings, in ulps of the largest |texel|, the float interpolation may add (three
 /// levels of two products and a sum, with margin).
 constexpr float kFloatLerpUlps = 8.0f;
