@@ -1,7 +1,8 @@
 // Runtime cost per call: a table lookup (LutView::sample) against evaluating the model
 // (Evaluate) and against integrating it directly (DirectionalAlbedo). Each figure is the median
-// over `batches` batches of ns per call, on one thread, over fixed-seed inputs (4096 lookup
-// points or direction pairs, cycled, so the inputs stay in cache the way a shader's would).
+// over `batches` batches of ns per call in the thread's CPU time, on one thread, over fixed-seed
+// inputs (4096 lookup points or direction pairs, cycled, so the inputs stay in cache the way a
+// shader's would).
 #pragma once
 #include "baker/fit/fit_form.h"
 #include "baker/models/registry.h"
