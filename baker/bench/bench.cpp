@@ -498,8 +498,9 @@ class Bench {
   }
 
   /// Per filter: LutView::sample (lookup-*), a prepared LutSampler (sampler-*) and its batch
-  /// call (batch-*); the notes give each against the plain bilinear lookup timed first, and a
-  /// 3D table's also against a plain trilinear lookup of its size (timed here, a row of its own).
+  /// call (batch-*); the notes give each against a plain bilinear lookup, and a 3D table's also
+  /// against a plain trilinear lookup of its size (a row of its own), each timed again just
+  /// before the row.
   void Lookups(const Table& t, const std::string& size) {
     const std::string batches = "median of " + std::to_string(plan_.batches) + " batches of " +
                                 std::to_string(plan_.lookupCalls) + " ";
@@ -524,11 +525,18 @@ class Bench {
                         {"batch", LookupCall::Batch, "points through LutSampler's batch call"}};
     for (Filter filter : {Filter::Linear, Filter::Cubic}) {
       for (const Way& w : ways) {
+        // The plain lookups timed again just before, so that a ratio compares timings taken
+        // under the same load of a shared machine.
+        const double plain2 = TimePlainBilinear(plan_.lookupCalls, plan_.batches).nsPerCall;
+        const double plain3 =
+            plain3Ns > 0 ? TimePlainTrilinear(t.view().size(0), t.view().size(1), t.view().size(2),
+                                              t.view().channels, plan_.lookupCalls, plan_.batches)
+                               .nsPerCall
+                         : 0.0;
         const CallTiming timing = TimeLookups(t, filter, plan_.lookupCalls, plan_.batches, w.how);
-        std::string ratio = plainNs_ > 0
-                                ? "; " + Fmt3(timing.nsPerCall / plainNs_) + "x plain-bilinear"
-                                : std::string();
-        if (plain3Ns > 0) ratio += "; " + Fmt3(timing.nsPerCall / plain3Ns) + "x plain-trilinear";
+        std::string ratio = "; " + Fmt3(timing.nsPerCall / plain2) + "x plain-bilinear";
+        if (plain3 > 0) ratio += "; " + Fmt3(timing.nsPerCall / plain3) + "x plain-trilinear";
+        ratio += " (each timed just before)";
         AddTiming(std::string(w.prefix) + (filter == Filter::Linear ? "-linear" : "-cubic"), t.name,
                   t.dims(), size, NAN, timing, batches + w.what + ratio);
       }
