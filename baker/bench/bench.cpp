@@ -498,10 +498,23 @@ class Bench {
   }
 
   /// Per filter: LutView::sample (lookup-*), a prepared LutSampler (sampler-*) and its batch
-  /// call (batch-*); the notes give each against the plain bilinear lookup timed first.
+  /// call (batch-*); the notes give each against a plain bilinear lookup, and a 3D table's also
+  /// against a plain trilinear lookup of its size (a row of its own), each timed again just
+  /// before the row.
   void Lookups(const Table& t, const std::string& size) {
     const std::string batches = "median of " + std::to_string(plan_.batches) + " batches of " +
                                 std::to_string(plan_.lookupCalls) + " ";
+    double plain3Ns = 0;
+    if (t.dims() == 3) {
+      const LutView v = t.view();
+      const CallTiming plain = TimePlainTrilinear(v.size(0), v.size(1), v.size(2), v.channels,
+                                                  plan_.lookupCalls, plan_.batches);
+      plain3Ns = plain.nsPerCall;
+      AddTiming("plain-trilinear", t.name, 3, size, NAN, plain,
+                batches +
+                    "float trilinear lookups of a table of this size and channel count, "
+                    "sqrt roughness, no warp");
+    }
     struct Way {
       const char* prefix;
       LookupCall how;
@@ -512,10 +525,18 @@ class Bench {
                         {"batch", LookupCall::Batch, "points through LutSampler's batch call"}};
     for (Filter filter : {Filter::Linear, Filter::Cubic}) {
       for (const Way& w : ways) {
+        // The plain lookups timed again just before, so that a ratio compares timings taken
+        // under the same load of a shared machine.
+        const double plain2 = TimePlainBilinear(plan_.lookupCalls, plan_.batches).nsPerCall;
+        const double plain3 =
+            plain3Ns > 0 ? TimePlainTrilinear(t.view().size(0), t.view().size(1), t.view().size(2),
+                                              t.view().channels, plan_.lookupCalls, plan_.batches)
+                               .nsPerCall
+                         : 0.0;
         const CallTiming timing = TimeLookups(t, filter, plan_.lookupCalls, plan_.batches, w.how);
-        const std::string ratio =
-            plainNs_ > 0 ? "; " + Fmt3(timing.nsPerCall / plainNs_) + "x plain-bilinear"
-                         : std::string();
+        std::string ratio = "; " + Fmt3(timing.nsPerCall / plain2) + "x plain-bilinear";
+        if (plain3 > 0) ratio += "; " + Fmt3(timing.nsPerCall / plain3) + "x plain-trilinear";
+        ratio += " (each timed just before)";
         AddTiming(std::string(w.prefix) + (filter == Filter::Linear ? "-linear" : "-cubic"), t.name,
                   t.dims(), size, NAN, timing, batches + w.what + ratio);
       }

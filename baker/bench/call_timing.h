@@ -1,7 +1,8 @@
 // Runtime cost per call: a table lookup (LutView::sample) against evaluating the model
 // (Evaluate) and against integrating it directly (DirectionalAlbedo). Each figure is the median
-// over `batches` batches of ns per call, on one thread, over fixed-seed inputs (4096 lookup
-// points or direction pairs, cycled, so the inputs stay in cache the way a shader's would).
+// over `batches` batches of ns per call in the thread's CPU time, on one thread, over fixed-seed
+// inputs (4096 lookup points or direction pairs, cycled, so the inputs stay in cache the way a
+// shader's would).
 #pragma once
 #include "baker/fit/fit_form.h"
 #include "baker/models/registry.h"
@@ -35,6 +36,12 @@ constexpr int kPlainTableSize = 128;
 /// linear in sqrt(roughness), float arithmetic, clamp to edge, no warp and no validation. The
 /// floor a table lookup is measured against (random mu and roughness in [0, 1]).
 CallTiming TimePlainBilinear(long long calls, int batches);
+
+/// `calls` lookups per batch in a plain trilinear table of n0 x n1 x n2 texels of `channels`
+/// interleaved float channels: x linear in mu, y linear in sqrt(roughness), z linear, float
+/// arithmetic, clamp to edge, no warp and no validation. The floor a 3D table lookup of the
+/// same size is measured against (random coordinates in [0, 1]).
+CallTiming TimePlainTrilinear(int n0, int n1, int n2, int channels, long long calls, int batches);
 
 /// `calls` evaluations per batch of a closed-form fit (fit/fit_form.h EvaluateFit, the float
 /// arithmetic of the emitted code) at random points inside its axes.

@@ -17,28 +17,8 @@
 #include <cstring>
 #include <limits>
 
-/// Keeps a rarely taken function out of line, so the lookup fast paths stay small.
-#ifndef KILN_NOINLINE
-#if defined(__GNUC__) || defined(__clang__)
-#define KILN_NOINLINE __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define KILN_NOINLINE __declspec(noinline)
-#else
-#define KILN_NOINLINE
-#endif
-#endif
-
-/// Inlines a small function of a lookup fast path (which compilers may otherwise keep out of
-/// line, judging it by its rarely taken branches).
-#ifndef KILN_INLINE
-#if defined(__GNUC__) || defined(__clang__)
-#define KILN_INLINE inline __attribute__((always_inline))
-#elif defined(_MSC_VER)
-#define KILN_INLINE __forceinline
-#else
-#define KILN_INLINE inline
-#endif
-#endif
+#include "kiln/lut_float_path.h"
+#include "kiln/lut_inline.h"
 
 namespace kiln {
 
@@ -702,9 +682,9 @@ struct LutView {
 
   /// Interpolates every channel at the point x (dims values, in axis order,
   /// in axis units; each is clamped to its axis, NaN maps to lo) and writes
-  /// `channels` floats to out. The interpolation runs in double on the
-  /// stored floats; at a node the stored value is returned bit for bit.
-  /// Writes zeros when the view is not valid().
+  /// `channels` floats to out: the reference lookup, in double (LutSampler::sampleDouble: the
+  /// baker measures the tables' lookup errors with it); at a node the stored value is returned
+  /// bit for bit. Writes zeros when the view is not valid().
   /// Builds a LutSampler (validating the view) and samples through it; to look up many
   /// points, build the LutSampler once.
   void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept;
@@ -728,9 +708,19 @@ struct LutView {
 /// to 4^dims (cubic) loads per channel, with no validation, no allocation, no exception and no
 /// global state. It copies the view (not the data: the data must outlive the sampler).
 ///
-/// Results are those of LutView::sample, bit for bit (which calls it): the same texel
-/// coordinates (Axis::texel, snapped onto nodes within kNodeSnap), the same double weights and
-/// the same order of summation, so a lookup at a node returns the stored float exactly.
+/// Two paths; sample() and the batch call take the float path wherever it applies and give the
+/// same floats for a point, sampleDouble() and LutView::sample (which calls it) the double path:
+///  - The float path (floatPath()): a linear lookup on a table whose axes all have the linear,
+///    sqrt or root4 warp, or root4-layer on axis 0 (ggx-dfg and most of the catalogue), and
+///    whose texels are finite and at most detail::kFloatPathMaxValue in magnitude. Warps,
+///    cells and interpolation in float (kiln/lut_float_path.h), branch-free but for the choice
+///    of warp. A texel coordinate within detail::kFloatNodeSnap (N - 1) of a node is snapped
+///    onto it, so a lookup at a node returns the stored float bit for bit; elsewhere a result
+///    is within  sum_d 2 kFloatNodeSnap (N_d - 1) G_d + kFloatLerpUlps ulp(V)  of the double
+///    lookup below (G_d: the largest difference of neighbouring texels along axis d, V: the
+///    largest |texel|). A table's declared lookup error is that of the double path.
+///  - The double path (every other lookup): the texel coordinates of Axis::texel (snapped onto
+///    nodes within kNodeSnap), double weights, summed in the order of the nodes in memory.
 /// A const sampler may be used from any number of threads at once.
 class LutSampler {
  public:
@@ -738,7 +728,14 @@ class LutSampler {
   LutSampler() noexcept = default;
 
   /// Prepares `view`; valid() is view.valid().
-  explicit LutSampler(const LutView& view) noexcept : view_(view), valid_(view.valid()) {
+  explicit LutSampler(const LutView& view) noexcept : LutSampler(view, true) {}
+
+ private:
+  friend struct LutView;
+
+  /// Prepares `view`, and its float path only when `floatPath` (LutView::sample, which takes
+  /// the double path, skips the scan of the texels it needs).
+  LutSampler(const LutView& view, bool floatPath) noexcept : view_(view), valid_(view.valid()) {
     if (!valid_) return;
     std::size_t stride = static_cast<std::size_t>(view.channels);
     for (int d = 0; d < 3; ++d) {
@@ -765,10 +762,21 @@ class LutSampler {
     coupled_ = view.dims >= 2 && isLayerWarp(view.axis[0].warp);
     split_ = coupled_ && (view.axis[0].warp == Warp::Root4LayerSplit ||
                           view.axis[0].warp == Warp::Root4LayerSplit2);
+    if (floatPath && prepareFloatPath(view) &&
+        detail::floatPathValues(view.data, view.valueCount())) {
+      floatLayer_ = coupled_;
+      floatLinear_ = floatLinearFor(view.dims, view.channels);
+    }
   }
 
+ public:
   /// True when the view it was built from is valid() (LutView::valid).
   bool valid() const noexcept { return valid_; }
+
+  /// True when linear lookups take the float path (see the class comment): every axis has the
+  /// linear, sqrt or root4 warp, or axis 0 root4-layer, and every texel is finite and at most
+  /// detail::kFloatPathMaxValue in magnitude.
+  bool floatPath() const noexcept { return floatLinear_ != nullptr; }
 
   /// The view it samples.
   const LutView& view() const noexcept { return view_; }
@@ -777,11 +785,25 @@ class LutSampler {
   /// units; each is clamped to its axis, NaN maps to lo) and writes view().channels floats to
   /// out: LutView::sample's contract and results. Zeros when the sampler is not valid().
   void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (floatLinear_ != nullptr && filter == Filter::Linear) {
+      (this->*floatLinear_)(x, out);
+      return;
+    }
     if (!valid_) {
       for (int c = 0; c < view_.channels; ++c) out[c] = 0.0f;
       return;
     }
-    sampleValid(x, out, filter);
+    sampleValid(x, out, filter, true);
+  }
+
+  /// The double path for every lookup (see the class comment), the float path never: the
+  /// reference LutView::sample gives and the baker's lookup errors are measured with.
+  void sampleDouble(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (!valid_) {
+      for (int c = 0; c < view_.channels; ++c) out[c] = 0.0f;
+      return;
+    }
+    sampleValid(x, out, filter, false);
   }
 
   /// Batch lookup of `count` points. Layout: point k is xs[k * dims .. k * dims + dims - 1]
@@ -816,8 +838,120 @@ class LutSampler {
     bool exactInverse = false;
   };
 
-  void sampleValid(const double* x, float* out, Filter filter) const noexcept {
+  /// Sets the float path's constants (float_) of every axis; true when every axis of the view
+  /// has a warp the float path computes (linear, sqrt, root4; root4-layer on axis 0).
+  bool prepareFloatPath(const LutView& view) noexcept {
+    for (int d = 0; d < 3; ++d) {
+      detail::FloatAxis& f = float_[d];
+      const Prepared& p = axis_[d];
+      f.stride = p.stride;
+      f.last = static_cast<float>(p.n - 1);
+      f.snap = detail::kFloatNodeSnap * f.last;
+      if (d >= view.dims) continue;
+      f.lo = p.lo;
+      f.invRange = p.invRange;
+      if (p.warp == Warp::Linear) {
+        f.warp = detail::FloatWarp::Linear;
+      } else if (p.warp == Warp::Sqrt) {
+        f.warp = detail::FloatWarp::Sqrt;
+      } else if (p.warp == Warp::Root4) {
+        f.warp = detail::FloatWarp::Root4;
+      } else if (p.warp == Warp::Root4Layer && d == 0) {
+        f.warp = detail::FloatWarp::Root4Layer;
+      } else {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  /// The float path's interpolation of C channels (C = 0: the view's) from the cells of the
+  /// D axes: detail::floatLerp along axis 0, then 1, then 2.
+  template <int D, int C>
+  KILN_INLINE void floatTaps(const detail::FloatCell& k0, const detail::FloatCell& k1,
+                             const detail::FloatCell& k2, float* out) const noexcept {
+    using detail::floatLerp;
+    const std::size_t s0 = k0.step, s1 = k1.step;
+    const float* p = view_.data + (k0.offset + k1.offset + k2.offset);
+    const float* q = p + k2.step;
+    const float f0 = k0.f, f1 = k1.f, f2 = k2.f;
+    const int nc = C > 0 ? C : view_.channels;
+    for (int ch = 0; ch < nc; ++ch) {
+      float v = floatLerp(p[ch], p[s0 + ch], f0);
+      if (D >= 2) v = floatLerp(v, floatLerp(p[s1 + ch], p[s1 + s0 + ch], f0), f1);
+      if (D >= 3) {
+        const float w = floatLerp(floatLerp(q[ch], q[s0 + ch], f0),
+                                  floatLerp(q[s1 + ch], q[s1 + s0 + ch], f0), f1);
+        v = floatLerp(v, w, f2);
+      }
+      out[ch] = v;
+    }
+  }
+
+  /// Axis 0's root4-layer scale at the point x, from axis 1 (0 when axis 0 has another warp).
+  KILN_INLINE float floatLayerScaleAt(const double* x) const noexcept {
+    return floatLayer_ ? detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]) : 0.0f;
+  }
+
+  /// The float path's linear lookup on a table of D axes and C channels (C = 0: any number):
+  /// warps, cells and interpolation in float (kiln/lut_float_path.h), axis 0's layer scale
+  /// from axis 1 (detail::floatLayerScale) when it has the root4-layer warp. Scalar code, no
+  /// arrays: the cells stay in registers.
+  template <int D, int C>
+  KILN_INLINE void floatLinear(const double* x, float* out) const noexcept {
+    using detail::floatCellAt;
+    const float c = floatLayerScaleAt(x);
+    const detail::FloatCell k0 = floatCellAt(float_[0], x[0], c);
+    const detail::FloatCell k1 = D >= 2 ? floatCellAt(float_[1], x[1], c) : detail::FloatCell{};
+    const detail::FloatCell k2 = D >= 3 ? floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
+    floatTaps<D, C>(k0, k1, k2, out);
+  }
+
+  /// The float path's batch call: on a table with a root4-layer axis 0, 4 points at a time,
+  /// their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where available), then
+  /// their taps; the other points (and every point of other tables) one by one. The same
+  /// floats as floatLinear for every point.
+  template <int D, int C>
+  void floatBatch(const double* xs, std::size_t count, float* out) const noexcept {
+    const std::size_t nc = static_cast<std::size_t>(C > 0 ? C : view_.channels);
+    std::size_t k = 0;
+    // Without a root4-layer axis the warps are cheap: one point after the other is faster.
+    for (; floatLayer_ && k + 4 <= count; k += 4) {
+      const double* x = xs + k * D;
+      float c[4];
+      for (int j = 0; j < 4; ++j) c[j] = floatLayerScaleAt(x + j * D);
+      detail::FloatCell cells[3][4];
+      for (int d = 0; d < D; ++d) detail::floatCells4(float_[d], x + d, D, c, cells[d]);
+      for (int j = 0; j < 4; ++j)
+        floatTaps<D, C>(cells[0][j], D >= 2 ? cells[1][j] : detail::FloatCell{},
+                        D >= 3 ? cells[2][j] : detail::FloatCell{}, out + (k + j) * nc);
+    }
+    for (; k < count; ++k) floatLinear<D, C>(xs + k * D, out + k * nc);
+  }
+
+  /// A float-path lookup of one point (floatLinear<D, C>).
+  using FloatLookup = void (LutSampler::*)(const double*, float*) const noexcept;
+
+  /// floatLinear<D, C> for a table of `dims` axes and `channels` channels (1 and 2 unrolled).
+  static FloatLookup floatLinearFor(int dims, int channels) noexcept {
+    static constexpr FloatLookup kByShape[3][3] = {
+        {&LutSampler::floatLinear<1, 0>, &LutSampler::floatLinear<1, 1>,
+         &LutSampler::floatLinear<1, 2>},
+        {&LutSampler::floatLinear<2, 0>, &LutSampler::floatLinear<2, 1>,
+         &LutSampler::floatLinear<2, 2>},
+        {&LutSampler::floatLinear<3, 0>, &LutSampler::floatLinear<3, 1>,
+         &LutSampler::floatLinear<3, 2>}};
+    return kByShape[dims - 1][channels <= 2 ? channels : 0];
+  }
+
+  /// A lookup on a valid sampler: the float path where it applies and `floatPath` allows it,
+  /// the double path otherwise.
+  void sampleValid(const double* x, float* out, Filter filter, bool floatPath) const noexcept {
     const bool cubic = filter == Filter::Cubic;
+    if (floatPath && floatLinear_ != nullptr && !cubic) {
+      (this->*floatLinear_)(x, out);
+      return;
+    }
     if (view_.dims == 1) {
       cubic ? sampleCubic<1>(x, out) : sampleLinear<1>(x, out);
     } else if (view_.dims == 2) {
@@ -1030,6 +1164,16 @@ class LutSampler {
   template <int D>
   void sampleBatch(const double* xs, std::size_t count, float* out, Filter filter) const noexcept {
     const std::size_t nc = static_cast<std::size_t>(view_.channels);
+    if (floatLinear_ != nullptr && filter == Filter::Linear) {
+      if (nc == 1) {
+        floatBatch<D, 1>(xs, count, out);
+      } else if (nc == 2) {
+        floatBatch<D, 2>(xs, count, out);
+      } else {
+        floatBatch<D, 0>(xs, count, out);
+      }
+      return;
+    }
     int cell[kBatchBlock][3];
     double frac[kBatchBlock][3];
     for (std::size_t b = 0; b < count; b += kBatchBlock) {
@@ -1051,10 +1195,13 @@ class LutSampler {
   bool valid_ = false;
   bool coupled_ = false;  ///< axis 0 has a layer warp (reads axis 1, maybe axis 2)
   bool split_ = false;    ///< axis 0 has a split warp (LutView::splitAt)
+  detail::FloatAxis float_[3] = {};
+  FloatLookup floatLinear_ = nullptr;  ///< the float path of linear lookups, if it applies
+  bool floatLayer_ = false;            ///< ... and axis 0 has the root4-layer warp
 };
 
 inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {
-  LutSampler(*this).sample(x, out, filter);
+  LutSampler(*this, false).sampleDouble(x, out, filter);
 }
 
 }  // namespace kiln

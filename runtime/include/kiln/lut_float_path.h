@@ -1,0 +1,177 @@
+// kiln/lut_float_path.h: the float arithmetic of LutSampler's fast linear lookups (kiln/lut.h)
+// on the axes whose warp is linear, sqrt, root4 or root4-layer: the warp, the cell and the
+// interpolation in float, branch-free but for the choice of warp.
+//
+// Accuracy (the contract LutSampler states): the float warped coordinate t lies within a few
+// float ulps of 1 of the exact one, and a texel coordinate s = t (N - 1) within
+// kFloatNodeSnap (N - 1) of an integer is snapped onto it, so a lookup at a node reads that
+// node alone and returns the stored float bit for bit. Elsewhere the result differs from the
+// double lookup (Axis::texel, double weights) by at most
+//     sum over the axes d of 2 kFloatNodeSnap (N_d - 1) G_d  +  kFloatLerpUlps ulp(V),
+// G_d the largest difference of two neighbouring nodes along axis d, V the largest |texel|.
+// Depends on the C++ standard library only; no allocation, no exception, no global state.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+
+#include "kiln/lut_inline.h"
+
+#if defined(__SSE2__) || defined(_M_X64) || (defined(_M_IX86_FP) && _M_IX86_FP >= 2)
+#include <emmintrin.h>
+#define KILN_FLOAT_PATH_SSE2 1
+#endif
+
+namespace kiln {
+namespace detail {
+
+/// The warps the float path computes (see kiln::Warp): t = y, sqrt(y), y^(1/4), and the
+/// root4-layer warp (y^(1/4) + y (1 + c) / (y + c)) / 2 with its collapsed form at c = 0.
+enum class FloatWarp { Linear, Sqrt, Root4, Root4Layer };
+
+/// Half-width, in warped units t, of the band around a node inside which the float path
+/// snaps onto the node: 16 float ulps of 1, four times the float warps' largest error.
+constexpr float kFloatNodeSnap = 0x1p-20f;
+
+/// The largest |texel| of a table the float path takes. Beyond it (the ltc fits' entries reach
+/// 6e5) float rounding is no longer small against a table's declared lookup error, an absolute
+/// error measured where the values are small.
+constexpr float kFloatPathMaxValue = 1024.0f;
+
+/// True when each of the `count` floats at data is finite and at most kFloatPathMaxValue in
+/// magnitude (a NaN fails).
+inline bool floatPathValues(const float* data, std::size_t count) noexcept {
+  for (std::size_t i = 0; i < count; ++i)
+    if (!(std::fabs(data[i]) <= kFloatPathMaxValue)) return false;
+  return true;
+}
+
+/// Float roundings, in ulps of the largest |texel|, the float interpolation may add (three
+/// levels of two products and a sum, with margin).
+constexpr float kFloatLerpUlps = 8.0f;
+
+/// The constants of one axis for the float path: y = (x - lo) * invRange in double (then
+/// rounded to float), N - 1, the snap band in node units and the node stride in floats.
+struct FloatAxis {
+  double lo = 0.0, invRange = 1.0;
+  float last = 0.0f;  ///< N - 1
+  float snap = 0.0f;  ///< kFloatNodeSnap * (N - 1)
+  std::size_t stride = 0;
+  FloatWarp warp = FloatWarp::Linear;
+};
+
+/// The normalized coordinate y = (x - lo) / (hi - lo) of x, clamped to [0, 1] (NaN maps to 0).
+KILN_INLINE float floatNormalized(const FloatAxis& a, double x) noexcept {
+  const float y = static_cast<float>((x - a.lo) * a.invRange);
+  const float low = y > 0.0f ? y : 0.0f;  // NaN fails the comparison: 0
+  return low < 1.0f ? low : 1.0f;
+}
+
+/// The warped coordinate t in [0, 1] of y in [0, 1] (c: the root4-layer scale, >= 0; 0 is
+/// the collapsed layer, where y = 0 maps to t = 1/2 and every y > 0 to (y^(1/4) + 1) / 2).
+KILN_INLINE float floatWarped(FloatWarp warp, float y, float c) noexcept {
+  switch (warp) {
+    case FloatWarp::Linear:
+      return y;
+    case FloatWarp::Sqrt:
+      return std::sqrt(y);
+    case FloatWarp::Root4:
+      return std::sqrt(std::sqrt(y));
+    case FloatWarp::Root4Layer: {
+      const float q = y + c;
+      const float layer = q > 0.0f ? y * (1.0f + c) / q : 1.0f;  // y = c = 0: collapsed
+      return 0.5f * (std::sqrt(std::sqrt(y)) + layer);
+    }
+  }
+  return y;
+}
+
+/// One axis' part of a lookup: the offset of the cell's first node, the step to its second
+/// (0 when the fraction is 0, so a node reads itself alone) and the fraction f in [0, 1).
+struct FloatCell {
+  std::size_t offset = 0;
+  std::size_t step = 0;
+  float f = 0.0f;
+};
+
+/// The cell of warped coordinate t on axis a: s = t (N - 1), snapped onto an integer within
+/// a.snap: node index i = floor(s + a.snap) (N - 1 at the last node) and fraction s - i, or 0
+/// (and no second node) when that is at most a.snap.
+KILN_INLINE FloatCell floatCell(const FloatAxis& a, float t) noexcept {
+  const float s = t * a.last;  // t <= 1: s <= N - 1
+  const int i = static_cast<int>(s + a.snap);
+  const float f = s - static_cast<float>(i);  // exact, >= -a.snap
+  const bool inside = f > a.snap;
+  FloatCell cell;
+  cell.offset = static_cast<std::size_t>(i) * a.stride;
+  cell.step = inside ? a.stride : 0;
+  cell.f = inside ? f : 0.0f;
+  return cell;
+}
+
+/// The cell of x on axis a (c: axis 0's root4-layer scale, ignored by the other warps).
+KILN_INLINE FloatCell floatCellAt(const FloatAxis& a, double x, float c) noexcept {
+  return floatCell(a, floatWarped(a.warp, floatNormalized(a, x), c));
+}
+
+/// The root4-layer scale of kiln::layerScale in float, branch-free: r clamped to [lo, hi]
+/// (NaN maps to lo), c = max(r^2, 1e-12) for r != 0 and c = 0 at r = 0 exactly.
+KILN_INLINE float floatLayerScale(double lo, double hi, double r) noexcept {
+  const double low = r > lo ? r : lo;  // NaN fails the comparison: lo
+  const double rc = low < hi ? low : hi;
+  const float c = static_cast<float>(rc * rc);
+  const float floor = c < 1e-12f ? 1e-12f : c;
+  return rc == 0.0 ? 0.0f : floor;
+}
+
+/// The cells of 4 points on axis a: x[0], x[stride], x[2 stride], x[3 stride], layer scales
+/// c[0..3] (read by the root4-layer warp only). The same floats as floatCellAt, 4 at once
+/// (SSE2 where the compiler targets it: the same IEEE operations on 4 lanes).
+KILN_INLINE void floatCells4(const FloatAxis& a, const double* x, std::size_t stride,
+                             const float* c, FloatCell* cells) noexcept {
+#ifdef KILN_FLOAT_PATH_SSE2
+  const __m128d lo = _mm_set1_pd(a.lo), inv = _mm_set1_pd(a.invRange);
+  const __m128 y01 = _mm_cvtpd_ps(_mm_mul_pd(_mm_sub_pd(_mm_set_pd(x[stride], x[0]), lo), inv));
+  const __m128 y23 =
+      _mm_cvtpd_ps(_mm_mul_pd(_mm_sub_pd(_mm_set_pd(x[3 * stride], x[2 * stride]), lo), inv));
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  // maxps gives its second operand when the first is NaN: NaN maps to 0, as floatClamp01.
+  const __m128 y = _mm_min_ps(_mm_max_ps(_mm_movelh_ps(y01, y23), zero), one);
+  __m128 t = y;
+  if (a.warp == FloatWarp::Sqrt) {
+    t = _mm_sqrt_ps(y);
+  } else if (a.warp == FloatWarp::Root4) {
+    t = _mm_sqrt_ps(_mm_sqrt_ps(y));
+  } else if (a.warp == FloatWarp::Root4Layer) {
+    const __m128 cv = _mm_loadu_ps(c), q = _mm_add_ps(y, cv);
+    const __m128 positive = _mm_cmpgt_ps(q, zero);
+    const __m128 divisor = _mm_or_ps(_mm_and_ps(positive, q), _mm_andnot_ps(positive, one));
+    const __m128 ratio = _mm_div_ps(_mm_mul_ps(y, _mm_add_ps(one, cv)), divisor);
+    const __m128 layer = _mm_or_ps(_mm_and_ps(positive, ratio), _mm_andnot_ps(positive, one));
+    t = _mm_mul_ps(_mm_set1_ps(0.5f), _mm_add_ps(_mm_sqrt_ps(_mm_sqrt_ps(y)), layer));
+  }
+  const __m128 s = _mm_mul_ps(t, _mm_set1_ps(a.last)), snap = _mm_set1_ps(a.snap);
+  const __m128i i = _mm_cvttps_epi32(_mm_add_ps(s, snap));
+  const __m128 frac = _mm_sub_ps(s, _mm_cvtepi32_ps(i));
+  const __m128 inside = _mm_cmpgt_ps(frac, snap);
+  alignas(16) int index[4];
+  alignas(16) float f[4];
+  _mm_store_si128(reinterpret_cast<__m128i*>(index), i);
+  _mm_store_ps(f, _mm_and_ps(inside, frac));
+  const int mask = _mm_movemask_ps(inside);
+  for (int k = 0; k < 4; ++k) {
+    cells[k].offset = static_cast<std::size_t>(index[k]) * a.stride;
+    cells[k].step = (mask >> k) & 1 ? a.stride : 0;
+    cells[k].f = f[k];
+  }
+#else
+  for (int k = 0; k < 4; ++k) cells[k] = floatCellAt(a, x[k * stride], c[k]);
+#endif
+}
+
+/// a - f (a - b) = (1 - f) a + f b: a exactly where a == b (a constant stretch of a table,
+/// and every node: FloatCell::step = 0 there, so b is a itself), -0 included.
+KILN_INLINE float floatLerp(float a, float b, float f) noexcept { return a - f * (a - b); }
+
+}  // namespace detail
+}  // namespace kiln
