@@ -57,6 +57,10 @@ struct AtlasPair {
   std::string note;
 };
 
+/// x printed by std::snprintf with `fmt` (a single double conversion), for the atlas's tables,
+/// CSVs and plot labels.
+std::string AtlasNumber(double x, const char* fmt = "%.4g");
+
 /// Every pair of the atlas, one line each (baker/atlas/atlas_pairs.cpp).
 const std::vector<AtlasPair>& AtlasPairs();
 

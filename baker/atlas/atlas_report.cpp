@@ -10,12 +10,6 @@
 namespace kiln {
 namespace {
 
-std::string G(double x, const char* fmt = "%.4g") {
-  char b[64];
-  std::snprintf(b, sizeof b, fmt, x);
-  return b;
-}
-
 const std::uint8_t kWhite[3] = {230, 230, 230};
 const std::uint8_t kGrey[3] = {150, 150, 150};
 
@@ -51,6 +45,12 @@ void Fill(std::vector<std::uint8_t>& img, int width, int x0, int y0, int w, int 
 
 }  // namespace
 
+std::string AtlasNumber(double x, const char* fmt) {
+  char b[64];
+  std::snprintf(b, sizeof b, fmt, x);
+  return b;
+}
+
 std::string HeatmapPng(const std::string& heading, const std::vector<HeatmapPanel>& in, int nMu,
                        int nR, double muFirst, double muLast, double rFirst, double rLast,
                        const std::string& axis) {
@@ -78,12 +78,15 @@ std::string HeatmapPng(const std::string& heading, const std::vector<HeatmapPane
         Fill(img, width, x0 + j * cellW, top + (nR - 1 - i) * cellH, cellW, cellH, rgb);
       }
     // y axis: roughness, first node at the bottom.
-    DrawText(img, width, height, x0 - TextWidth(G(rLast)) - 4, top, G(rLast), kWhite);
-    DrawText(img, width, height, x0 - TextWidth(G(rFirst)) - 4, top + imgH - 7, G(rFirst), kWhite);
+    DrawText(img, width, height, x0 - TextWidth(AtlasNumber(rLast)) - 4, top, AtlasNumber(rLast),
+             kWhite);
+    DrawText(img, width, height, x0 - TextWidth(AtlasNumber(rFirst)) - 4, top + imgH - 7,
+             AtlasNumber(rFirst), kWhite);
     // x axis: mu.
     const int xa = top + imgH + 4;
-    DrawText(img, width, height, x0, xa, G(muFirst), kWhite);
-    DrawText(img, width, height, x0 + imgW - TextWidth(G(muLast)), xa, G(muLast), kWhite);
+    DrawText(img, width, height, x0, xa, AtlasNumber(muFirst), kWhite);
+    DrawText(img, width, height, x0 + imgW - TextWidth(AtlasNumber(muLast)), xa,
+             AtlasNumber(muLast), kWhite);
     DrawText(img, width, height, x0 + imgW / 2 - TextWidth("mu (view)") / 2, xa, "mu (view)",
              kGrey);
     // Colour bar with its ends.
@@ -93,7 +96,7 @@ std::string HeatmapPng(const std::string& heading, const std::vector<HeatmapPane
       viridis(imgW > 1 ? double(x) / (imgW - 1) : 0.5, rgb);
       Fill(img, width, x0 + x, yb, 1, 10, rgb);
     }
-    std::string lo = G(p.lo, "%.3g"), hi = G(p.hi, "%.3g");
+    std::string lo = AtlasNumber(p.lo, "%.3g"), hi = AtlasNumber(p.hi, "%.3g");
     DrawText(img, width, height, x0, yb + 14, lo, kWhite);
     DrawText(img, width, height, x0 + imgW - TextWidth(hi), yb + 14, hi, kWhite);
     const std::string unit = p.log10 ? "log10 " + in[k].unit : in[k].unit;
@@ -135,7 +138,7 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
        " roughness values (lo..hi, ends included), at rho = 1:\n\n";
   s += "- `dE = E_cheap - E_ref`, the directional albedos by kiln's integrators: the bake's fixed "
        "rule where the table kind has one, adaptive quadrature to " +
-       G(opt.tol) + " absolute otherwise (the method of each side is listed below);\n";
+       AtlasNumber(opt.tol) + " absolute otherwise (the method of each side is listed below);\n";
   s += "- `max_df = max over wi of |f_cheap(wo, wi) - f_ref(wo, wi)| mu_i`: cosine-weighted (the "
        "radiance difference under a unit directional light), so that the 1/mu blow-ups of some "
        "models at a grazing light stay comparable. Found by a search: a " +
@@ -143,7 +146,7 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
        " grid in (theta_i, phi_i) over [0, pi/2] x [0, pi] (the models are isotropic) plus the "
        "mirror direction, rings around it and the rows theta_i = theta_o and phi_i = pi/2, then "
        "a pattern search (axis and diagonal steps) down to " +
-       G(opt.search.minStep) + " rad from the " + std::to_string(opt.search.starts) +
+       AtlasNumber(opt.search.minStep) + " rad from the " + std::to_string(opt.search.starts) +
        " best points. `argmax_mu_i`, `argmax_phi_i` give where (phi_i = 0 on the view's side, "
        "pi the mirror side).\n\n";
   s += "Per pair: `<name>.csv` (columns mu, roughness, E_ref, E_cheap, dE, max_df, argmax_mu_i, "
@@ -171,11 +174,12 @@ std::string AtlasReadme(const std::vector<AtlasResult>& results, const AtlasOpti
       if (c.maxDf > wF->maxDf) wF = &c;
     }
     s += "| [" + r.pair.name + "](" + r.pair.name + ".png) | " + side(r.pair.cheap) + " | " +
-         side(r.pair.ref) + " | " + r.pair.axis + " in [" + G(r.pair.lo) + ", " + G(r.pair.hi) +
-         "] | " + G(std::abs(wE->dE), "%.3g") + " | (" + G(wE->mu, "%.3g") + ", " +
-         G(wE->roughness, "%.3g") + ") | " + G(wF->maxDf, "%.3g") + " | (" + G(wF->mu, "%.3g") +
-         ", " + G(wF->roughness, "%.3g") + ") | (" + G(wF->argMu, "%.3g") + ", " +
-         G(wF->argPhi, "%.3g") + ") |\n";
+         side(r.pair.ref) + " | " + r.pair.axis + " in [" + AtlasNumber(r.pair.lo) + ", " +
+         AtlasNumber(r.pair.hi) + "] | " + AtlasNumber(std::abs(wE->dE), "%.3g") + " | (" +
+         AtlasNumber(wE->mu, "%.3g") + ", " + AtlasNumber(wE->roughness, "%.3g") + ") | " +
+         AtlasNumber(wF->maxDf, "%.3g") + " | (" + AtlasNumber(wF->mu, "%.3g") + ", " +
+         AtlasNumber(wF->roughness, "%.3g") + ") | (" + AtlasNumber(wF->argMu, "%.3g") + ", " +
+         AtlasNumber(wF->argPhi, "%.3g") + ") |\n";
   }
   s += "\n## Pairs, mappings and methods\n\n";
   for (const AtlasResult& r : results) {

@@ -17,12 +17,6 @@
 namespace kiln {
 namespace {
 
-std::string G(double x, const char* fmt = "%.3g") {
-  char b[64];
-  std::snprintf(b, sizeof b, fmt, x);
-  return b;
-}
-
 /// The sheen tables: Filament and three.js evaluate the Charlie lobe with Neubelt's visibility
 /// (`charlie-dfg`); the glTF sheen extension with Estevez and Kulla's Smith term
 /// (`charlie-smith-dfg`).
@@ -136,14 +130,14 @@ std::string TableApproximationCsv(const TableApproximationResult& r) {
   out += ",max_abs_err\n";
   const size_t nc = r.channels.size();
   for (size_t k = 0; k < r.mu.size(); ++k) {
-    out += G(r.mu[k], "%.9g") + "," + G(r.roughness[k], "%.9g");
+    out += AtlasNumber(r.mu[k], "%.9g") + "," + AtlasNumber(r.roughness[k], "%.9g");
     double worst = 0;
-    for (size_t c = 0; c < nc; ++c) out += "," + G(r.exact[k * nc + c], "%.9g");
+    for (size_t c = 0; c < nc; ++c) out += "," + AtlasNumber(r.exact[k * nc + c], "%.9g");
     for (size_t c = 0; c < nc; ++c) {
-      out += "," + G(r.approximate[k * nc + c], "%.9g");
+      out += "," + AtlasNumber(r.approximate[k * nc + c], "%.9g");
       worst = std::max(worst, std::abs(r.approximate[k * nc + c] - r.exact[k * nc + c]));
     }
-    out += "," + G(worst, "%.9g") + "\n";
+    out += "," + AtlasNumber(worst, "%.9g") + "\n";
   }
   return out;
 }
@@ -205,16 +199,17 @@ std::string TableApproximationsReadme(const std::vector<TableApproximationResult
        "jump | median | max at (mu, r) | max, mu >= 1/4 | at (mu, r) |\n";
   s += "|---|---|---|---|---|---|---|---|---|---|\n";
   auto at = [](const FitErrorReport& e) {
-    return e.where.size() == 2 ? "(" + G(e.where[0], "%.3g") + ", " + G(e.where[1], "%.3g") + ")"
+    return e.where.size() == 2 ? "(" + AtlasNumber(e.where[0], "%.3g") + ", " +
+                                     AtlasNumber(e.where[1], "%.3g") + ")"
                                : std::string();
   };
   for (const TableApproximationResult& r : results) {
     const FitErrorReport& e = r.report;
     s += "| [" + r.approx.name + "](" + r.approx.name + ".png) `" + r.approx.label + "` | " +
          r.approx.source + " | `" + r.approx.table + "` | " + FitWarpName(r.approx.muWarp) + " x " +
-         FitWarpName(r.approx.roughnessWarp) + " | " + G(e.max, "%.3f") + " | " +
-         G(e.maxOffJump, "%.3f") + " | " + G(e.median, "%.3g") + " | " + at(e) + " | " +
-         G(r.offGrazing.max, "%.3f") + " | " + at(r.offGrazing) + " |\n";
+         FitWarpName(r.approx.roughnessWarp) + " | " + AtlasNumber(e.max, "%.3f") + " | " +
+         AtlasNumber(e.maxOffJump, "%.3f") + " | " + AtlasNumber(e.median, "%.3g") + " | " + at(e) +
+         " | " + AtlasNumber(r.offGrazing.max, "%.3f") + " | " + at(r.offGrazing) + " |\n";
   }
   s += "\n## What is compared\n\n";
   for (const TableApproximationResult& r : results) {
