@@ -768,6 +768,7 @@ class LutSampler {
       floatLinear_ = floatLinearFor(view.dims, view.channels);
       if (floatLayer_ && float_[1].warp == detail::FloatWarp::Sqrt) {
         floatLinear_ = floatLayerSqrtFor(view.dims, view.channels);
+        floatPair_ = detail::floatAxisPair(float_[0], float_[1]);
         floatLayerSqrt2_ = view.dims == 2 && view.channels == 2;
       }
     }
@@ -926,7 +927,7 @@ class LutSampler {
   KILN_INLINE void floatLayerSqrt(const double* x, float* out) const noexcept {
     const float c = detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]);
     detail::FloatCell k0, k1;
-    detail::floatCellsLayerSqrt(float_[0], float_[1], x, c, k0, k1);
+    detail::floatCellsLayerSqrt(floatPair_, x, c, k0, k1);
     const detail::FloatCell k2 =
         D >= 3 ? detail::floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
     floatTaps<D, C>(k0, k1, k2, out);
@@ -1238,6 +1239,7 @@ class LutSampler {
   FloatLookup floatLinear_ = nullptr;  ///< the float path of linear lookups, if it applies
   bool floatLayer_ = false;            ///< ... and axis 0 has the root4-layer warp
   bool floatLayerSqrt2_ = false;       ///< ... and axis 1 sqrt, 2 axes, 2 channels
+  detail::FloatAxisPair floatPair_{};  ///< axes 0 and 1 for floatLayerSqrt
 };
 
 inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {

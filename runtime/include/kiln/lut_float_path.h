@@ -169,15 +169,39 @@ KILN_INLINE void floatCells4(const FloatAxis& a, const double* x, std::size_t st
 #endif
 }
 
+/// Axes 0 and 1 of a table for floatCellsLayerSqrt: their FloatAxis and their constants
+/// packed in lanes (lane d: axis d), so that a lookup loads each pair at once.
+struct FloatAxisPair {
+  alignas(16) double lo[2] = {0.0, 0.0};
+  alignas(16) double invRange[2] = {1.0, 1.0};
+  alignas(16) float last[4] = {};
+  alignas(16) float snap[4] = {};
+  FloatAxis axis[2] = {};
+};
+
+/// The FloatAxisPair of axes a0 and a1.
+inline FloatAxisPair floatAxisPair(const FloatAxis& a0, const FloatAxis& a1) noexcept {
+  FloatAxisPair p;
+  p.axis[0] = a0;
+  p.axis[1] = a1;
+  for (int d = 0; d < 2; ++d) {
+    p.lo[d] = p.axis[d].lo;
+    p.invRange[d] = p.axis[d].invRange;
+    p.last[d] = p.axis[d].last;
+    p.snap[d] = p.axis[d].snap;
+  }
+  return p;
+}
+
 /// The cells of one point on axes 0 and 1 when axis 0 has the root4-layer warp and axis 1 the
 /// sqrt warp (the catalogue's common form: mu, sqrt roughness), c the layer scale at the point:
 /// the same floats as floatCellAt on each axis. With SSE2 both normalizations, the square
 /// roots of y0 and y1 and both cells share 2 lanes, branch-free (3 square roots in 2 ops).
-KILN_INLINE void floatCellsLayerSqrt(const FloatAxis& a0, const FloatAxis& a1, const double* x,
-                                     float c, FloatCell& k0, FloatCell& k1) noexcept {
+KILN_INLINE void floatCellsLayerSqrt(const FloatAxisPair& a, const double* x, float c,
+                                     FloatCell& k0, FloatCell& k1) noexcept {
 #ifdef KILN_FLOAT_PATH_SSE2
-  const __m128d yd = _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(x), _mm_set_pd(a1.lo, a0.lo)),
-                                _mm_set_pd(a1.invRange, a0.invRange));
+  const __m128d yd =
+      _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(x), _mm_load_pd(a.lo)), _mm_load_pd(a.invRange));
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
   // maxps gives its second operand when the first is NaN: NaN maps to 0, as floatNormalized.
   const __m128 y = _mm_min_ps(_mm_max_ps(_mm_cvtpd_ps(yd), zero), one);
@@ -186,22 +210,22 @@ KILN_INLINE void floatCellsLayerSqrt(const FloatAxis& a0, const FloatAxis& a1, c
   const float layer = q > 0.0f ? y0 * (1.0f + c) / q : 1.0f;  // as floatWarped
   const float t0 = 0.5f * (_mm_cvtss_f32(_mm_sqrt_ss(root)) + layer);
   const __m128 t = _mm_move_ss(root, _mm_set_ss(t0));
-  const __m128 s = _mm_mul_ps(t, _mm_set_ps(0.0f, 0.0f, a1.last, a0.last));
-  const __m128 snap = _mm_set_ps(0.0f, 0.0f, a1.snap, a0.snap);
+  const __m128 s = _mm_mul_ps(t, _mm_load_ps(a.last)), snap = _mm_load_ps(a.snap);
   const __m128i i = _mm_cvttps_epi32(_mm_add_ps(s, snap));
   const __m128 frac = _mm_sub_ps(s, _mm_cvtepi32_ps(i));
   const __m128 inside = _mm_cmpgt_ps(frac, snap);
   const __m128 f = _mm_and_ps(inside, frac);
   const int mask = _mm_movemask_ps(inside);
-  k0.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(i)) * a0.stride;
-  k1.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_srli_si128(i, 4))) * a1.stride;
-  k0.step = (mask & 1) ? a0.stride : 0;
-  k1.step = (mask & 2) ? a1.stride : 0;
+  const std::size_t stride0 = a.axis[0].stride, stride1 = a.axis[1].stride;
+  k0.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(i)) * stride0;
+  k1.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_srli_si128(i, 4))) * stride1;
+  k0.step = (mask & 1) ? stride0 : 0;
+  k1.step = (mask & 2) ? stride1 : 0;
   k0.f = _mm_cvtss_f32(f);
   k1.f = _mm_cvtss_f32(_mm_shuffle_ps(f, f, 1));
 #else
-  k0 = floatCellAt(a0, x[0], c);
-  k1 = floatCellAt(a1, x[1], c);
+  k0 = floatCellAt(a.axis[0], x[0], c);
+  k1 = floatCellAt(a.axis[1], x[1], c);
 #endif
 }
 
