@@ -933,10 +933,11 @@ class LutSampler {
     floatTaps<D, C>(k0, k1, k2, out);
   }
 
-  /// The float path's batch call: on a table with a root4-layer axis 0, 4 points at a time,
-  /// their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where available), then
-  /// their taps; the other points (and every point of other tables) one by one. The same
-  /// floats as floatLinear for every point.
+  /// The float path's batch call: on a table with a root4-layer axis 0 and a sqrt axis 1, one
+  /// point after the other through floatLayerSqrt; on another table with a root4-layer axis 0,
+  /// 4 points at a time, their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where
+  /// available), then their taps; the other points (and every point of other tables) one by
+  /// one. The same floats as floatLinear for every point.
   template <int D, int C>
   void floatBatch(const double* xs, std::size_t count, float* out) const noexcept {
     const std::size_t nc = static_cast<std::size_t>(C > 0 ? C : view_.channels);
