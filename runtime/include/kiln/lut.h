@@ -766,6 +766,11 @@ class LutSampler {
         detail::floatPathValues(view.data, view.valueCount())) {
       floatLayer_ = coupled_;
       floatLinear_ = floatLinearFor(view.dims, view.channels);
+      if (floatLayer_ && float_[1].warp == detail::FloatWarp::Sqrt) {
+        floatLinear_ = floatLayerSqrtFor(view.dims, view.channels);
+        floatPair_ = detail::floatAxisPair(float_[0], float_[1]);
+        floatLayerSqrt2_ = view.dims == 2 && view.channels == 2;
+      }
     }
   }
 
@@ -785,6 +790,10 @@ class LutSampler {
   /// units; each is clamped to its axis, NaN maps to lo) and writes view().channels floats to
   /// out: LutView::sample's contract and results. Zeros when the sampler is not valid().
   void sample(const double* x, float* out, Filter filter = Filter::Linear) const noexcept {
+    if (floatLayerSqrt2_ && filter == Filter::Linear) {
+      floatLayerSqrt<2, 2>(x, out);  // the catalogue's common form, inlined
+      return;
+    }
     if (floatLinear_ != nullptr && filter == Filter::Linear) {
       (this->*floatLinear_)(x, out);
       return;
@@ -875,6 +884,10 @@ class LutSampler {
     const float* p = view_.data + (k0.offset + k1.offset + k2.offset);
     const float* q = p + k2.step;
     const float f0 = k0.f, f1 = k1.f, f2 = k2.f;
+    if (C == 2) {
+      detail::floatTaps2<D>(p, s0, s1, k2.step, f0, f1, f2, out);
+      return;
+    }
     const int nc = C > 0 ? C : view_.channels;
     for (int ch = 0; ch < nc; ++ch) {
       float v = floatLerp(p[ch], p[s0 + ch], f0);
@@ -907,14 +920,32 @@ class LutSampler {
     floatTaps<D, C>(k0, k1, k2, out);
   }
 
-  /// The float path's batch call: on a table with a root4-layer axis 0, 4 points at a time,
-  /// their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where available), then
-  /// their taps; the other points (and every point of other tables) one by one. The same
-  /// floats as floatLinear for every point.
+  /// floatLinear<D, C> on a table whose axis 0 has the root4-layer warp and axis 1 the sqrt
+  /// warp (the catalogue's common form), the same floats: the cells of axes 0 and 1 at once
+  /// (detail::floatCellsLayerSqrt), no choice of warp.
+  template <int D, int C>
+  KILN_INLINE void floatLayerSqrt(const double* x, float* out) const noexcept {
+    const float c = detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]);
+    detail::FloatCell k0, k1;
+    detail::floatCellsLayerSqrt(floatPair_, x, c, k0, k1);
+    const detail::FloatCell k2 =
+        D >= 3 ? detail::floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
+    floatTaps<D, C>(k0, k1, k2, out);
+  }
+
+  /// The float path's batch call: on a table with a root4-layer axis 0 and a sqrt axis 1, one
+  /// point after the other through floatLayerSqrt; on another table with a root4-layer axis 0,
+  /// 4 points at a time, their cells axis by axis (detail::floatCells4: 4 lanes of SSE2 where
+  /// available), then their taps; the other points (and every point of other tables) one by
+  /// one. The same floats as floatLinear for every point.
   template <int D, int C>
   void floatBatch(const double* xs, std::size_t count, float* out) const noexcept {
     const std::size_t nc = static_cast<std::size_t>(C > 0 ? C : view_.channels);
     std::size_t k = 0;
+    if (floatLayer_ && float_[1].warp == detail::FloatWarp::Sqrt) {
+      for (; k < count; ++k) floatLayerSqrt<D, C>(xs + k * D, out + k * nc);
+      return;
+    }
     // Without a root4-layer axis the warps are cheap: one point after the other is faster.
     for (; floatLayer_ && k + 4 <= count; k += 4) {
       const double* x = xs + k * D;
@@ -942,6 +973,16 @@ class LutSampler {
         {&LutSampler::floatLinear<3, 0>, &LutSampler::floatLinear<3, 1>,
          &LutSampler::floatLinear<3, 2>}};
     return kByShape[dims - 1][channels <= 2 ? channels : 0];
+  }
+
+  /// floatLayerSqrt<D, C> for a table of `dims` (2 or 3) axes and `channels` channels.
+  static FloatLookup floatLayerSqrtFor(int dims, int channels) noexcept {
+    static constexpr FloatLookup kByShape[2][3] = {
+        {&LutSampler::floatLayerSqrt<2, 0>, &LutSampler::floatLayerSqrt<2, 1>,
+         &LutSampler::floatLayerSqrt<2, 2>},
+        {&LutSampler::floatLayerSqrt<3, 0>, &LutSampler::floatLayerSqrt<3, 1>,
+         &LutSampler::floatLayerSqrt<3, 2>}};
+    return kByShape[dims - 2][channels <= 2 ? channels : 0];
   }
 
   /// A lookup on a valid sampler: the float path where it applies and `floatPath` allows it,
@@ -1198,6 +1239,8 @@ class LutSampler {
   detail::FloatAxis float_[3] = {};
   FloatLookup floatLinear_ = nullptr;  ///< the float path of linear lookups, if it applies
   bool floatLayer_ = false;            ///< ... and axis 0 has the root4-layer warp
+  bool floatLayerSqrt2_ = false;       ///< ... and axis 1 sqrt, 2 axes, 2 channels
+  detail::FloatAxisPair floatPair_{};  ///< axes 0 and 1 for floatLayerSqrt
 };
 
 inline void LutView::sample(const double* x, float* out, Filter filter) const noexcept {

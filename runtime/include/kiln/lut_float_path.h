@@ -169,9 +169,114 @@ KILN_INLINE void floatCells4(const FloatAxis& a, const double* x, std::size_t st
 #endif
 }
 
+/// Axes 0 and 1 of a table for floatCellsLayerSqrt: their FloatAxis and their constants
+/// packed in lanes (lane d: axis d), so that a lookup loads each pair at once.
+struct FloatAxisPair {
+  alignas(16) double lo[2] = {0.0, 0.0};
+  alignas(16) double invRange[2] = {1.0, 1.0};
+  alignas(16) float last[4] = {};
+  alignas(16) float snap[4] = {};
+  FloatAxis axis[2] = {};
+};
+
+/// The FloatAxisPair of axes a0 and a1.
+inline FloatAxisPair floatAxisPair(const FloatAxis& a0, const FloatAxis& a1) noexcept {
+  FloatAxisPair p;
+  p.axis[0] = a0;
+  p.axis[1] = a1;
+  for (int d = 0; d < 2; ++d) {
+    p.lo[d] = p.axis[d].lo;
+    p.invRange[d] = p.axis[d].invRange;
+    p.last[d] = p.axis[d].last;
+    p.snap[d] = p.axis[d].snap;
+  }
+  return p;
+}
+
+/// The cells of one point on axes 0 and 1 when axis 0 has the root4-layer warp and axis 1 the
+/// sqrt warp (the catalogue's common form: mu, sqrt roughness), c the layer scale at the point:
+/// the same floats as floatCellAt on each axis. With SSE2 both normalizations, the square
+/// roots of y0 and y1 and both cells share 2 lanes, branch-free (3 square roots in 2 ops).
+KILN_INLINE void floatCellsLayerSqrt(const FloatAxisPair& a, const double* x, float c,
+                                     FloatCell& k0, FloatCell& k1) noexcept {
+#ifdef KILN_FLOAT_PATH_SSE2
+  const __m128d yd =
+      _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(x), _mm_load_pd(a.lo)), _mm_load_pd(a.invRange));
+  const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
+  // maxps gives its second operand when the first is NaN: NaN maps to 0, as floatNormalized.
+  const __m128 y = _mm_min_ps(_mm_max_ps(_mm_cvtpd_ps(yd), zero), one);
+  const __m128 root = _mm_sqrt_ps(y);  // lane 0: sqrt(y0), lane 1: t1 = sqrt(y1)
+  const float y0 = _mm_cvtss_f32(y), q = y0 + c;
+  const float layer = q > 0.0f ? y0 * (1.0f + c) / q : 1.0f;  // as floatWarped
+  const float t0 = 0.5f * (_mm_cvtss_f32(_mm_sqrt_ss(root)) + layer);
+  const __m128 t = _mm_move_ss(root, _mm_set_ss(t0));
+  const __m128 s = _mm_mul_ps(t, _mm_load_ps(a.last)), snap = _mm_load_ps(a.snap);
+  const __m128i i = _mm_cvttps_epi32(_mm_add_ps(s, snap));
+  const __m128 frac = _mm_sub_ps(s, _mm_cvtepi32_ps(i));
+  const __m128 inside = _mm_cmpgt_ps(frac, snap);
+  const __m128 f = _mm_and_ps(inside, frac);
+  const int mask = _mm_movemask_ps(inside);
+  const std::size_t stride0 = a.axis[0].stride, stride1 = a.axis[1].stride;
+  k0.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(i)) * stride0;
+  k1.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_srli_si128(i, 4))) * stride1;
+  k0.step = (mask & 1) ? stride0 : 0;
+  k1.step = (mask & 2) ? stride1 : 0;
+  k0.f = _mm_cvtss_f32(f);
+  k1.f = _mm_cvtss_f32(_mm_shuffle_ps(f, f, 1));
+#else
+  k0 = floatCellAt(a.axis[0], x[0], c);
+  k1 = floatCellAt(a.axis[1], x[1], c);
+#endif
+}
+
 /// a - f (a - b) = (1 - f) a + f b: a exactly where a == b (a constant stretch of a table,
 /// and every node: FloatCell::step = 0 there, so b is a itself), -0 included.
 KILN_INLINE float floatLerp(float a, float b, float f) noexcept { return a - f * (a - b); }
+
+#ifdef KILN_FLOAT_PATH_SSE2
+/// The 2 floats at p (channels 0 and 1 of a texel) in lanes 0 and 1.
+KILN_INLINE __m128 floatLoad2(const float* p) noexcept {
+  return _mm_castpd_ps(_mm_load_sd(reinterpret_cast<const double*>(p)));
+}
+
+/// floatLerp on each lane: a - f (a - b), the same IEEE operations.
+KILN_INLINE __m128 floatLerp4(__m128 a, __m128 b, __m128 f) noexcept {
+  return _mm_sub_ps(a, _mm_mul_ps(f, _mm_sub_ps(a, b)));
+}
+#endif
+
+/// The interpolation of 2 channels (the texels at p, nodes s0 apart on axis 0, s1 on axis 1,
+/// s2 on axis 2; D axes) with fractions f0, f1, f2 to out[0..1]: floatLerp along axis 0, then
+/// 1, then 2, both channels at once on SSE2 lanes (the same floats as one channel after the
+/// other).
+template <int D>
+KILN_INLINE void floatTaps2(const float* p, std::size_t s0, std::size_t s1, std::size_t s2,
+                            float f0, float f1, float f2, float* out) noexcept {
+#ifdef KILN_FLOAT_PATH_SSE2
+  const __m128 g0 = _mm_set1_ps(f0), g1 = _mm_set1_ps(f1);
+  __m128 v = floatLerp4(floatLoad2(p), floatLoad2(p + s0), g0);
+  if (D >= 2) v = floatLerp4(v, floatLerp4(floatLoad2(p + s1), floatLoad2(p + s1 + s0), g0), g1);
+  if (D >= 3) {
+    const float* q = p + s2;
+    const __m128 w = floatLerp4(floatLerp4(floatLoad2(q), floatLoad2(q + s0), g0),
+                                floatLerp4(floatLoad2(q + s1), floatLoad2(q + s1 + s0), g0), g1);
+    v = floatLerp4(v, w, _mm_set1_ps(f2));
+  }
+  _mm_store_sd(reinterpret_cast<double*>(out), _mm_castps_pd(v));
+#else
+  for (int ch = 0; ch < 2; ++ch) {
+    float v = floatLerp(p[ch], p[s0 + ch], f0);
+    if (D >= 2) v = floatLerp(v, floatLerp(p[s1 + ch], p[s1 + s0 + ch], f0), f1);
+    if (D >= 3) {
+      const float* q = p + s2;
+      const float w = floatLerp(floatLerp(q[ch], q[s0 + ch], f0),
+                                floatLerp(q[s1 + ch], q[s1 + s0 + ch], f0), f1);
+      v = floatLerp(v, w, f2);
+    }
+    out[ch] = v;
+  }
+#endif
+}
 
 }  // namespace detail
 }  // namespace kiln
