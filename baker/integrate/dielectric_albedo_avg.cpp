@@ -38,6 +38,7 @@
 
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_column_memo.h"
+#include "baker/integrate/dielectric_kernel.h"
 #include "baker/integrate/fixed_rule_average.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
@@ -245,15 +246,6 @@ double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
   return sum;
 }
 
-DielectricRuleOptions SearchDielectricRuleOptions() {
-  DielectricRuleOptions opt = TunedDielectricRuleOptions();
-  // The tuned {24, 12, 4, 2} outer and {12, 10, 6, 6} inner nodes per weight class.
-  const int outer[4] = {12, 8, 4, 2}, inner[4] = {10, 10, 6, 6};
-  std::copy(outer, outer + 4, opt.outerNodes);
-  std::copy(inner, inner + 4, opt.innerNodes);
-  return opt;
-}
-
 double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals) {
   const double etaIn = 1 / eta;
   AveragePointMemo::Value v;
@@ -274,7 +266,7 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
     return e;
   }
   if (1 / eta >= kDielectricTableEtaMin)  // the exit tables' rule
-    return {FixedRuleDielectricExitAverageR(alpha, eta, nodes, evals),
+    return {KernelDielectricExitAverageR(alpha, eta, evals),
             FixedRuleDielectricExitAverageT(alpha, eta, nodes, evals)};
   const GaussRule01& g = CachedGaussLegendre01(nodes);
   std::array<double, 2> sum{0, 0};

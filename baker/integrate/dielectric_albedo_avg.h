@@ -50,15 +50,16 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 void PrepareDielectricAverageColumn(double alpha, const double* etas, int n);
 
 /// The exit side (1 / eta >= kDielectricTableEtaMin): E_avg_R by the mu rule of E_R alone
-/// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures), and E_avg_T by
-/// reciprocity from the entering side, E_avg_T(eta) = eta^2 E_avg_T(1 / eta) (the importance
-/// form's transpose, models/dielectric_bsdf.h: fhat_t(wi, wo) = fhat_t(wo, wi) / e^2), the
-/// entering column's rule at 1 / eta. FixedRuleDielectricAlbedoAverage gives both there.
+/// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures; the bake
+/// takes the kernel route instead, dielectric_kernel.h, and the tests hold the two together),
+/// and E_avg_T by reciprocity from the entering side, E_avg_T(eta) = eta^2 E_avg_T(1 / eta) (the
+/// importance form's transpose, models/dielectric_bsdf.h: fhat_t(wi, wo) = fhat_t(wo, wi) /
+/// e^2), the entering column's rule at 1 / eta. FixedRuleDielectricAlbedoAverage gives both there
+/// (E_avg_R by KernelDielectricExitAverageR).
 double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals);
 double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals);
-/// The exit side's E_avg_R with E_R by the node counts `opt` (FixedRuleDielectricReflectance):
-/// the lookup-error search's cheaper form (kSearchDielectricRuleOptions, nodes
-/// kSearchDielectricAverageNodes).
+/// The exit side's E_avg_R by the mu rule with E_R by the node counts `opt`
+/// (FixedRuleDielectricReflectance).
 double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
                                        const DielectricRuleOptions& opt, long long* evals);
 
@@ -73,18 +74,6 @@ std::array<double, 2> SmoothDielectricAlbedoAverage(double eta);
 
 /// Gauss nodes per mu panel of the bake's rule.
 constexpr int kDielectricAverageNodes = 10;
-
-/// The lookup-error search's form of the exit side's E_avg_R (QuantityInfo::searchRule; each
-/// point of the search is a whole mu rule of E_R walks): kSearchDielectricAverageNodes per mu
-/// panel over E_R by SearchDielectricRuleOptions(), about 0.37 of the bake rule's evaluations,
-/// within kSearchRuleBound (fixed_rule_microfacet.h) of the bake's rule
-/// (tests/integrate_dielectric_search_columns.cpp holds it there over a held-out grid).
-constexpr int kSearchDielectricAverageNodes = 7;
-/// The E_R node counts of that form: the bulk's outer and inner panels take fewer nodes.
-DielectricRuleOptions SearchDielectricRuleOptions();
-/// Its evaluations are charged this many times each (the bake rule's evaluations over its own,
-/// measured 2.7: the search's budget buys the points it bought with the bake's rule).
-constexpr double kSearchDielectricAverageCharge = 2.7;
 
 /// The error the fixed rule adds to that of the E it averages (tests hold it to adaptive).
 constexpr double kDielectricAverageBound = 2e-7;

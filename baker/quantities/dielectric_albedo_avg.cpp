@@ -14,6 +14,7 @@
 
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
+#include "baker/integrate/dielectric_kernel.h"
 #include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/math/quadrature.h"
 #include "baker/quantities/common.h"
@@ -96,28 +97,11 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
   const bool transmit = KindOf(spec.quantity).transmit;
   // The exit side, one channel each: E_avg_R by its own rule, E_avg_T by reciprocity.
   if (1 / eta >= kDielectricTableEtaMin && eta < 1)
-    return {
-        transmit
-            ? FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, &stats.evals)
-            : FixedRuleDielectricExitAverageR(alpha, eta, kDielectricAverageNodes, &stats.evals)};
+    return {transmit
+                ? FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, &stats.evals)
+                : KernelDielectricExitAverageR(alpha, eta, &stats.evals)};
   std::array<double, 2> e = FixedRuleDielectricAlbedoAverage(alpha, eta, &stats.evals);
   return {e[transmit ? 1 : 0]};
-}
-
-/// The lookup-error search's form of the exit side's E_avg_R (QuantityInfo::searchRule): the mu
-/// rule at kSearchDielectricAverageNodes over E_R by SearchDielectricRuleOptions(), within
-/// kSearchRuleBound of FixedRule, its evaluations charged at the bake rule's rate.
-std::vector<double> SearchRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
-  CheckModel(spec);
-  const auto [r, eta] = PointOf(spec, x);
-  if (!(1 / eta >= kDielectricTableEtaMin && eta < 1)) return FixedRule(spec, x, stats);
-  const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
-  long long evals = 0;
-  const double e = FixedRuleDielectricExitAverageR(alpha, eta, kSearchDielectricAverageNodes,
-                                                   SearchDielectricRuleOptions(), &evals);
-  stats.evals += std::llround(static_cast<double>(evals) * kSearchDielectricAverageCharge);
-  stats.errorEstimate = kSearchRuleBound;
-  return {e};
 }
 
 /// The entering side's texels by columns of eta (quantities/dielectric_columns.h): the mu
@@ -184,7 +168,12 @@ void PrepareSearch(const TableSpec& spec, const double* points, size_t n) {
                     });
 }
 
-std::string FixedRuleMethod(const TableSpec&) {
+std::string FixedRuleMethod(const TableSpec& spec) {
+  if (KindOf(spec.quantity).exit && !KindOf(spec.quantity).transmit)
+    return "int_0^1 F(c, eta) c K_alpha(c) dc with K_alpha(c) independent of eta by a fixed "
+           "Gauss rule over the visible normals, once per roughness: Gauss on geometric panels "
+           "in c below 0.4, Chebyshev interpolation in sqrt(1 - c) above, panels graded in "
+           "sqrt|c - c_crit| (integrate/dielectric_kernel.cpp)";
   return "fixed Gauss rule over mu (" + std::to_string(kDielectricAverageNodes) +
          " nodes per panel, panels graded from the GGX layer at mu = 0, in sqrt(1 - mu) towards "
          "mu = 1 and, eta < 1, in sqrt|mu - mu_c| about the critical cosine and sqrt|mu - eta| "
@@ -267,12 +256,12 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
   // 4: mu panels at mu = eta and towards 1, 10 nodes (integrate/dielectric_albedo_avg.cpp); 5,
   // entering: E by the eta columns' rule (integrate/dielectric_albedo.cpp).
   // 6, exit: E_avg_R by E_R's own panels, E_avg_T by reciprocity from the entering side.
-  q.fixedRuleVersion = KindOf(Q).exit ? "6" : "5";
-  if (!KindOf(Q).exit || KindOf(Q).transmit) {
+  // 7, exit E_avg_R: by one kernel K_alpha(c) per roughness (integrate/dielectric_kernel.cpp).
+  const bool kernel = KindOf(Q).exit && !KindOf(Q).transmit;
+  q.fixedRuleVersion = kernel ? "7" : KindOf(Q).exit ? "6" : "5";
+  if (!kernel) {
     q.bakeTable = BakeTable;
     q.prepareSearch = PrepareSearch;
-  } else {
-    q.searchRule = SearchRule;  // the exit side's E_avg_R: one mu rule of E_R walks a point
   }
   q.evaluate = Evaluate;
   q.verifyReference = VerifyReference;
