@@ -57,7 +57,8 @@
 // within 2.7e-7 of adaptive, as before.
 // The exit side (eta < 1.1) keeps the per-point walk, with the same integrand in fewer
 // operations (FastView: F and mu_t from one g, each ray's masking folded into one division) and
-// every walk's cos phi_m by a polynomial (dielectric_walk.h, CosHalfTurn). The exit averages take
+// every walk's cos phi_m by a polynomial (dielectric_walk.h, CosHalfTurn). The exit averages'
+// mu rule (the cross-check of their kernel route, dielectric_kernel.h) takes
 // E_R alone on the reflected ray's panels (reflectOnly: no panels at the refracted ray's horizon
 // and its masking layer; 4,450 evaluations per point against 7,580, within 3.9e-7 of adaptive on
 // the exit held-out grid, tests/integrate_dielectric_reflectance.cpp) and E_avg_T by reciprocity

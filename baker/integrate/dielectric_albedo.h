@@ -68,8 +68,9 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
 
 /// E_R alone by the fixed rule's node counts on the panels of the reflected ray's structures
 /// only (the horizon, its masking layer, the critical cosine and the Fresnel layer: none at the
-/// refracted ray's): the exit averages' E_R (integrate/dielectric_albedo_avg.cpp), whose E_T
-/// follows from the entering side by reciprocity. evals (optional) accumulates.
+/// refracted ray's): the mu rule of the exit averages' E_R (integrate/dielectric_albedo_avg.cpp;
+/// the bake takes one kernel per roughness instead, dielectric_kernel.h, and the tests hold the
+/// two together). evals (optional) accumulates.
 double FixedRuleDielectricReflectance(double mu, double alpha, double eta,
                                       const DielectricRuleOptions& opt, long long* evals = nullptr);
 

@@ -15,7 +15,6 @@
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_albedo_avg.h"
 #include "baker/integrate/dielectric_kernel.h"
-#include "baker/integrate/fixed_rule_microfacet.h"
 #include "baker/math/quadrature.h"
 #include "baker/quantities/common.h"
 #include "baker/quantities/dielectric_columns.h"
