@@ -164,7 +164,8 @@ double KernelWalk(const KernelView& k, Outer&& outer, Inner&& inner) {
   return 4 / Pi * sum;
 }
 
-/// The fixed rule over panels [ps[j], ps[j+1]] of f, smoothstep-mapped, `nodes` each.
+/// The fixed rule over panels [ps[j], ps[j+1]] of f, smoothstep-mapped, Gauss nodes by width
+/// class; count accumulates the evaluations.
 template <class F>
 double FixedPanels(F& f, const double* ps, int np, long long& count) {
   double sum = 0;
@@ -279,7 +280,7 @@ std::shared_ptr<const DielectricReflectanceKernelRow> CachedDielectricReflectanc
   };
   static std::mutex mutex;
   static std::map<std::uint64_t, std::shared_ptr<Entry>> rows;
-  constexpr size_t kMaxRows = 1 << 16;  // ~1 KB each
+  constexpr size_t kMaxRows = 1 << 13;  // ~1.2 KB each: 10 MB at most
   std::uint64_t key;
   std::memcpy(&key, &alpha, sizeof key);
   std::shared_ptr<Entry> entry;
