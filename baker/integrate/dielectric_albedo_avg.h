@@ -25,7 +25,8 @@ namespace kiln {
 /// Deterministic; evals (optional) accumulates integrand evaluations.
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
                                                        long long* evals = nullptr);
-/// The same with `nodes` Gauss nodes per mu panel (tests and experiments).
+/// The same with `nodes` Gauss nodes per mu panel (tests and experiments; the exit side's E_avg_R
+/// takes the kernel route, KernelDielectricExitAverageR, whatever `nodes`).
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
                                                        long long* evals);
 
