@@ -31,9 +31,12 @@ void CheckChannels(const TableSpec& spec, const Table& t) {
                                 t.quantity + "' has " + std::to_string(channels));
 }
 
+/// The relative rounding of a value printed with 6 significant digits (%.6g), and some.
+constexpr double kWhereDigitsSlack = 1e-5;
+
 /// The point the table's own search found worst, axis order, read from kiln.lookup_error.where
 /// ("max 0.000565 at roughness=0.674056 eta=1.45686, ..."): empty when the text does not name a
-/// value of every axis inside the axis's range.
+/// value of every axis inside the axis's range (up to the text's rounding, then clamped to it).
 std::vector<double> DeclaredWorstPoint(const TableSpec& spec, const std::string& where) {
   const size_t at = where.find(" at ");
   if (at == std::string::npos) return {};
@@ -49,8 +52,13 @@ std::vector<double> DeclaredWorstPoint(const TableSpec& spec, const std::string&
         x[d] = std::strtod(item.c_str() + eq + 1, nullptr);
     pos = end + 1;
   }
-  for (size_t d = 0; d < x.size(); ++d)
-    if (!(x[d] >= spec.axes[d].lo && x[d] <= spec.axes[d].hi)) return {};
+  // The text has 6 significant digits: a value rounded past an end of its axis is that end.
+  for (size_t d = 0; d < x.size(); ++d) {
+    const AxisSpec& a = spec.axes[d];
+    const double slack = kWhereDigitsSlack * std::max({std::abs(a.lo), std::abs(a.hi), 1e-300});
+    if (!(x[d] >= a.lo - slack && x[d] <= a.hi + slack)) return {};
+    x[d] = std::min(std::max(x[d], a.lo), a.hi);
+  }
   return x;
 }
 
