@@ -80,7 +80,8 @@ std::vector<CommittedTable> VerifyShardTables(const std::vector<CommittedTable>&
 
 // `kiln verify` on one shard's tables: the lookup search's reference is adaptive quadrature at
 // 1e-6 (--tol), 8 cells (the corner cells first, then edge and inner cells by the error their
-// node values predict, worst first) and 4 seeded random points; the bake-error check at the
+// node values predict, worst first), 4 seeded random points and the point the table declares as
+// its worst (where the bake's own search found its max); the bake-error check at the
 // corners and the worst-departing nodes only (--bake-nodes 0; the sampled nodes: `kiln verify
 // luts`).
 void VerifyShard(int shard) {

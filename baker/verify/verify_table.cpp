@@ -1,6 +1,9 @@
 // One table file's checks (verify.h, VerifyTableFile).
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "baker/io/texture_readers.h"
@@ -28,6 +31,67 @@ void CheckChannels(const TableSpec& spec, const Table& t) {
                                 t.quantity + "' has " + std::to_string(channels));
 }
 
+/// The relative rounding of a value printed with 6 significant digits (%.6g), and some.
+constexpr double kWhereDigitsSlack = 1e-5;
+
+/// The point the table's own search found worst, axis order, read from kiln.lookup_error.where
+/// ("max 0.000565 at roughness=0.674056 eta=1.45686, ..."): empty when the text does not name a
+/// value of every axis inside the axis's range (up to the text's rounding, then clamped to it).
+std::vector<double> DeclaredWorstPoint(const TableSpec& spec, const std::string& where) {
+  const size_t at = where.find(" at ");
+  if (at == std::string::npos) return {};
+  const std::string list = where.substr(at + 4, where.find(',', at) - (at + 4));
+  std::vector<double> x(spec.axes.size(), NAN);
+  size_t pos = 0;
+  while (pos < list.size()) {
+    const size_t end = std::min(list.find(' ', pos), list.size());
+    const std::string item = list.substr(pos, end - pos);
+    const size_t eq = item.find('=');
+    for (size_t d = 0; eq != std::string::npos && d < spec.axes.size(); ++d)
+      if (item.compare(0, eq, spec.axes[d].name) == 0 && eq == spec.axes[d].name.size())
+        x[d] = std::strtod(item.c_str() + eq + 1, nullptr);
+    pos = end + 1;
+  }
+  // The text has 6 significant digits: a value rounded past an end of its axis is that end.
+  for (size_t d = 0; d < x.size(); ++d) {
+    const AxisSpec& a = spec.axes[d];
+    const double slack = kWhereDigitsSlack * std::max({std::abs(a.lo), std::abs(a.hi), 1e-300});
+    if (!(x[d] >= a.lo - slack && x[d] <= a.hi + slack)) return {};
+    x[d] = std::min(std::max(x[d], a.lo), a.hi);
+  }
+  return x;
+}
+
+/// The lookup error at the table's declared worst point (DeclaredWorstPoint), against the
+/// search's reference (adaptive quadrature to opt.tol, else SearchReference), folded into
+/// `rep` as one more point: a search whose budget does not reach that cell still checks the
+/// bound where the bake found it tightest.
+void CheckDeclaredWorstPoint(const TableSpec& spec, const Table& t, const VerifyOptions& opt,
+                             Filter filter, LookupErrorReport& rep) {
+  const std::vector<double> at = DeclaredWorstPoint(spec, t.lookupError.where);
+  if (at.empty()) return;
+  double x[3] = {0, 0, 0};
+  std::copy(at.begin(), at.end(), x);
+  IntegrationStats st;
+  const std::vector<double> exact =
+      opt.tol > 0 ? EvaluateSpec(spec, x, opt.tol, st) : SearchReference(spec, x, st);
+  const LutView view = t.view();
+  std::vector<float> got(std::max<size_t>(view.channels, exact.size()), 0.0f);
+  view.sample(x, got.data(), filter);
+  double err = 0;
+  for (size_t c = size_t(Describe(spec.quantity).firstIntegralChannel); c < exact.size(); ++c)
+    err = std::max(err, std::abs(got[c] - exact[c]));
+  ++rep.points;
+  if (opt.tol <= 0) rep.referenceError = std::max(rep.referenceError, st.errorEstimate);
+  const bool inCorner =
+      spec.axes.size() >= 2 && spec.axes[0].name == "mu" && spec.axes[1].ToAxis().texel(x[1]) < 1;
+  if (!inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, err);
+  if (err > rep.max) {
+    rep.max = err;
+    rep.where = at;
+  }
+}
+
 /// The repeated lookup-error search, checked against the declared bound.
 void CheckLookupError(const TableSpec& spec, const Table& t, const VerifyOptions& opt,
                       TableVerdict& v) {
@@ -39,6 +103,7 @@ void CheckLookupError(const TableSpec& spec, const Table& t, const VerifyOptions
   so.threads = opt.threads;
   so.filter = v.filter == "cubic" ? Filter::Cubic : Filter::Linear;
   v.lookup = MeasureLookupError(spec, t.view(), so);
+  CheckDeclaredWorstPoint(spec, t, opt, so.filter, v.lookup);
   v.lookupWhere = v.lookup.WhereText(spec);
   v.declaredLookup = t.lookupError.max;
   // The reference itself is only good to its tolerance (--tol, or the table's own, plus the
