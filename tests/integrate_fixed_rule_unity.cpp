@@ -118,16 +118,18 @@ double LobeAlbedoSimpson(double mu, double n) {
 }
 
 TEST_CASE(
-    "lafortune: the mirror-lobe rule's albedo, against the adaptive integrator where it "
-    "converges and an independent quadrature where it does not",
+    "lafortune: the mirror-lobe rule's albedo, against the adaptive integrator and an "
+    "independent quadrature of its one-dimensional form",
     "[unity-rule]") {
-  // The adaptive integrator, away from grazing views of wide lobes.
+  // The adaptive integrator, grazing views of wide lobes included: its panels follow the lobe's
+  // edge, the great circle m.l = 0 (LafortuneBRDF::LightMuKinks, LightPhiKinks), across which a
+  // lobe with n < 1 is a near-step (without them it converged 4.1e-4 low at mu = 0.01,
+  // r = 0.9999, and 6.3e-6 at mu = 0.058, r = 0.923, which kiln verify flagged).
   double worst = 0, wmu = 0, wr = 0;
   const double mus[] = {0, 1e-9, 1e-4, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999, 1};
-  const double rs[] = {0, 0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 0.9, 0.97, 0.99, 0.9999};
+  const double rs[] = {0, 0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 0.9, 0.923, 0.97, 0.99, 0.9999};
   for (double r : rs)
     for (double mu : mus) {
-      if (r > 0.6 && mu < 0.5) continue;  // below
       ModelParams p;
       p.roughness = r;
       IntegrationOptions opt;
@@ -141,9 +143,8 @@ TEST_CASE(
     }
   INFO("worst " << worst << " at mu " << wmu << " r " << wr);
   CHECK(worst < kMirrorLobeRuleBound);
-  // Grazing views of wide lobes (n < 1): the lobe is a near-step across m.l = 0 there, which
-  // the adaptive integrator converges to a wrong value on (4.1e-4 low at mu = 0.01, r = 0.9999;
-  // 6.2e-6 at r = 0.8): an independent quadrature of the rule's one-dimensional form instead.
+  // Grazing views of wide lobes (n < 1) once more, by a third quadrature: Simpson over the rule's
+  // one-dimensional form.
   for (double r : {0.8, 0.97, 0.9999})
     for (double mu : {0.0, 1e-4, 0.01, 0.1}) {
       double n = LafortuneBRDF::ExponentFromPerceptual(r);

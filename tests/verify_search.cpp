@@ -14,6 +14,8 @@
 #include "baker/bake/lookup_error.h"
 #include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
+#include <nlohmann/json.hpp>
+
 #include "cli_util.h"
 #include "kiln/exr_loader.h"
 #include "test_util.h"
@@ -224,5 +226,24 @@ TEST_CASE("Every committed table: the search finds nothing above its declared bo
     INFO(name << ": max " << rep.max << " at " << rep.WhereText(spec) << ", declared "
               << t.lookupError.max);
     CHECK(rep.max <= t.lookupError.max + spec.tol + t.bakeError);
+  }
+}
+
+TEST_CASE(
+    "kiln verify with a budget below one cell's probes probes that cell in full and reports it",
+    "[verify][cli][hostile]") {
+  // A budget smaller than one cell's probes: the search probes the first cell (a corner) in full.
+  // It used to probe nothing and read the report of an empty search (a segfault).
+  for (const char* budget : {"1", "2", "3"}) {
+    auto r = kiln::test::RunKiln(std::string("verify ") + KILN_SOURCE_DIR +
+                                 "/luts/lambert-albedo.exr --budget " + budget + " -j 1 --json");
+    INFO("--budget " << budget << ": " << r.out << r.err);
+    REQUIRE(r.exitCode == 0);
+    auto j = nlohmann::json::parse(r.out);
+    const auto& t = j["tables"][0];
+    CHECK(t["cells"].get<long long>() == 1);
+    CHECK(t["budget"].get<long long>() > 3);  // raised to the cell's probes
+    CHECK(t["points"].get<long long>() > 0);
+    CHECK(t["ok"].get<bool>());
   }
 }

@@ -204,7 +204,9 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
   C_ = kSweeps * D_ * (kGoldenIterations + 3);  // at most
   // The budget, in reference evaluations and (automatic budget only) integrand evaluations,
   // spent in chunks whose sizes depend on what was spent before, never on timing or threads.
-  callBudget_ = opt.budget > 0 ? opt.budget : kLookupBudgetCalls;
+  // A budget below one cell's probes still probes the first cell (a corner) in full: a search
+  // that evaluates nothing has no report.
+  callBudget_ = opt.budget > 0 ? std::max(opt.budget, P_) : kLookupBudgetCalls;
   integrandBudget_ = opt.budget > 0 ? 0 : kLookupBudgetIntegrand;
 }
 

@@ -38,7 +38,8 @@ struct LookupErrorReport {
 struct LookupSearchOptions {
   /// Most reference evaluations per table. 0: the automatic budget, at most kLookupBudgetCalls
   /// reference and kLookupBudgetIntegrand integrand evaluations (IntegrationStats::evals, so a
-  /// costly adaptive reference gets fewer points; counted, never timed: deterministic).
+  /// costly adaptive reference gets fewer points; counted, never timed: deterministic). A budget
+  /// below one cell's probes is raised to them (the first cell, a corner, is always probed).
   long long budget = 0;
   long long maxCells = 0;  ///< search at most this many cells (0: as the budget allows)
   /// Also this many fixed-seed random points, uniform in warped coordinates (outside the budget;

@@ -22,6 +22,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "baker/math/quadrature.h"
@@ -81,14 +82,22 @@ Channels<N> WithRelativeTolerance(Integral&& integral, const IntegrationOptions&
   return r;
 }
 
+inline void SortSmall(double* x, int n);  // below: the panel boundaries' insertion sort
+
+/// Where g bends along one circle theta_l of light space (a model's LightPhiKinks): writes the
+/// cos(phi_l) of its bends (at most 4) for the circle's sin and cos, returns their count.
+using LightPhiKinkFn = std::function<int(double sinTheta_l, double cosTheta_l, double* cosPhi)>;
+
 /// E(o) over light space for g(wo, wi) -> Channels<N> (g excludes the cosine), to the absolute
 /// tolerance opt.tol.
 /// muKinks (optional): light cosines where g bends (a model's LightMuKinks), extra outer panel
-/// boundaries at theta_l = acos(mu_l).
+/// boundaries at theta_l = acos(mu_l). phiKinks (optional): bends in phi_l on each circle, extra
+/// inner panel boundaries.
 template <int N, class G>
 Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOptions& opt,
                                         IntegrationStats& stats,
-                                        const std::vector<double>& muKinks = {}) {
+                                        const std::vector<double>& muKinks = {},
+                                        const LightPhiKinkFn& phiKinks = {}) {
   Vec3 wo = ViewDirection(mu_o);
   double theta_o = std::acos(Clamp(mu_o, 0.0, 1.0));
   std::vector<double> thetaBreaks = {0, Pi / 2};
@@ -97,18 +106,26 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
     if (mu_l > 0 && mu_l < 1) thetaBreaks.push_back(std::acos(mu_l));
   std::sort(thetaBreaks.begin(), thetaBreaks.end());
   thetaBreaks.erase(std::unique(thetaBreaks.begin(), thetaBreaks.end()), thetaBreaks.end());
-  double phiBreaks[3] = {0, Pi / 2, Pi};
   double innerTol = opt.tol / (10 * Pi);
   double errSum = 0;
   auto outer = [&](double theta_l) -> Channels<N> {
     double sinT = std::sin(theta_l), cosT = std::cos(theta_l);
+    double phiBreaks[7] = {0, Pi / 2, Pi};
+    int np = 3;
+    if (phiKinks) {
+      double cosPhi[4];
+      const int nk = std::min(phiKinks(sinT, cosT, cosPhi), 4);
+      for (int k = 0; k < nk; ++k)
+        if (cosPhi[k] > -1 && cosPhi[k] < 1) phiBreaks[np++] = std::acos(cosPhi[k]);
+      SortSmall(phiBreaks, np);
+    }
     auto inner = [&](double phi) -> Channels<N> {
       ++stats.evals;
       return g(wo, SphericalDirection(sinT, cosT, phi));
     };
     double e = 0;
     Channels<N> r =
-        IntegrateAdaptive<N>(inner, phiBreaks, 3, innerTol, opt.maxPanels, &e, &stats.capped);
+        IntegrateAdaptive<N>(inner, phiBreaks, np, innerTol, opt.maxPanels, &e, &stats.capped);
     errSum += e;
     return (2 * sinT * cosT) * r;
   };
@@ -124,10 +141,11 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
 /// absolute, relative where |E| > 1 (WithRelativeTolerance).
 template <int N, class G>
 Channels<N> IntegrateLightSpace(double mu_o, G&& g, const IntegrationOptions& opt,
-                                IntegrationStats& stats, const std::vector<double>& muKinks = {}) {
+                                IntegrationStats& stats, const std::vector<double>& muKinks = {},
+                                const LightPhiKinkFn& phiKinks = {}) {
   return WithRelativeTolerance<N>(
       [&](const IntegrationOptions& o, IntegrationStats& st) {
-        return IntegrateLightSpaceAbsolute<N>(mu_o, g, o, st, muKinks);
+        return IntegrateLightSpaceAbsolute<N>(mu_o, g, o, st, muKinks, phiKinks);
       },
       opt, stats);
 }

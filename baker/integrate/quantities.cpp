@@ -43,6 +43,20 @@ std::vector<double> LightMuKinksOf(const M& m, double mu_o) {
   return LightMuKinksOf(m, mu_o, 0);
 }
 
+/// The bends in phi_l of a light-space model's f on each circle theta_l (its LightPhiKinks), none
+/// for a model without that method.
+template <class M>
+auto LightPhiKinksOf(const M& m, double mu_o, int)
+    -> decltype(m.LightPhiKinks(mu_o, 0.0, 0.0, nullptr), LightPhiKinkFn()) {
+  return [&m, mu_o](double sinT, double cosT, double* cosPhi) {
+    return m.LightPhiKinks(mu_o, sinT, cosT, cosPhi);
+  };
+}
+template <class M>
+LightPhiKinkFn LightPhiKinksOf(const M&, double, long) {
+  return {};
+}
+
 }  // namespace
 
 RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const IntegrationOptions& opt,
@@ -59,7 +73,8 @@ RhoParts DirectionalAlbedo(const AnyModel& model, double mu_o, const Integration
             RhoParts p = m.Parts(wo, wi);
             return Channels<2>{p.lin, p.quad};
           };
-          Channels<2> r = IntegrateLightSpace<2>(mu_o, g, opt, stats, LightMuKinksOf(m, mu_o));
+          Channels<2> r = IntegrateLightSpace<2>(mu_o, g, opt, stats, LightMuKinksOf(m, mu_o),
+                                                 LightPhiKinksOf(m, mu_o, 0));
           return {r[0], r[1]};
         }
       },

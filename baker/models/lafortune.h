@@ -4,6 +4,7 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "baker/models/brdf.h"
 
@@ -44,6 +45,26 @@ struct LafortuneBRDF {
     return {lobe.weight * std::pow(std::min(b, 1.0), lobe.n), 0};
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
+
+  /// The light cosine where the lobe's edge, the great circle b = 0, touches a circle theta_l
+  /// (o in the xz plane, ViewDirection): b = C_x s_o sin_l cos(phi_l) + C_z mu_o cos_l, so
+  /// tan(theta_l) = |C_z| mu_o / (|C_x| s_o). An outer panel boundary of the adaptive integrator
+  /// (integrate/hemisphere.h): below n = 1 the lobe is a near-step across that circle.
+  std::vector<double> LightMuKinks(double mu_o) const {
+    const double s = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
+    const double a = std::abs(lobe.cz) * mu_o, b = std::abs(lobe.cx) * s;
+    if (!(a > 0 && b > 0)) return {};
+    return {b / std::hypot(a, b)};  // cos(theta_l) = 1 / sqrt(1 + (a / b)^2)
+  }
+  /// cos(phi_l) of the lobe's edge b = 0 on the circle theta_l (sin_l, cos_l): an inner panel
+  /// boundary of the adaptive integrator. Returns 1 (or 0 where the circle misses it).
+  int LightPhiKinks(double mu_o, double sinTheta_l, double cosTheta_l, double* cosPhi) const {
+    const double s = std::sqrt(std::max(0.0, (1 - mu_o) * (1 + mu_o)));
+    const double den = lobe.cx * s * sinTheta_l;
+    if (den == 0) return 0;
+    cosPhi[0] = -lobe.cz * mu_o * cosTheta_l / den;
+    return cosPhi[0] > -1 && cosPhi[0] < 1 ? 1 : 0;
+  }
 };
 
 }  // namespace kiln

@@ -145,6 +145,7 @@ ModelInfo LafortuneModel() {
   m.make = [](const ModelArgs& a) -> AnyModel { return LafortuneBRDF::Phong(a.roughness, a.rs); };
   m.rule = RuleFamily::MirrorLobe;
   m.mirrorLobe = MirrorLobeForm::Phong;
+  m.fixedRuleVersion = "3";  // r = 1 holds the limit n -> 0+ exactly (MirrorLobeLimitAt)
   m.onRequestAlbedo = 2;
   // alpha = max(r^2, 0.01), constant below r = 0.1 (the clamp-exact start).
   m.onRequestRoughness.lo = 0.1;

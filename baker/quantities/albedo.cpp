@@ -137,6 +137,7 @@ std::vector<double> Evaluate(const TableSpec& spec, const double* x, double tol,
 
 /// Roughness 0 of a microfacet lobe: a mirror reflects all of it, E = F = 1 at every mu.
 bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (MirrorLobeLimitAt(spec, x, out)) return true;  // lafortune at r = 1
   if (!OnSmoothLimit(spec, x)) return false;
   out = RhoChannels(spec, RhoParts{1.0, 0.0});
   return true;

@@ -139,6 +139,7 @@ std::string Method(const TableSpec& spec) {
 
 /// Roughness 0 of a microfacet lobe: E = 1 at every mu, so E_avg = 1.
 bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  if (MirrorLobeLimitAt(spec, x, out)) return true;  // lafortune at r = 1
   if (!OnSmoothLimit(spec, x)) return false;
   out = RhoChannels(spec, RhoParts{1.0, 0.0});
   return true;

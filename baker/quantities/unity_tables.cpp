@@ -8,6 +8,7 @@
 #include "baker/models/lafortune.h"
 #include "baker/models/registry.h"
 #include "baker/models/unity.h"
+#include "baker/quantities/common.h"
 #include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 
@@ -92,13 +93,28 @@ std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
   return {FixedRuleMirrorLobeAlbedo(x[0], LafortuneBRDF::ExponentFromPerceptual(r), &stats.evals)};
 }
 
+bool MirrorLobeLimitAt(const TableSpec& spec, const double* x, std::vector<double>& out) {
+  const ModelInfo* m = FindModel(spec.model);
+  if (!m || m->rule != RuleFamily::MirrorLobe || m->mirrorLobe != MirrorLobeForm::Phong)
+    return false;
+  const bool albedo = MirrorLobeRuleApplies(spec);
+  const bool average = spec.axes.size() == 1 && spec.axes[0].name == "roughness";
+  if (!albedo && !average) return false;
+  const double r = std::min(1.0, std::max(0.0, x[albedo ? 1 : 0]));
+  if (LafortuneBRDF::ExponentFromPerceptual(r) != 0) return false;
+  const double mu = std::min(1.0, std::max(0.0, x[0]));
+  out = quantity_detail::RhoChannels(spec, RhoParts{albedo ? (1 + mu) / 2 : 5.0 / 6.0, 0.0});
+  return true;
+}
+
 std::string MirrorLobeRuleMethod(const TableSpec& spec) {
   if (IsUnityNHxRoughness(spec))
     return "fixed rule: one integral over the lobe angle about the mirror direction, the lobe "
            "and its twin about -m summed, the azimuth in closed form, a panel boundary at the "
            "texture's saturation (integrate/fixed_rule_lobe.cpp), declared to 6e-7";
   return "fixed rule: one integral over the lobe angle about the mirror direction, the azimuth "
-         "in closed form (integrate/fixed_rule_lobe.cpp), declared to 6e-7";
+         "in closed form (integrate/fixed_rule_lobe.cpp), declared to 6e-7; roughness 1 (n = 0) "
+         "holds the limit n -> 0+, the half-space m.l > 0";
 }
 
 }  // namespace kiln

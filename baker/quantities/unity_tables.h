@@ -33,6 +33,15 @@ bool MirrorLobeRuleApplies(const TableSpec& spec);
 std::vector<double> MirrorLobeRuleAt(const TableSpec& spec, const double* x,
                                      IntegrationStats& stats);
 
+/// The value a lafortune table holds at roughness 1 exactly, where n = 0: the model is Lambertian
+/// there (Lafortune's max(0, m.l)^0 = 1 on the whole hemisphere, E = 1), while r -> 1- tends to
+/// the half-space m.l > 0, E = (1 + mu) / 2. The tables hold that limit, continuous in r
+/// (docs/models.md, "r = 1 is a point apart"): E = (1 + mu) / 2 for an albedo table (axes mu,
+/// roughness), E_avg = 2 int_0^1 E mu dmu = 5 / 6 for an average (axis roughness). True and `out`
+/// set (one value per channel) when `spec` is such a table of lafortune and x's roughness gives
+/// n = 0; false otherwise (unity-brdf3 never has n = 0).
+bool MirrorLobeLimitAt(const TableSpec& spec, const double* x, std::vector<double>& out);
+
 /// The method text of the mirror-lobe rule.
 std::string MirrorLobeRuleMethod(const TableSpec& spec);
 

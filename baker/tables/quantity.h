@@ -77,7 +77,9 @@ struct QuantityInfo {
   /// The smooth limit: when x has roughness exactly 0 and the model is a microfacet lobe
   /// (alpha = 0, a mirror or smooth interface), writes the exact channel values there to `out`
   /// and returns true; otherwise returns false (null: never). EvaluateSpec asks it first, so
-  /// neither the fixed rules nor the adaptive integrator see roughness 0.
+  /// neither the fixed rules nor the adaptive integrator see roughness 0. The albedo kinds also
+  /// answer lafortune's roughness 1 here, where the tables hold the limit r -> 1- in closed form
+  /// (MirrorLobeLimitAt).
   bool (*smoothLimit)(const TableSpec& spec, const double* x, std::vector<double>& out) = nullptr;
   /// The method text (kiln.method) of the fixed rule, when it applies.
   std::string (*fixedRuleMethod)(const TableSpec& spec) = nullptr;
