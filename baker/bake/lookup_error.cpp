@@ -201,6 +201,9 @@ class LookupSearch {
 
   const TableSpec& spec_;
   const LutView& view_;
+  /// view_ prepared once: its sampleDouble is view_.sample, bit for bit, without preparing the
+  /// axes again at every point.
+  LutSampler sampler_;
   const LookupSearchOptions& opt_;
   size_t dims_;
   int n_[3] = {1, 1, 1}, nc_[3] = {1, 1, 1};
@@ -224,7 +227,12 @@ int ThreadsOf(const LookupSearchOptions& opt) {
 
 LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
                            const LookupSearchOptions& opt)
-    : spec_(spec), view_(view), opt_(opt), dims_(spec.axes.size()), arena_(ThreadsOf(opt)) {
+    : spec_(spec),
+      view_(view),
+      sampler_(view),
+      opt_(opt),
+      dims_(spec.axes.size()),
+      arena_(ThreadsOf(opt)) {
   for (size_t d = 0; d < dims_ && d < 3; ++d) {
     n_[d] = std::max(1, spec.axes[d].size);
     nc_[d] = std::max(1, n_[d] - 1);
@@ -310,11 +318,11 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   // One float per channel of the table, and at least one per exact value (a table with fewer
   // channels than its quantity then compares the missing ones against 0).
   std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);
-  view_.sample(x, got.data(), opt_.filter);
+  sampler_.sampleDouble(x, got.data(), opt_.filter);
   for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
     s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
   if (opt_.alsoCubic) {
-    view_.sample(x, got.data(), Filter::Cubic);
+    sampler_.sampleDouble(x, got.data(), Filter::Cubic);
     for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
       s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
   }
