@@ -107,12 +107,34 @@ bool DerivationSource(const TableSpec& spec, TableSpec& source) {
   return q.derivedFrom && q.derive && q.derivedFrom(spec, source);
 }
 
+/// The search reuse of a table derived from one whose search evaluated `memo`
+/// (QuantityInfo::searchDerivesFromSource): at a point off the smooth limit (where the two kinds'
+/// limits differ) that the source's search evaluated, `derive` of the source's reference and its
+/// stats. `spec` and `memo` must outlive the search.
+SearchReuse ReuseFromSource(const TableSpec& spec, const SearchMemo& memo) {
+  const QuantityInfo& q = Describe(spec.quantity);
+  return [&spec, &memo, &q](const double* x, std::vector<double>& exact, IntegrationStats& st) {
+    std::vector<double> smooth;
+    if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return false;
+    const SearchMemo::Entry* e = memo.Find(x);
+    if (!e) return false;
+    exact.assign(spec.channels.size(), 0.0);
+    q.derive(spec, e->values.data(), exact.data());
+    st.evals = e->evals;
+    st.errorEstimate = e->errorEstimate;
+    return true;
+  };
+}
+
 }  // namespace
 
 NodeValueCache::NodeValueCache(const std::vector<TableSpec>& specs) {
   for (const TableSpec& spec : specs) {
     TableSpec source;
-    if (DerivationSource(spec, source)) kept_[source.Hash()];
+    if (!DerivationSource(spec, source)) continue;
+    NodeValues& kept = kept_[source.Hash()];
+    const QuantityInfo& q = Describe(spec.quantity);
+    if (q.searchDerivesFromSource && q.searchDerivesFromSource(spec)) kept.keepSearchMemo = true;
   }
 }
 
@@ -223,15 +245,25 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     t.bakeError = estimate + 0x1p-24;
   else
     t.bakeError = (integrated ? 10 * std::max(estimate, spec.tol) : 0.0) + 0x1p-24;
-  long long lookupPoints = 0;
+  long long lookupPoints = 0, lookupReused = 0;
   if (opt.measureLookupError) {
     // A derived table with its source's texels and search reference: the source's report
-    // (QuantityInfo::sharesSourceLookupError), else its own search.
-    const auto shares = Describe(spec.quantity).sharesSourceLookupError;
-    if (from && from->hasLookupError && shares && shares(spec))
+    // (QuantityInfo::sharesSourceLookupError), else its own search, which reads its source's
+    // search references where it may (QuantityInfo::searchDerivesFromSource).
+    const QuantityInfo& q = Describe(spec.quantity);
+    if (from && from->hasLookupError && q.sharesSourceLookupError &&
+        q.sharesSourceLookupError(spec)) {
       t.lookupError = from->lookupError;
-    else
-      lookupPoints = MeasureLookupError(spec, t, opt.lookupBudget, opt.threads);
+    } else {
+      SearchReuse reuse;
+      if (from && from->searchMemo && q.searchDerivesFromSource && q.searchDerivesFromSource(spec))
+        reuse = ReuseFromSource(spec, *from->searchMemo);
+      std::shared_ptr<SearchMemo> record;
+      if (keep && keep->keepSearchMemo) record = std::make_shared<SearchMemo>();
+      lookupPoints = MeasureLookupError(spec, t, opt.lookupBudget, opt.threads, reuse, record.get(),
+                                        &lookupReused);
+      if (keep) keep->searchMemo = record;
+    }
     if (keep) {
       keep->hasLookupError = true;
       keep->lookupError = t.lookupError;
@@ -245,17 +277,22 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     stats->seconds = std::chrono::duration<double>(t1 - t0).count();
     stats->lookupSeconds = std::chrono::duration<double>(t2 - t1).count();
     stats->lookupPoints = lookupPoints;
+    stats->lookupReused = lookupReused;
   }
   return t;
 }
 
-long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads) {
+long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads,
+                             const SearchReuse& reuse, SearchMemo* record, long long* reused) {
   // The search kiln verify repeats (lookup_error.h), against the bake's own method.
   LookupSearchOptions opt;
   opt.budget = budget;
   opt.threads = threads;
   opt.alsoCubic = true;
+  opt.reuse = reuse;
+  opt.record = record;
   LookupErrorReport rep = MeasureLookupError(spec, table.view(), opt);
+  if (reused) *reused = rep.reused;
   // A bound made mostly of the search reference's distance from the bake's rule says little of
   // the table (a smooth average's 3e-8 declared as 3e-6): search again with the bake's rule.
   if (rep.referenceError > rep.max) {

@@ -2,9 +2,11 @@
 #pragma once
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "baker/bake/lookup_error.h"
 #include "baker/io/texture_writers.h"
 #include "baker/tables/spec.h"
 #include "kiln/table.h"
@@ -24,6 +26,7 @@ struct BakeStats {
   double seconds = 0;          ///< wall time of the texels only (no lookup check, no progress bar)
   double lookupSeconds = 0;    ///< wall time of the lookup-error check
   long long lookupPoints = 0;  ///< its reference evaluations (0: none, or its source's report)
+  long long lookupReused = 0;  ///< of those, read from its source's search (SearchMemo)
 };
 
 /// The node values of one baked table in double (before the float32 store) with each node's
@@ -38,6 +41,10 @@ struct NodeValues {
   /// (QuantityInfo::sharesSourceLookupError) instead of repeating the search.
   bool hasLookupError = false;
   LookupError lookupError;
+  /// The references its lookup-error search evaluated, by point, when a table derived from it
+  /// reads them (QuantityInfo::searchDerivesFromSource); null otherwise.
+  std::shared_ptr<SearchMemo> searchMemo;
+  bool keepSearchMemo = false;  ///< a table derived from it reads searchMemo (NodeValueCache)
 };
 
 /// The node values a run of bakes keeps for the tables derived from them: built from the run's
@@ -66,7 +73,11 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats 
 /// with the declared bound (kDeclaredBoundMargin x the max found), the rms over the probe
 /// points and the cubic filter's max and rms at the same points. Returns the search's reference
 /// evaluations (LookupErrorReport::points).
-long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads);
+/// `reuse` and `record` as LookupSearchOptions' (lookup_error.h); `reused` (optional) gets the
+/// points reuse supplied.
+long long MeasureLookupError(const TableSpec& spec, Table& table, long long budget, int threads,
+                             const SearchReuse& reuse = {}, SearchMemo* record = nullptr,
+                             long long* reused = nullptr);
 
 /// Writes `table` as DIR/<name>.exr (and DIR/<name>.h with header), atomically; the EXR's
 /// blocks are compressed on `threads` threads (0: all cores; same bytes for any count).

@@ -9,7 +9,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <thread>
+
+#include "baker/integrate/hemisphere.h"
 
 namespace kiln {
 namespace {
@@ -34,8 +37,10 @@ struct Sample {
   double err = 0, cubic = 0;
   bool inCorner = false;
   long long integrand = 0;
-  double refError = 0;      ///< the reference's distance bound from the bake's method here
-  double x[3] = {0, 0, 0};  ///< the point, axis units
+  double refError = 0;        ///< the reference's distance bound from the bake's method here
+  double x[3] = {0, 0, 0};    ///< the point, axis units
+  bool reused = false;        ///< LookupSearchOptions::reuse supplied the reference
+  std::vector<double> exact;  ///< the reference, kept when the search records (opt.record)
 };
 
 /// Cell-local probe points u in [0, 1]^D over the D axes with more than one node.
@@ -57,6 +62,31 @@ std::vector<std::array<double, 3>> ProbePoints(int D) {
 }
 
 }  // namespace
+
+size_t SearchMemo::KeyHash::operator()(const Key& k) const {
+  uint64_t h = 0x9E3779B97F4A7C15ull;
+  for (uint64_t v : k) {
+    h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+    h *= 0xBF58476D1CE4E5B9ull;
+  }
+  return static_cast<size_t>(h ^ (h >> 31));
+}
+
+namespace {
+/// A point's key: the bits of its three axis values (unused axes 0).
+std::array<uint64_t, 3> MemoKey(const double* x) {
+  std::array<uint64_t, 3> k{};
+  std::memcpy(k.data(), x, sizeof k);
+  return k;
+}
+}  // namespace
+
+void SearchMemo::Add(const double* x, Entry entry) { map_.emplace(MemoKey(x), std::move(entry)); }
+
+const SearchMemo::Entry* SearchMemo::Find(const double* x) const {
+  auto it = map_.find(MemoKey(x));
+  return it == map_.end() ? nullptr : &it->second;
+}
 
 std::string LookupErrorReport::WhereText(const TableSpec& spec) const {
   std::string s;
@@ -126,8 +156,9 @@ namespace {
 struct Climb {
   Sample best;
   std::array<double, 3> u{};
-  long long evals = 0, integrand = 0;
+  long long evals = 0, integrand = 0, reused = 0;
   double refError = 0;
+  std::vector<Sample> visited;  ///< every point evaluated, kept when the search records
 };
 
 /// The state of one search (MeasureLookupError), its steps in the order they run: the cells'
@@ -151,6 +182,8 @@ class LookupSearch {
   void Climbs();
   /// The report: deterministic reductions in search order.
   LookupErrorReport Report();
+  /// Every point's reference into opt.record (a search of the default reference only).
+  void Record();
 
  private:
   Sample Evaluate(size_t cell, const std::array<double, 3>& u) const;
@@ -160,12 +193,17 @@ class LookupSearch {
   /// (QuantityInfo::prepareSearch): only sooner, never other values.
   void Prepare(const std::vector<std::pair<size_t, size_t>>& what);
   bool Spent(double share) const;
+  /// Whether the search evaluates the default reference (SearchReference): reuse and record.
+  bool DefaultReference() const { return opt_.refTol <= 0 && !opt_.bakeRule; }
   void EvaluateAll(std::vector<Sample>& out, size_t base,
                    const std::vector<std::pair<size_t, size_t>>& what);
   Climb ClimbCell(size_t slot) const;
 
   const TableSpec& spec_;
   const LutView& view_;
+  /// view_ prepared once: its sampleDouble is view_.sample, bit for bit, without preparing the
+  /// axes again at every point.
+  LutSampler sampler_;
   const LookupSearchOptions& opt_;
   size_t dims_;
   int n_[3] = {1, 1, 1}, nc_[3] = {1, 1, 1};
@@ -189,7 +227,12 @@ int ThreadsOf(const LookupSearchOptions& opt) {
 
 LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
                            const LookupSearchOptions& opt)
-    : spec_(spec), view_(view), opt_(opt), dims_(spec.axes.size()), arena_(ThreadsOf(opt)) {
+    : spec_(spec),
+      view_(view),
+      sampler_(view),
+      opt_(opt),
+      dims_(spec.axes.size()),
+      arena_(ThreadsOf(opt)) {
   for (size_t d = 0; d < dims_ && d < 3; ++d) {
     n_[d] = std::max(1, spec.axes[d].size);
     nc_[d] = std::max(1, n_[d] - 1);
@@ -266,19 +309,22 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   double x[3] = {0, 0, 0};
   PointIn(cell, u, x);
   IntegrationStats st;
-  std::vector<double> exact = opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st)
-                              : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
-                                              : SearchReference(spec_, x, st);
+  std::vector<double> exact;
+  Sample s;
+  s.reused = DefaultReference() && opt_.reuse && opt_.reuse(x, exact, st);
+  if (!s.reused)
+    exact = opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st)
+            : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
+                            : SearchReference(spec_, x, st);
   if (opt_.bakeRule) st.errorEstimate = 0;  // the bake's own rule
   // One float per channel of the table, and at least one per exact value (a table with fewer
   // channels than its quantity then compares the missing ones against 0).
   std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);
-  view_.sample(x, got.data(), opt_.filter);
-  Sample s;
+  sampler_.sampleDouble(x, got.data(), opt_.filter);
   for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
     s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
   if (opt_.alsoCubic) {
-    view_.sample(x, got.data(), Filter::Cubic);
+    sampler_.sampleDouble(x, got.data(), Filter::Cubic);
     for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
       s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
   }
@@ -286,6 +332,7 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   s.integrand = st.evals;
   s.refError = opt_.refTol > 0 ? 0.0 : st.errorEstimate;
   std::copy(x, x + 3, s.x);
+  if (opt_.record && DefaultReference()) s.exact = std::move(exact);
   return s;
 }
 
@@ -420,13 +467,16 @@ Climb LookupSearch::ClimbCell(size_t slot) const {
     u[axis] = v;
     Sample s = Evaluate(cell, u);
     ++cl.evals;
+    cl.reused += s.reused;
     cl.integrand += s.integrand;
     cl.refError = std::max(cl.refError, s.refError);
+    const double err = s.err;
     if (s.err > cl.best.err) {
       cl.best = s;
       cl.u = u;
     }
-    return s.err;
+    if (opt_.record && DefaultReference()) cl.visited.push_back(std::move(s));
+    return err;
   };
   const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
   for (int sweep = 0; sweep < kSweeps; ++sweep)
@@ -509,6 +559,7 @@ LookupErrorReport LookupSearch::Report() {
     sumCubic += s.cubic * s.cubic;
     rep.referenceError = std::max(rep.referenceError, s.refError);
     rep.cubicMax = std::max(rep.cubicMax, s.cubic);
+    rep.reused += s.reused;
   }
   rep.max = probeSamples_[static_cast<size_t>(worstProbe)].err;
   const Sample& w = probeSamples_[static_cast<size_t>(worstProbe)];
@@ -516,6 +567,7 @@ LookupErrorReport LookupSearch::Report() {
   long long points = static_cast<long long>(probeSamples_.size());
   for (const Climb& cl : climbed_) {
     points += cl.evals;
+    rep.reused += cl.reused;
     rep.referenceError = std::max(rep.referenceError, cl.refError);
     if (!cl.best.inCorner) rep.maxOutsideCorner = std::max(rep.maxOutsideCorner, cl.best.err);
     if (cl.best.err > rep.max) {
@@ -535,6 +587,17 @@ LookupErrorReport LookupSearch::Report() {
   return rep;
 }
 
+void LookupSearch::Record() {
+  if (!opt_.record || !DefaultReference()) return;
+  auto add = [&](const Sample& s) {
+    if (!s.exact.empty())
+      opt_.record->Add(s.x, SearchMemo::Entry{s.exact, s.integrand, s.refError});
+  };
+  for (const Sample& s : probeSamples_) add(s);
+  for (const Climb& cl : climbed_)
+    for (const Sample& s : cl.visited) add(s);
+}
+
 }  // namespace
 
 LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
@@ -545,6 +608,7 @@ LookupErrorReport MeasureLookupError(const TableSpec& spec, const LutView& view,
   search.SweepCentres();
   search.RandomPoints();
   search.Climbs();
+  search.Record();
   return search.Report();
 }
 

@@ -4,7 +4,11 @@
 // (docs/accuracy.md "Lookup error"). The bake declares its bound from it and `kiln verify` repeats
 // it.
 #pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "baker/tables/spec.h"
@@ -27,12 +31,45 @@ struct LookupErrorReport {
   long long climbed = 0;                ///< cells in which the search climbed
   long long allCells = 0;               ///< cells of the table
   long long budget = 0;                 ///< the reference evaluations the search was allowed
+  /// Of `points`, those LookupSearchOptions::reuse supplied (counted, charged and compared
+  /// like the others: only not evaluated again).
+  long long reused = 0;
   /// How far the search's reference may lie from the bake's method at the points it evaluated
   /// (SearchReference's errorEstimate, max over the points; 0 for the bake's own method or an
   /// adaptive reference): the true max can exceed `max` by this much.
   double referenceError = 0;
   std::string WhereText(const TableSpec& spec) const;  ///< "mu=0.0001 roughness=0.01"
 };
+
+/// The reference values a search evaluated (SearchReference, its default form), by point: the
+/// bits of the point's axis values. A table derived from the searched one reads them where its
+/// own search's points coincide (LookupSearchOptions::reuse,
+/// QuantityInfo::searchDerivesFromSource).
+class SearchMemo {
+ public:
+  struct Entry {
+    std::vector<double> values;  ///< the reference, one value per channel of the searched table
+    long long evals = 0;         ///< IntegrationStats::evals of its evaluation
+    double errorEstimate = 0;    ///< IntegrationStats::errorEstimate of its evaluation
+  };
+  /// Keeps the reference at x (the first one kept for a point stays). Not thread-safe.
+  void Add(const double* x, Entry entry);
+  /// The reference kept at x, or null. Thread-safe while nothing is added.
+  const Entry* Find(const double* x) const;
+  size_t size() const { return map_.size(); }
+
+ private:
+  using Key = std::array<uint64_t, 3>;
+  struct KeyHash {
+    size_t operator()(const Key& k) const;
+  };
+  std::unordered_map<Key, Entry, KeyHash> map_;
+};
+
+/// A reference supplied before it is evaluated: true when it filled `exact` and `stats` with
+/// what the search's reference would return at x (the same bits), false to evaluate it.
+using SearchReuse =
+    std::function<bool(const double* x, std::vector<double>& exact, IntegrationStats& stats)>;
 
 /// How hard the search looks.
 struct LookupSearchOptions {
@@ -52,6 +89,12 @@ struct LookupSearchOptions {
   /// Evaluate the points by the bake's own rule (EvaluateSpec), not its verification-grade form
   /// (QuantityInfo::searchRule): referenceError 0, at the bake rule's cost.
   bool bakeRule = false;
+  /// Filled with every point's reference and stats (the default reference only: not with
+  /// bakeRule or refTol), for a derived table's search to reuse.
+  SearchMemo* record = nullptr;
+  /// Asked first at every point of the default reference (not with bakeRule or refTol): the
+  /// same values sooner, so the same report (rep.reused counts its points).
+  SearchReuse reuse;
 };
 
 /// The automatic budget: most reference evaluations per table (closed forms reach it).

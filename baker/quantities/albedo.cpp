@@ -116,6 +116,13 @@ bool DerivedFrom(const TableSpec& spec, TableSpec& source) {
 /// every point): the same lookup-error report (QuantityInfo::sharesSourceLookupError).
 bool SharesSourceLookupError(const TableSpec& spec) { return SheenFixedRuleApplies(spec); }
 
+/// A microfacet albedo's search reference is the sum of its DFG's (SearchRule: A + B of the same
+/// MicrofacetSearchRuleAt, the same stats) off roughness 0 (SmoothLimit: 1, not SmoothDfg's sum).
+bool SearchDerivesFromSource(const TableSpec& spec) {
+  TableSpec source;
+  return !SheenFixedRuleApplies(spec) && DerivedFrom(spec, source);
+}
+
 void Derive(const TableSpec& spec, const double* source, double* out) {
   out[0] = IsSheen(spec.model) ? source[0] : source[0] + source[1];
 }
@@ -175,6 +182,7 @@ const QuantityInfo& AlbedoQuantity() {
     q.derivedFrom = DerivedFrom;
     q.derive = Derive;
     q.sharesSourceLookupError = SharesSourceLookupError;
+    q.searchDerivesFromSource = SearchDerivesFromSource;
     q.evaluate = Evaluate;
     q.smoothLimit = SmoothLimit;
     q.method = Method;

@@ -176,6 +176,12 @@ struct QuantityInfo {
   /// the source copy its lookup-error report instead of repeating the same search (the
   /// deterministic search gives the same report; `kiln verify` repeats it). Null: never.
   bool (*sharesSourceLookupError)(const TableSpec& spec) = nullptr;
+  /// A derived kind whose table `spec` has, at every point off the smooth limit, `derive` of its
+  /// source's lookup-error search reference as its own (the same bits and stats: a microfacet
+  /// albedo sums the A and B of the one rule its DFG evaluates): true lets its search read the
+  /// references its source's search evaluated where the two searches' points coincide
+  /// (lookup_error.h, SearchMemo). Null: never.
+  bool (*searchDerivesFromSource)(const TableSpec& spec) = nullptr;
 };
 
 /// The descriptor of `q`.
