@@ -768,7 +768,7 @@ class LutSampler {
       floatLinear_ = floatLinearFor(view.dims, view.channels);
       if (floatLayer_ && float_[1].warp == detail::FloatWarp::Sqrt) {
         floatLinear_ = floatLayerSqrtFor(view.dims, view.channels);
-        floatPair_ = detail::floatAxisPair(float_[0], float_[1]);
+        floatPair_ = detail::floatAxisPair(float_[0], float_[1], axis_[1].lo, axis_[1].hi);
         floatLayerSqrt2_ = view.dims == 2 && view.channels == 2;
       }
     }
@@ -925,11 +925,9 @@ class LutSampler {
   /// (detail::floatCellsLayerSqrt), no choice of warp.
   template <int D, int C>
   KILN_INLINE void floatLayerSqrt(const double* x, float* out) const noexcept {
-    const float c = detail::floatLayerScale(axis_[1].lo, axis_[1].hi, x[1]);
-    detail::FloatCell k0, k1;
-    detail::floatCellsLayerSqrt(floatPair_, x, c, k0, k1);
-    const detail::FloatCell k2 =
-        D >= 3 ? detail::floatCellAt(float_[2], x[2], c) : detail::FloatCell{};
+    detail::FloatCell k0, k1, k2;
+    detail::floatCellsLayerSqrt(floatPair_, x, k0, k1);
+    if (D >= 3) k2 = detail::floatCellAt(float_[2], x[2], 0.0f);  // c: read by axis 0 only
     floatTaps<D, C>(k0, k1, k2, out);
   }
 

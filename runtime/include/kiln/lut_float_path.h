@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "kiln/lut_inline.h"
 
@@ -114,13 +115,19 @@ KILN_INLINE FloatCell floatCellAt(const FloatAxis& a, double x, float c) noexcep
   return floatCell(a, floatWarped(a.warp, floatNormalized(a, x), c));
 }
 
+/// The least root4-layer scale c of a layer that has not collapsed (kiln::layerScale's floor).
+constexpr float kFloatLayerScaleFloor = 1e-12f;
+
 /// The root4-layer scale of kiln::layerScale in float, branch-free: r clamped to [lo, hi]
-/// (NaN maps to lo), c = max(r^2, 1e-12) for r != 0 and c = 0 at r = 0 exactly.
+/// (NaN maps to lo) and rounded to float, c = max(r^2, 1e-12) in float for r != 0 and c = 0
+/// at r = 0 exactly (tested on the clamped double: a positive r below the least float is
+/// not 0).
 KILN_INLINE float floatLayerScale(double lo, double hi, double r) noexcept {
   const double low = r > lo ? r : lo;  // NaN fails the comparison: lo
   const double rc = low < hi ? low : hi;
-  const float c = static_cast<float>(rc * rc);
-  const float floor = c < 1e-12f ? 1e-12f : c;
+  const float rf = static_cast<float>(rc);
+  const float c = rf * rf;
+  const float floor = c < kFloatLayerScaleFloor ? kFloatLayerScaleFloor : c;
   return rc == 0.0 ? 0.0f : floor;
 }
 
@@ -174,56 +181,100 @@ KILN_INLINE void floatCells4(const FloatAxis& a, const double* x, std::size_t st
 struct FloatAxisPair {
   alignas(16) double lo[2] = {0.0, 0.0};
   alignas(16) double invRange[2] = {1.0, 1.0};
-  alignas(16) float last[4] = {};
+  alignas(16) float scale[4] = {};  ///< (N_0 - 1) / 2 (the warp's halving folded in), N_1 - 1
   alignas(16) float snap[4] = {};
+  double rLo = 0.0, rHi = 1.0;  ///< axis 1's range, for the layer scale
+  std::size_t stride[2] = {};   ///< node strides in floats
+  bool unit = false;            ///< both axes span [0, 1]: y = x, r = y1, no normalization
   FloatAxis axis[2] = {};
 };
 
-/// The FloatAxisPair of axes a0 and a1.
-inline FloatAxisPair floatAxisPair(const FloatAxis& a0, const FloatAxis& a1) noexcept {
+/// The FloatAxisPair of axes a0 and a1, a1 spanning [rLo, rHi] (the range of the layer
+/// scale's r).
+inline FloatAxisPair floatAxisPair(const FloatAxis& a0, const FloatAxis& a1, double rLo,
+                                   double rHi) noexcept {
   FloatAxisPair p;
   p.axis[0] = a0;
   p.axis[1] = a1;
   for (int d = 0; d < 2; ++d) {
     p.lo[d] = p.axis[d].lo;
     p.invRange[d] = p.axis[d].invRange;
-    p.last[d] = p.axis[d].last;
     p.snap[d] = p.axis[d].snap;
+    p.stride[d] = p.axis[d].stride;
   }
+  p.scale[0] = 0.5f * a0.last;  // exact: a power-of-two scaling
+  p.scale[1] = a1.last;
+  p.rLo = rLo;
+  p.rHi = rHi;
+  p.unit = a0.lo == 0.0 && a0.invRange == 1.0 && a1.lo == 0.0 && a1.invRange == 1.0 && rLo == 0.0 &&
+           rHi == 1.0;
   return p;
 }
 
 /// The cells of one point on axes 0 and 1 when axis 0 has the root4-layer warp and axis 1 the
-/// sqrt warp (the catalogue's common form: mu, sqrt roughness), c the layer scale at the point:
-/// the same floats as floatCellAt on each axis. With SSE2 both normalizations, the square
-/// roots of y0 and y1 and both cells share 2 lanes, branch-free (3 square roots in 2 ops).
-KILN_INLINE void floatCellsLayerSqrt(const FloatAxisPair& a, const double* x, float c,
-                                     FloatCell& k0, FloatCell& k1) noexcept {
+/// sqrt warp (the catalogue's common form: mu, sqrt roughness), the layer scale taken from
+/// x[1]: the same floats as floatLayerScale and floatCellAt on each axis. With SSE2 both
+/// normalizations (none on [0, 1] axes: (x - 0) * 1 is x), the square roots of y0 and y1
+/// and both cells share 2 lanes (3 square roots in 2 ops); on [0, 1] axes the layer scale's
+/// r is y1; the warp's halving is folded into axis 0's N - 1 (a power-of-two scaling, exact,
+/// so the same floats). One branch, on the collapsed layer (r = 0), kept off the arithmetic's
+/// path to the division; none on the cells.
+KILN_INLINE void floatCellsLayerSqrt(const FloatAxisPair& a, const double* x, FloatCell& k0,
+                                     FloatCell& k1) noexcept {
 #ifdef KILN_FLOAT_PATH_SSE2
+  const __m128d xd = _mm_loadu_pd(x);
   const __m128d yd =
-      _mm_mul_pd(_mm_sub_pd(_mm_loadu_pd(x), _mm_load_pd(a.lo)), _mm_load_pd(a.invRange));
+      a.unit ? xd : _mm_mul_pd(_mm_sub_pd(xd, _mm_load_pd(a.lo)), _mm_load_pd(a.invRange));
   const __m128 zero = _mm_setzero_ps(), one = _mm_set1_ps(1.0f);
   // maxps gives its second operand when the first is NaN: NaN maps to 0, as floatNormalized.
   const __m128 y = _mm_min_ps(_mm_max_ps(_mm_cvtpd_ps(yd), zero), one);
+  // The layer scale c of floatLayerScale (lane 0): r clamped and rounded to float, squared,
+  // at least kFloatLayerScaleFloor; c = 0 (where the layer is 1) when the clamped r is 0.
+  __m128 r;
+  bool layered;
+  if (a.unit) {
+    r = _mm_shuffle_ps(y, y, _MM_SHUFFLE(1, 1, 1, 1));  // r clamped to [0, 1] and rounded: y1
+    layered = x[1] > 0.0;  // a positive r below the least float is not 0; NaN fails
+  } else {
+    // maxsd gives its second operand for a NaN: lo.
+    const __m128d rc =
+        _mm_min_sd(_mm_max_sd(_mm_unpackhi_pd(xd, xd), _mm_load_sd(&a.rLo)), _mm_load_sd(&a.rHi));
+    r = _mm_cvtsd_ss(zero, rc);
+    layered = _mm_cvtsd_f64(rc) != 0.0;
+  }
   const __m128 root = _mm_sqrt_ps(y);  // lane 0: sqrt(y0), lane 1: t1 = sqrt(y1)
-  const float y0 = _mm_cvtss_f32(y), q = y0 + c;
-  const float layer = q > 0.0f ? y0 * (1.0f + c) / q : 1.0f;  // as floatWarped
-  const float t0 = 0.5f * (_mm_cvtss_f32(_mm_sqrt_ss(root)) + layer);
-  const __m128 t = _mm_move_ss(root, _mm_set_ss(t0));
-  const __m128 s = _mm_mul_ps(t, _mm_load_ps(a.last)), snap = _mm_load_ps(a.snap);
+  // Lane 0 of each: the layer y0 (1 + c) / (y0 + c) as floatWarped (c > 0: y0 + c > 0), 1
+  // at c = 0.
+  __m128 layer = one;
+  if (layered) {
+    const __m128 c = _mm_max_ss(_mm_mul_ss(r, r), _mm_set_ss(kFloatLayerScaleFloor));
+    layer = _mm_div_ss(_mm_mul_ss(y, _mm_add_ss(one, c)), _mm_add_ss(y, c));
+  }
+  // lane 0: 2 t0 = y0^(1/4) + layer, lane 1: t1.
+  const __m128 t = _mm_add_ss(_mm_sqrt_ss(root), layer);
+  const __m128 s = _mm_mul_ps(t, _mm_load_ps(a.scale)), snap = _mm_load_ps(a.snap);
   const __m128i i = _mm_cvttps_epi32(_mm_add_ps(s, snap));
   const __m128 frac = _mm_sub_ps(s, _mm_cvtepi32_ps(i));
   const __m128 inside = _mm_cmpgt_ps(frac, snap);
   const __m128 f = _mm_and_ps(inside, frac);
-  const int mask = _mm_movemask_ps(inside);
-  const std::size_t stride0 = a.axis[0].stride, stride1 = a.axis[1].stride;
-  k0.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(i)) * stride0;
-  k1.offset = static_cast<std::size_t>(_mm_cvtsi128_si32(_mm_srli_si128(i, 4))) * stride1;
-  k0.step = (mask & 1) ? stride0 : 0;
-  k1.step = (mask & 2) ? stride1 : 0;
+  const unsigned mask = static_cast<unsigned>(_mm_movemask_ps(inside));
+  // The node indices (>= 0: t >= 0), unsigned, so no sign extension.
+#if defined(__x86_64__) || defined(_M_X64)
+  const std::uint64_t both = static_cast<std::uint64_t>(_mm_cvtsi128_si64(i));  // lanes 0, 1
+  const std::uint32_t i0 = static_cast<std::uint32_t>(both),
+                      i1 = static_cast<std::uint32_t>(both >> 32);
+#else
+  const std::uint32_t i0 = static_cast<std::uint32_t>(_mm_cvtsi128_si32(i));
+  const std::uint32_t i1 = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_srli_si128(i, 4)));
+#endif
+  k0.offset = static_cast<std::size_t>(i0) * a.stride[0];
+  k1.offset = static_cast<std::size_t>(i1) * a.stride[1];
+  k0.step = a.stride[0] & (std::size_t{0} - (mask & 1u));
+  k1.step = a.stride[1] & (std::size_t{0} - ((mask >> 1) & 1u));
   k0.f = _mm_cvtss_f32(f);
   k1.f = _mm_cvtss_f32(_mm_shuffle_ps(f, f, 1));
 #else
+  const float c = floatLayerScale(a.rLo, a.rHi, x[1]);
   k0 = floatCellAt(a.axis[0], x[0], c);
   k1 = floatCellAt(a.axis[1], x[1], c);
 #endif
