@@ -8,20 +8,12 @@
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
 #include "cli_util.h"
+#include "test_bake_cache.h"
 
 using namespace kiln;
 using namespace kiln::test;
 
 namespace {
-
-/// A small albedo or dfg spec of `model` whose axes include mu = 0, 1 and roughness 0 (the
-/// smooth limit: albedo 1, dfg (1 - w^5, w^5)), on the catalogue's warps.
-TableSpec Small(Quantity q, const std::string& model) {
-  const QuantityInfo& info = Describe(q);
-  std::vector<AxisSpec> axes = info.defaultAxes(model);
-  for (AxisSpec& a : axes) a.size = 9;
-  return info.makeSpec(model, axes);
-}
 
 bool SameTexels(const Table& a, const Table& b) {
   return a.data.size() == b.data.size() &&
@@ -37,7 +29,8 @@ TEST_CASE(
   for (const std::string& m : CatalogueSheenModels()) models.push_back(m);  // a copy of DFV
   for (const std::string& model : models) {
     INFO(model);
-    const TableSpec dfg = Small(Quantity::Dfg, model), albedo = Small(Quantity::Albedo, model);
+    const TableSpec dfg = test::SmallSpec(Quantity::Dfg, model),
+                    albedo = test::SmallSpec(Quantity::Albedo, model);
     NodeValueCache cache({dfg, albedo});
     BakeOptions opt;
     opt.threads = 2;
@@ -68,17 +61,17 @@ TEST_CASE(
 
 TEST_CASE("Only a dfg of the same model, nodes and channels serves as an albedo's source",
           "[bake][derived]") {
-  const TableSpec albedo = Small(Quantity::Albedo, "beckmann");
-  TableSpec otherNodes = Small(Quantity::Dfg, "beckmann");
+  const TableSpec albedo = test::SmallSpec(Quantity::Albedo, "beckmann");
+  TableSpec otherNodes = test::SmallSpec(Quantity::Dfg, "beckmann");
   otherNodes.axes[1].size = 10;
-  const TableSpec otherModel = Small(Quantity::Dfg, "ggx");
+  const TableSpec otherModel = test::SmallSpec(Quantity::Dfg, "ggx");
   NodeValueCache cache({otherNodes, otherModel, albedo});
   CHECK(cache.KeepFor(otherNodes) == nullptr);
   CHECK(cache.KeepFor(otherModel) == nullptr);
   CHECK(cache.SourceFor(albedo) == nullptr);
   // A diffuse albedo has its own rule; a fit-free kind without the hook never derives.
-  CHECK(NodeValueCache({Small(Quantity::Albedo, "burley")})
-            .SourceFor(Small(Quantity::Albedo, "burley")) == nullptr);
+  CHECK(NodeValueCache({test::SmallSpec(Quantity::Albedo, "burley")})
+            .SourceFor(test::SmallSpec(Quantity::Albedo, "burley")) == nullptr);
 }
 
 TEST_CASE("kiln bake derives an albedo after its dfg, and writes the bytes a bake of it alone does",

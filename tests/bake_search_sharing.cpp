@@ -6,27 +6,16 @@
 
 #include "baker/bake/bake.h"
 #include "baker/tables/catalogue.h"
+#include "test_bake_cache.h"
 
 using namespace kiln;
-
-namespace {
-
-/// A small albedo or dfg spec of `model` on the catalogue's warps, roughness 0 included (the
-/// smooth limit, where the albedo's 1 is not the dfg's A + B summed).
-TableSpec Small(Quantity q, const std::string& model) {
-  const QuantityInfo& info = Describe(q);
-  std::vector<AxisSpec> axes = info.defaultAxes(model);
-  for (AxisSpec& a : axes) a.size = 9;
-  return info.makeSpec(model, axes);
-}
-
-}  // namespace
 
 TEST_CASE("A microfacet albedo's search reuses its dfg's references and declares the same bound",
           "[bake][derived][search-sharing]") {
   for (const std::string& model : CatalogueMicrofacetModels()) {
     INFO(model);
-    const TableSpec dfg = Small(Quantity::Dfg, model), albedo = Small(Quantity::Albedo, model);
+    const TableSpec dfg = test::SmallSpec(Quantity::Dfg, model),
+                    albedo = test::SmallSpec(Quantity::Albedo, model);
     BakeOptions opt;
     opt.threads = 2;
     // The albedo alone: a search of its own.
@@ -56,12 +45,12 @@ TEST_CASE("A microfacet albedo's search reuses its dfg's references and declares
 }
 
 TEST_CASE("A table no search reads keeps no search references", "[bake][search-sharing]") {
-  const TableSpec dfg = Small(Quantity::Dfg, "ggx");
+  const TableSpec dfg = test::SmallSpec(Quantity::Dfg, "ggx");
   NodeValueCache alone({dfg});
   CHECK(alone.KeepFor(dfg) == nullptr);
   // A sheen albedo copies its cloth dfg's report (sharesSourceLookupError): nothing to read.
-  const TableSpec cloth = Small(Quantity::Dfg, CatalogueSheenModels().front()),
-                  sheen = Small(Quantity::Albedo, CatalogueSheenModels().front());
+  const TableSpec cloth = test::SmallSpec(Quantity::Dfg, CatalogueSheenModels().front()),
+                  sheen = test::SmallSpec(Quantity::Albedo, CatalogueSheenModels().front());
   NodeValueCache withSheen({cloth, sheen});
   REQUIRE(withSheen.KeepFor(cloth) != nullptr);
   CHECK_FALSE(withSheen.KeepFor(cloth)->keepSearchMemo);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "baker/bake/bake.h"
+#include "baker/tables/quantity.h"
 
 namespace kiln::test {
 
@@ -18,6 +19,15 @@ inline const Table& CachedBake(const TableSpec& spec, const BakeOptions& opt) {
   auto it = baked.find(key);
   if (it == baked.end()) it = baked.emplace(key, BakeTable(spec, opt)).first;
   return it->second;
+}
+
+/// A small spec of kind `q` for `model`: the kind's default axes and warps at `size` nodes each
+/// (for an albedo or dfg: mu = 0 and 1, roughness 0, the smooth limit, among the nodes).
+inline TableSpec SmallSpec(Quantity q, const std::string& model, int size = 9) {
+  const QuantityInfo& info = Describe(q);
+  std::vector<AxisSpec> axes = info.defaultAxes(model);
+  for (AxisSpec& a : axes) a.size = size;
+  return info.makeSpec(model, axes);
 }
 
 }  // namespace kiln::test

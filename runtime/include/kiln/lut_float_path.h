@@ -1,6 +1,7 @@
 // kiln/lut_float_path.h: the float arithmetic of LutSampler's fast linear lookups (kiln/lut.h)
 // on the axes whose warp is linear, sqrt, root4 or root4-layer: the warp, the cell and the
-// interpolation in float, branch-free but for the choice of warp.
+// interpolation in float, branch-free but for the choice of warp (and, on the root4-layer and
+// sqrt pair, the collapsed layer of roughness 0).
 //
 // Accuracy (the contract LutSampler states): the float warped coordinate t lies within a few
 // float ulps of 1 of the exact one, and a texel coordinate s = t (N - 1) within
