@@ -10,17 +10,14 @@
 #include <random>
 #include <vector>
 
+#include "float_bits.h"
 #include "kiln/lut.h"
 
 using namespace kiln;
 
 namespace {
 
-uint32_t Bits(float f) {
-  uint32_t u = 0;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using test::Bits;
 
 /// The float path of view v at x, one axis and one channel after the other, from the scalar
 /// parts of kiln/lut_float_path.h (what LutSampler's float path promises to compute).

@@ -13,6 +13,7 @@
 
 #include "committed_luts.h"
 #include "kiln/exr_loader.h"
+#include "float_bits.h"
 #include "kiln/lut.h"
 #include "kiln/table.h"
 
@@ -20,11 +21,7 @@ using namespace kiln;
 
 namespace {
 
-uint32_t Bits(float f) {
-  uint32_t u = 0;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using test::Bits;
 
 /// The nodes of v that a lookup reaches, dims values each, and their (i0, i1, i2).
 void ReachableNodes(const LutView& v, std::vector<double>& xs, std::vector<int>& ids) {

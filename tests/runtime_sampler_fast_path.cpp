@@ -18,6 +18,7 @@
 
 #include "committed_luts.h"
 #include "kiln/exr_loader.h"
+#include "float_bits.h"
 #include "kiln/lut.h"
 #include "kiln/table.h"
 #include "runtime_float_bound.h"
@@ -29,11 +30,7 @@ using kiln::test::LutsDir;
 
 namespace {
 
-uint32_t Bits(float f) {
-  uint32_t u = 0;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
+using test::Bits;
 
 /// Random lookup points of a view, `dims` values per point: mostly inside the axes, some on
 /// nodes, at the ends, outside them and NaN, and (for a layer warp) at r = 0 / eta = 1.
