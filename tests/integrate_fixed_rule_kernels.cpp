@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/fixed_rule_microfacet.h"
@@ -18,6 +19,7 @@
 #include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
+#include "grid_sample.h"
 
 using namespace kiln;
 
@@ -102,32 +104,57 @@ TEST_CASE(
   CHECK(evals <= 600LL * points);  // a few hundred evaluations per texel
 }
 
-TEST_CASE(
-    "The kernel's exact-Fresnel rule gives the GGX albedo with FrDielectric within 1e-7 of "
-    "adaptive quadrature at 1e-10 over (mu, alpha, eta in [1.3, 3])",
-    "[integrate][fixed-rule][fixed-rule-kernels]") {
+namespace {
+
+/// Where the exact-Fresnel rule errs most on the dense grid (the [long] test below): 6.8e-8 at
+/// mu = 1e-4, r = 0.58 to 0.74 (eta = 1.3 and 3 alike) and 5.9e-8 at mu = 1e-6, r = 0.03, as
+/// (mu, r) index pairs visited at every eta.
+const std::vector<test::GridIndex> kFresnelWorst = {{3, 12}, {3, 13}, {3, 14}, {2, 3}};
+
+/// The (mu, r) points at eta = kEtas[k]: at the ends of the eta range (1.3, 3) the grid's edges
+/// (mu = 0, 1, r = 0, 1) and the grazing view mu = 1e-9 whole and one point of each 3 x 3 block
+/// of the interior; at the etas between, the edges whole and one point of each 4 x 4 block;
+/// seeded by k; the worst points at every eta. block 0: the dense grid.
+std::vector<test::GridIndex> FresnelPoints(size_t k, size_t block) {
+  const bool end = k == 0 || k + 1 == std::size(kEtas);
+  if (block == 0) return test::StratifiedGrid(std::size(kMus), std::size(kRs), 1, 0);
+  return test::StratifiedGrid(std::size(kMus), std::size(kRs), end ? block : block + 1, 0xF7E5 + k,
+                              end ? std::vector<size_t>{1} : std::vector<size_t>{}, {},
+                              kFresnelWorst);
+}
+
+/// The worst |kernel - adaptive at 1e-10| of the exact-Fresnel rule (node counts `opt`, null:
+/// the bake's) over every eta's FresnelPoints; stopAbove >= 0: returns at the first point beyond.
+double FresnelWorst(const FixedRuleOptions* opt, size_t block, std::string& where, long long* evals,
+                    int* points, double stopAbove = -1) {
   double worst = 0;
+  for (size_t k = 0; k < std::size(kEtas); ++k)
+    for (const test::GridIndex& p : FresnelPoints(k, block)) {
+      const double mu = kMus[p.i], r = kRs[p.j], eta = kEtas[k];
+      AnyModel m = ModelAtR("ggx", r);
+      SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
+      IntegrationOptions io;
+      io.tol = 1e-10;
+      IntegrationStats st;
+      const double ref = DirectionalAlbedo(m, mu, io, st).lin;
+      const double got = opt ? FixedRuleGGXFresnelKernel(mu, AlphaOf(r), eta, *opt, evals)
+                             : FixedRuleGGXFresnelKernel(mu, AlphaOf(r), eta, evals);
+      if (points) ++*points;
+      if (std::abs(got - ref) > worst) {
+        worst = std::abs(got - ref);
+        where = "eta=" + std::to_string(eta) + " " + Where(mu, r);
+      }
+      if (stopAbove >= 0 && worst > stopAbove) return worst;
+    }
+  return worst;
+}
+
+/// The bake's exact-Fresnel rule within kTarget at FresnelWorst's points.
+void CheckFresnelGrid(size_t block) {
   std::string where;
   long long evals = 0;
   int points = 0;
-  for (double eta : kEtas)
-    for (double r : kRs)
-      for (size_t i = 0; i < std::size(kMus); ++i) {
-        if (eta != 1.3 && eta != 3.0 && i % 2 == 1) continue;  // at the ends: every view
-        const double mu = kMus[i];
-        AnyModel m = ModelAtR("ggx", r);
-        SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
-        IntegrationOptions io;
-        io.tol = 1e-10;
-        IntegrationStats st;
-        const double ref = DirectionalAlbedo(m, mu, io, st).lin;
-        const double got = FixedRuleGGXFresnelKernel(mu, AlphaOf(r), eta, &evals);
-        ++points;
-        if (std::abs(got - ref) > worst) {
-          worst = std::abs(got - ref);
-          where = "eta=" + std::to_string(eta) + " " + Where(mu, r);
-        }
-      }
+  const double worst = FresnelWorst(nullptr, block, where, &evals, &points);
   std::printf(
       "ggx-fresnel-albedo kernel rule vs adaptive 1e-10 at %d points: worst %.3g at %s; "
       "%.0f evals/pt\n",
@@ -135,7 +162,30 @@ TEST_CASE(
   INFO("worst " << worst << " at " << where);
   CHECK(worst <= kTarget);
   CHECK(evals <= 700LL * points);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "The kernel's exact-Fresnel rule gives the GGX albedo with FrDielectric within 1e-7 of "
+    "adaptive quadrature at 1e-10 over a stratified (mu, alpha, eta in [1.3, 3]) grid",
+    "[integrate][fixed-rule][fixed-rule-kernels]") {
+  CheckFresnelGrid(3);
   CHECK(FixedRuleGGXFresnelKernel(0.3, 0.2, 1.0) == 0);  // F = 0 at eta = 1
+}
+
+TEST_CASE(
+    "The kernel's exact-Fresnel rule is within 1e-7 of adaptive quadrature at 1e-10 over the "
+    "dense (mu, alpha, eta) grid (long: run by hand)",
+    "[integrate][fixed-rule][fixed-rule-kernels][long]") {
+  CheckFresnelGrid(0);
+}
+
+TEST_CASE("The exact-Fresnel rule with too few nodes misses the target on the stratified grid",
+          "[integrate][fixed-rule][fixed-rule-kernels]") {
+  const FixedRuleOptions coarse = Coarse();
+  std::string where;
+  CHECK(FresnelWorst(&coarse, 3, where, nullptr, nullptr, kTarget) > kTarget);
 }
 
 TEST_CASE("Too few nodes miss the kernel variants' target: their accuracy checks can fail",
