@@ -1,8 +1,13 @@
 // The fixed rules of the on-request Unity / Lafortune albedo tables against the adaptive
 // integrator (issue #16: bake error below 1e-6): unity-brdf1 and unity-brdf2
-// (integrate/fixed_rule_microfacet.h), lafortune and unity-brdf3 (integrate/fixed_rule_lobe.h).
+// (integrate/fixed_rule_microfacet.h; on stratified grids, tests/grid_sample.h, their edges, kinks
+// and measured worst points whole, the dense grids a [long] test), lafortune and unity-brdf3
+// (integrate/fixed_rule_lobe.h).
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "baker/bake/bake.h"
 #include "baker/integrate/fixed_rule_lobe.h"
@@ -12,6 +17,87 @@
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
 #include "baker/tables/catalogue.h"
+#include "grid_sample.h"
+
+namespace kiln {
+namespace {
+
+/// The worst |rule - adaptive at 1e-10| of Unity model `id`'s microfacet rule with node counts
+/// `opt` at the points `pts` of mus x rs, relative where E exceeds 1 (unity-brdf2), as the lookup
+/// error is; the adaptive reference of mu = 0 is taken at `muZero`. stopAbove >= 0: returns at
+/// the first point beyond it.
+template <size_t M, size_t R>
+double UnityWorst(const char* id, const MicrofacetRuleOptions& opt, const double (&mus)[M],
+                  const double (&rs)[R], const std::vector<test::GridIndex>& pts, double muZero,
+                  std::string& where, double stopAbove = -1) {
+  FixedRuleModel m;
+  REQUIRE(FixedRuleModelFor(id, &m));
+  double worst = 0;
+  for (const test::GridIndex& p : pts) {
+    const double mu = mus[p.i], r = rs[p.j];
+    ModelParams params;
+    params.roughness = r;
+    IntegrationOptions io;
+    io.tol = 1e-10;
+    IntegrationStats stats;
+    RhoParts e = DirectionalAlbedo(MakeModel(id, params), mu > 0 ? mu : muZero, io, stats);
+    std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, mu, r * r, opt);
+    REQUIRE(std::isfinite(ab[0] + ab[1]));
+    const double err = std::abs(ab[0] + ab[1] - (e.lin + e.quad)) / std::max(1.0, e.lin + e.quad);
+    if (err > worst) {
+      worst = err;
+      where = "mu " + std::to_string(mu) + " r " + std::to_string(r);
+    }
+    if (stopAbove >= 0 && worst > stopAbove) break;
+  }
+  return worst;
+}
+
+/// The node counts of the rules that must fail.
+MicrofacetRuleOptions CoarseUnity() {
+  MicrofacetRuleOptions c;
+  c.outerNodes = 4;
+  c.bulkNodes = c.gradedNodes = c.deficitNodes = c.lightNodes = 3;
+  c.nodesPerEFold = 0;
+  return c;
+}
+
+// unity-brdf1's grid: mu = 0 (against the adaptive value at 1e-12: at 0 exactly it lies 1.4e-6
+// off its own limit at r = 0.13, kiln integrate albedo --model unity-brdf1 --roughness 0.13
+// --mu 0, then --mu 1e-12), the grazing decades, the bulk; r = 0 to 1 with 0.13.
+const double kUnity1Mus[] = {0,   1e-12, 1e-9, 1e-6, 1e-4, 1e-3, 3e-3, 0.01, 0.03,
+                             0.1, 0.2,   0.35, 0.5,  0.7,  0.85, 0.95, 1};
+const double kUnity1Rs[] = {0,   0.02, 0.05, 0.1,  0.115, 0.13, 0.16,
+                            0.2, 0.25, 0.3,  0.45, 0.6,   0.8,  1};
+
+/// The stratified sample of unity-brdf1's grid (block 1: the dense grid): the edges (mu = 0, 1,
+/// r = 0, 1) and r = 0.13 whole, one point of each 3 x 3 block of the interior, and where the
+/// dense grid measured the rule's largest errors: 2.3e-7 at r = 0.16, mu = 1e-3, 1.8e-7 at
+/// r = 0.16, mu = 1e-6, 1.6e-7 and 1.5e-7 at r = 0.6 and 0.8, mu = 0.01.
+std::vector<test::GridIndex> Unity1Points(size_t block) {
+  return test::StratifiedGrid(std::size(kUnity1Mus), std::size(kUnity1Rs), block, 0x0B1, {}, {5},
+                              {{5, 6}, {3, 6}, {7, 11}, {7, 12}});
+}
+
+// unity-brdf2's grid. Its kinks: o.h = sqrt(0.001) / 2 (Unity_SafeNormalize, reached for
+// mu < 0.032) and o.h = sqrt(0.1) (max(0.1, l.h^2): through h = n at mu = 0.316, above the
+// horizon for mu < 0.6).
+const double kUnity2Mus[] = {0,   1e-9, 1e-4,  1e-3, 0.01, 0.02, 0.03, 0.05, 0.1,  0.2,  0.25,
+                             0.3, 0.31, 0.316, 0.32, 0.35, 0.5,  0.58, 0.7,  0.85, 0.95, 1};
+const double kUnity2Rs[] = {0, 0.02, 0.04, 0.056, 0.07, 0.1, 0.15, 0.2, 0.3, 0.45, 0.6, 0.8, 1};
+
+/// The stratified sample of unity-brdf2's grid (block 1: the dense grid): the edges (mu = 0, 1,
+/// r = 0, 1) and the kinks mu = 0.03 and 0.316 whole, one point of each 3 x 3 block of the
+/// interior, and where the dense grid measured the rule's largest errors: 1.9e-7 at r = 0.056,
+/// mu = 0.02, 1.7e-7 at r = 0.45, mu = 0.32, 1.4e-7 at r = 0.056, mu = 0.05 and at r = 0.3,
+/// mu = 0.32.
+std::vector<test::GridIndex> Unity2Points(size_t block) {
+  return test::StratifiedGrid(std::size(kUnity2Mus), std::size(kUnity2Rs), block, 0x0B2, {6, 13},
+                              {}, {{5, 3}, {14, 9}, {7, 3}, {14, 8}});
+}
+
+}  // namespace
+}  // namespace kiln
 
 namespace kiln {
 
@@ -19,28 +105,33 @@ TEST_CASE("unity-brdf1: the fixed rule's albedo is the adaptive integrator's wit
           "[unity-rule]") {
   FixedRuleModel m;
   REQUIRE(FixedRuleModelFor("unity-brdf1", &m));
-  double worst = 0, wmu = 0, wr = 0;
-  const double mus[] = {0,   1e-12, 1e-9, 1e-6, 1e-4, 1e-3, 3e-3, 0.01, 0.03,
-                        0.1, 0.2,   0.35, 0.5,  0.7,  0.85, 0.95, 1};
-  const double rs[] = {0, 0.02, 0.05, 0.1, 0.115, 0.13, 0.16, 0.2, 0.25, 0.3, 0.45, 0.6, 0.8, 1};
-  for (double r : rs)
-    for (double mu : mus) {
-      ModelParams p;
-      p.roughness = r;
-      IntegrationOptions opt;
-      opt.tol = 1e-10;
-      IntegrationStats stats;
-      // At mu = 0 the rule takes the limit mu -> 0+; the adaptive integrator's value at mu = 0
-      // exactly lies 1.4e-6 off its own limit (r = 0.13: kiln integrate albedo --model
-      // unity-brdf1 --roughness 0.13 --mu 0, then --mu 1e-12), so mu = 0 is compared with it.
-      RhoParts e = DirectionalAlbedo(MakeModel("unity-brdf1", p), mu > 0 ? mu : 1e-12, opt, stats);
-      std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, mu, r * r);
-      REQUIRE(std::isfinite(ab[0] + ab[1]));
-      double err = std::abs(ab[0] + ab[1] - (e.lin + e.quad));
-      if (err > worst) worst = err, wmu = mu, wr = r;
-    }
-  INFO("worst " << worst << " at mu " << wmu << " r " << wr);
+  std::string where;
+  const double worst = UnityWorst("unity-brdf1", TunedMicrofacetRuleOptions(m), kUnity1Mus,
+                                  kUnity1Rs, Unity1Points(3), 1e-12, where);
+  INFO("worst " << worst << " at " << where);
   CHECK(worst < 6e-7);  // kFixedRuleBound, the bound its texels declare
+}
+
+TEST_CASE("unity-brdf1 and unity-brdf2: the rules on their dense grids (long: run by hand)",
+          "[unity-rule][long]") {
+  FixedRuleModel m1, m2;
+  REQUIRE(FixedRuleModelFor("unity-brdf1", &m1));
+  REQUIRE(FixedRuleModelFor("unity-brdf2", &m2));
+  std::string where;
+  CHECK(UnityWorst("unity-brdf1", TunedMicrofacetRuleOptions(m1), kUnity1Mus, kUnity1Rs,
+                   Unity1Points(1), 1e-12, where) < 6e-7);
+  CHECK(UnityWorst("unity-brdf2", TunedMicrofacetRuleOptions(m2), kUnity2Mus, kUnity2Rs,
+                   Unity2Points(1), 0, where) < 6e-7);
+}
+
+TEST_CASE(
+    "unity-brdf1 and unity-brdf2: rules with too few nodes miss the bound on the sampled grids",
+    "[unity-rule]") {
+  std::string where;
+  CHECK(UnityWorst("unity-brdf1", CoarseUnity(), kUnity1Mus, kUnity1Rs, Unity1Points(3), 1e-12,
+                   where, 6e-7) > 6e-7);
+  CHECK(UnityWorst("unity-brdf2", CoarseUnity(), kUnity2Mus, kUnity2Rs, Unity2Points(3), 0, where,
+                   6e-7) > 6e-7);
 }
 
 }  // namespace kiln
@@ -207,28 +298,10 @@ TEST_CASE("unity-brdf2: the fixed rule's albedo is the adaptive integrator's wit
           "[unity-rule]") {
   FixedRuleModel m;
   REQUIRE(FixedRuleModelFor("unity-brdf2", &m));
-  double worst = 0, wmu = 0, wr = 0;
-  // Its kinks: o.h = sqrt(0.001) / 2 (Unity_SafeNormalize, reached for mu < 0.032) and o.h =
-  // sqrt(0.1) (max(0.1, l.h^2): through h = n at mu = 0.316, above the horizon for mu < 0.6).
-  const double mus[] = {0,   1e-9, 1e-4,  1e-3, 0.01, 0.02, 0.03, 0.05, 0.1,  0.2,  0.25,
-                        0.3, 0.31, 0.316, 0.32, 0.35, 0.5,  0.58, 0.7,  0.85, 0.95, 1};
-  const double rs[] = {0, 0.02, 0.04, 0.056, 0.07, 0.1, 0.15, 0.2, 0.3, 0.45, 0.6, 0.8, 1};
-  for (double r : rs)
-    for (double mu : mus) {
-      ModelParams p;
-      p.roughness = r;
-      IntegrationOptions opt;
-      opt.tol = 1e-10;
-      IntegrationStats stats;
-      RhoParts e = DirectionalAlbedo(MakeModel("unity-brdf2", p), mu, opt, stats);
-      std::array<double, 2> ab = FixedRuleMicrofacetDFG(m, mu, r * r);
-      REQUIRE(std::isfinite(ab[0] + ab[1]));
-      double err = std::abs(ab[0] + ab[1] - (e.lin + e.quad));
-      // E exceeds 1 here (not energy conserving): relative above 1, as the lookup error is.
-      err /= std::max(1.0, e.lin + e.quad);
-      if (err > worst) worst = err, wmu = mu, wr = r;
-    }
-  INFO("worst " << worst << " at mu " << wmu << " r " << wr);
+  std::string where;
+  const double worst = UnityWorst("unity-brdf2", TunedMicrofacetRuleOptions(m), kUnity2Mus,
+                                  kUnity2Rs, Unity2Points(3), 0, where);
+  INFO("worst " << worst << " at " << where);
   CHECK(worst < 6e-7);  // kFixedRuleBound, the bound its texels declare
 }
 
