@@ -137,8 +137,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Every diffuse model's fixed rule is within its bound of adaptive quadrature at 1e-10 over "
-    "the dense (mu, r) grid (long: run by hand)",
+    "Dense grid: every diffuse model's fixed rule is within its bound of adaptive quadrature at "
+    "1e-10 over all of (mu, r) (long: run by hand)",
     "[integrate][fixed-rule-diffuse][long]") {
   CheckDiffuseModels([](const std::string&) { return true; }, 1);
 }

@@ -175,8 +175,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The kernel's exact-Fresnel rule is within 1e-7 of adaptive quadrature at 1e-10 over the "
-    "dense (mu, alpha, eta) grid (long: run by hand)",
+    "Dense grid: the kernel's exact-Fresnel rule is within 1e-7 of adaptive quadrature at 1e-10 "
+    "over all of (mu, alpha, eta) (long: run by hand)",
     "[integrate][fixed-rule][fixed-rule-kernels][long]") {
   CheckFresnelGrid(0);
 }

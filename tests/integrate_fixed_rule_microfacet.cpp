@@ -122,8 +122,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "Each microfacet model's fixed rule gives A and B within 1e-7 of adaptive quadrature at "
-    "1e-10 over the dense (mu, alpha) grid (long: run by hand)",
+    "Dense grid: each microfacet model's fixed rule gives A and B within 1e-7 of adaptive "
+    "quadrature at 1e-10 over all of (mu, alpha) (long: run by hand)",
     "[integrate][fixed-rule][fixed-rule-microfacet][long]") {
   CheckMicrofacetGrid(1);
 }

@@ -113,8 +113,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "The sheen fixed rule is within its declared bound of adaptive quadrature on the dense grid "
-    "(long: run by hand)",
+    "Dense grid: the sheen fixed rule is within its declared bound of adaptive quadrature over "
+    "all of (mu, r) (long: run by hand)",
     "[sheen][fixed-rule][long]") {
   for (const char* id : {"charlie", "charlie-smith", "ashikhmin-velvet"}) CheckSheenGrid(id, 1);
 }
