@@ -11,6 +11,7 @@
 
 #include "baker/integrate/fixed_rule_sheen.h"
 #include "baker/integrate/quantities.h"
+#include "baker/models/registry.h"
 #include "baker/models/sheen.h"
 #include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
@@ -112,10 +113,18 @@ void CheckCharlieAverage(const char* model, double r) {
   p.roughness = r;
   IntegrationOptions opt;
   opt.tol = 1e-9;
-  double want = AverageAlbedo(MakeModel(model, p), opt, exact).lin;
+  const RhoParts avg = AverageAlbedo(MakeModel(model, p), opt, exact);
+  const double want = avg.lin;
   WARN(model << "-albedo-avg at r = " << r << ": |fixed - adaptive| = " << std::abs(got - want));
   CHECK(std::abs(got - want) < 1e-6);
   CHECK(fixed.errorEstimate < 1e-6);
+  // The average-albedo stress checks at the roughness edges (tests/stress_integrals.cpp shares
+  // this reference there): finite, non-negative, at most 1 where the model conserves energy.
+  const double total = avg.lin + avg.quad;
+  const ModelInfo& info = *FindModel(model);
+  CHECK(std::isfinite(total));
+  if (info.nonNegative) CHECK(total >= 0);
+  if (info.energyConserving) CHECK(total <= 1 + 1e-6);
 }
 
 }  // namespace

@@ -84,9 +84,17 @@ void CheckWardAverage(const Variant& v, std::initializer_list<double> rs) {
     IntegrationOptions opt;
     opt.tol = 1e-9;
     IntegrationStats stats;
-    const double ref = AverageAlbedo(MakeModel(v.id, p), opt, stats).lin;
+    const RhoParts avg = AverageAlbedo(MakeModel(v.id, p), opt, stats);
+    const double ref = avg.lin;
     INFO(v.id << " r " << r);
     CHECK(FixedRuleWardAlbedoAvg(v.norm, r * r) == Approx(ref).margin(kWardRuleBound));
+    // The average-albedo stress checks at the roughness edge r = 1 (tests/stress_integrals.cpp
+    // shares this reference there): finite, non-negative, at most 1 where energy conserving.
+    const double total = avg.lin + avg.quad;
+    const ModelInfo& info = *FindModel(v.id);
+    CHECK(std::isfinite(total));
+    if (info.nonNegative) CHECK(total >= 0);
+    if (info.energyConserving) CHECK(total <= 1 + 1e-6);
   }
 }
 
