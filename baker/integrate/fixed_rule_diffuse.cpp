@@ -30,6 +30,7 @@
 
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "baker/math/quadrature.h"
@@ -77,6 +78,16 @@ std::vector<double> GradedTowardsEnd(double lo, double hi, double s) {
 template <class M>
 constexpr bool kGrazingPoles = std::is_same_v<M, HammonDiffuse> || std::is_same_v<M, OrenNayar>;
 
+/// Models whose Parts splits into factors of the polar angles (PolarFactors) and the rest
+/// (PartsAt): Oren-Nayar (full, qualitative) and Gotanda's GGX diffuse, whose polar factors
+/// (acos, sin, tan, pow) are most of an evaluation.
+template <class M, class = void>
+constexpr bool kHasPolarFactors = false;
+template <class M>
+constexpr bool kHasPolarFactors<
+    M, std::void_t<decltype(std::declval<const M&>().PolarFactors(std::declval<PairGeometry>()))>> =
+    true;
+
 template <class M>
 RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
@@ -115,10 +126,26 @@ RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long lon
   for (size_t i = 0; i < tx.size(); ++i) {
     double sinT = std::sin(tx[i]), cosT = std::cos(tx[i]);
     double rowLin = 0, rowQuad = 0;
-    for (size_t j = 0; j < px.size(); ++j) {
-      RhoParts p = m.Parts(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], cosT});
-      rowLin += pw[j] * p.lin;
-      rowQuad += pw[j] * p.quad;
+    if constexpr (kHasPolarFactors<M>) {
+      // A row has one theta_l: the model's polar factors once, then each azimuth's (Parts' own
+      // operations, so Parts' bits). Below the horizon Parts is 0 at every azimuth: the row's
+      // sums stay 0.
+      const PairGeometry first(wo, Vec3{sinT * cosPhi[0], sinT * sinPhi[0], cosT});
+      if (!first.Below()) {
+        const auto polar = m.PolarFactors(first);
+        for (size_t j = 0; j < px.size(); ++j) {
+          RhoParts p =
+              m.PartsAt(polar, PairGeometry(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], cosT}));
+          rowLin += pw[j] * p.lin;
+          rowQuad += pw[j] * p.quad;
+        }
+      }
+    } else {
+      for (size_t j = 0; j < px.size(); ++j) {
+        RhoParts p = m.Parts(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], cosT});
+        rowLin += pw[j] * p.lin;
+        rowQuad += pw[j] * p.quad;
+      }
     }
     double wt = 2 * sinT * cosT * tw[i];
     lin += wt * rowLin;

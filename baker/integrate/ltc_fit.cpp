@@ -38,6 +38,7 @@
 //   the sphere (at most 2: two disjoint densities), by the paper's MIS of the lobe's proposal
 //   and the fitted LTC's own samples, the norm from the same lobe samples (LtcFitError).
 #include "baker/integrate/ltc_fit.h"
+#include "baker/integrate/ltc_objective.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -52,7 +53,7 @@
 namespace kiln {
 namespace {
 
-constexpr double kInvPi = 1 / Pi;
+constexpr double kInvPi = kLtcInvPi;
 
 /// The cosine-weighted direction at (u1, u2): sin^2 = u1.
 Vec3 CosineSample(double u1, double u2) {
@@ -619,15 +620,7 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
     LtcMatrix mt = LtcMatrix::From(FromSearch(x, dim, isotropic, z));
     double sum = 0;
     if (p == 2) {
-      const double i0 = mt.inv[0], i2 = mt.inv[2], i4 = mt.inv[4], i6 = mt.inv[6], i8 = mt.inv[8];
-      const double scale = kInvPi * mt.detInv;
-      double cross = 0;
-      for (size_t k = 0; k < np; ++k) {
-        double qx = i0 * px[k] + i2 * pz[k], qy = i4 * py[k], qz = i6 * px[k] + i8 * pz[k];
-        double len2 = qx * qx + qy * qy + qz * qz;
-        cross += pc[k] * (std::max(qz, 0.0) * scale / (len2 * len2));
-      }
-      sum = fConst - cross;
+      sum = fConst - LtcCrossSum(mt, px.data(), py.data(), pz.data(), pc.data(), np);
     } else {
       for (const Point& q : pts) {
         double d = mt.Eval(q.l);
@@ -636,14 +629,7 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
     }
     // At l = M c / |M c| (c a cosine direction): D(l) = c.z / pi |det M^-1| |M c|^3 (M keeps y
     // apart too).
-    const double m0 = mt.m[0], m2 = mt.m[2], m4 = mt.m[4], m6 = mt.m[6], m8 = mt.m[8];
-    const double k = kInvPi * mt.detInv;
-    double own = 0;
-    for (size_t j = 0; j < cx.size(); ++j) {
-      double ax = m0 * cx[j] + m2 * cz[j], ay = m4 * cy[j], az = m6 * cx[j] + m8 * cz[j];
-      double len2 = ax * ax + ay * ay + az * az, d = cz[j] * k * len2 * std::sqrt(len2);
-      own += p == 2 ? d : d * d;
-    }
+    const double own = LtcOwnSum(mt, cx.data(), cy.data(), cz.data(), cx.size(), p);
     return sum + own / (double(m) * m);
   };
   double x[4] = {std::log(std::max(start.m11, 1e-9)), std::log(std::max(start.m22, 1e-9)),

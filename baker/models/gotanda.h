@@ -39,9 +39,13 @@ struct GotandaGGXDiffuse {
   static constexpr IntegrationDomain kDomain = IntegrationDomain::Light;
   double sigma = 0.5, rho = 1, f0 = 0;
 
-  RhoParts Parts(Vec3 wo, Vec3 wi) const {
-    PairGeometry g(wo, wi);
-    if (g.Below()) return {};
+  /// The factors of Parts that depend on mu_o and mu_l alone (as OrenNayar::Polar): the
+  /// prefactor, F_r L_m / mu_l and V_d / mu_l.
+  struct Polar {
+    double scale, FrLm, VdOverMu;
+  };
+  /// Polar of g's mu_o and mu_l.
+  Polar PolarFactors(const PairGeometry& g) const {
     double s = sigma, s2 = s * s, mu_o = g.mu_o, mu_l = g.mu_l;
     double den = s2 + 1.36053;  // the fit's denominator, shared by its first two factors
     double Fr = (1 - (0.542026 * s2 + 0.303573 * s) / den) *
@@ -54,9 +58,18 @@ struct GotandaGGXDiffuse {
                       ((1 - 0.5 * s) + 0.5 * s * mu_l);
     double p = (1 - 0.3726732 * mu_o * mu_o) / (0.188566 + 0.388410 * mu_o);
     double VdOverMu = s2 / ((s2 + 0.09) * (1.31072 + 0.995584 * mu_o)) * OneMinusPowOverX(mu_l, p);
-    double d = g.ol - mu_o * mu_l;
-    double Bp = d < 0 ? 1.4 * mu_o * mu_l * d : d;
-    return {21.0 / (20.0 * Pi) * (1 - f0) * (Fr * LmOverMu + VdOverMu * Bp), 0};
+    return {21.0 / (20.0 * Pi) * (1 - f0), Fr * LmOverMu, VdOverMu};
+  }
+  /// Parts at g (above the horizon) from its PolarFactors.
+  RhoParts PartsAt(const Polar& p, const PairGeometry& g) const {
+    double d = g.ol - g.mu_o * g.mu_l;
+    double Bp = d < 0 ? 1.4 * g.mu_o * g.mu_l * d : d;
+    return {p.scale * (p.FrLm + p.VdOverMu * Bp), 0};
+  }
+  RhoParts Parts(Vec3 wo, Vec3 wi) const {
+    PairGeometry g(wo, wi);
+    if (g.Below()) return {};
+    return PartsAt(PolarFactors(g), g);
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).At(rho); }
 };

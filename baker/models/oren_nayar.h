@@ -14,20 +14,39 @@ struct OrenNayar {
   static constexpr IntegrationDomain kDomain = IntegrationDomain::Light;
   double sigma = 0.5, rho = 1;
 
+  /// The factors of Parts that depend on the polar angles alone (a row of constant theta_l of the
+  /// diffuse fixed rule evaluates them once: PolarFactors, then PartsAt at each azimuth, the
+  /// same operations as Parts, so the same bits).
+  struct Polar {
+    double C1, C2Front, C2Back, C3, tanBeta, tanMid, f2Scale, beta2;
+  };
+  /// Polar of g's theta_o and theta_l (g.mu_o and g.mu_l alone).
+  Polar PolarFactors(const PairGeometry& g) const {
+    double theta_o = g.ThetaO(), theta_l = g.ThetaL();
+    double alpha = std::max(theta_o, theta_l), beta = std::min(theta_o, theta_l);
+    double s2 = sigma * sigma;
+    Polar p;
+    p.C1 = 1 - 0.5 * s2 / (s2 + 0.33);
+    p.C2Front = 0.45 * s2 / (s2 + 0.09) * std::sin(alpha);
+    p.C2Back = 0.45 * s2 / (s2 + 0.09) * (std::sin(alpha) - std::pow(2 * beta / Pi, 3));
+    p.C3 = 0.125 * s2 / (s2 + 0.09) * Sqr(4 * alpha * beta / (Pi * Pi));
+    p.tanBeta = std::tan(beta);
+    p.tanMid = std::tan((alpha + beta) / 2);
+    p.f2Scale = 0.17 * InvPi * s2 / (s2 + 0.13);
+    p.beta2 = Sqr(2 * beta / Pi);
+    return p;
+  }
+  /// Parts at g (above the horizon) from its PolarFactors.
+  RhoParts PartsAt(const Polar& p, const PairGeometry& g) const {
+    double cosPhi = g.cosPhi, C2 = cosPhi >= 0 ? p.C2Front : p.C2Back;
+    double f1 = InvPi * (p.C1 + cosPhi * C2 * p.tanBeta + (1 - std::abs(cosPhi)) * p.C3 * p.tanMid);
+    double f2 = p.f2Scale * (1 - cosPhi * p.beta2);
+    return {f1, f2};
+  }
   RhoParts Parts(Vec3 wo, Vec3 wi) const {
     PairGeometry g(wo, wi);
     if (g.Below()) return {};
-    double theta_o = g.ThetaO(), theta_l = g.ThetaL();
-    double alpha = std::max(theta_o, theta_l), beta = std::min(theta_o, theta_l);
-    double s2 = sigma * sigma, cosPhi = g.cosPhi;
-    double C1 = 1 - 0.5 * s2 / (s2 + 0.33);
-    double C2 = 0.45 * s2 / (s2 + 0.09) *
-                (cosPhi >= 0 ? std::sin(alpha) : std::sin(alpha) - std::pow(2 * beta / Pi, 3));
-    double C3 = 0.125 * s2 / (s2 + 0.09) * Sqr(4 * alpha * beta / (Pi * Pi));
-    double f1 = InvPi * (C1 + cosPhi * C2 * std::tan(beta) +
-                         (1 - std::abs(cosPhi)) * C3 * std::tan((alpha + beta) / 2));
-    double f2 = 0.17 * InvPi * s2 / (s2 + 0.13) * (1 - cosPhi * Sqr(2 * beta / Pi));
-    return {f1, f2};
+    return PartsAt(PolarFactors(g), g);
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).At(rho); }
 };
@@ -48,12 +67,24 @@ struct OrenNayarQualitative {
     double s2 = sigma * sigma;
     return 0.45 * s2 / (s2 + 0.09);
   }
+  /// The factors of Parts that depend on the polar angles alone (as OrenNayar::Polar).
+  struct Polar {
+    double A, B, sinAlpha, tanBeta;
+  };
+  /// Polar of g's theta_o and theta_l (g.mu_o and g.mu_l alone).
+  Polar PolarFactors(const PairGeometry& g) const {
+    double theta_o = g.ThetaO(), theta_l = g.ThetaL();
+    double alpha = std::max(theta_o, theta_l), beta = std::min(theta_o, theta_l);
+    return {A(), B(), std::sin(alpha), std::tan(beta)};
+  }
+  /// Parts at g (above the horizon) from its PolarFactors.
+  RhoParts PartsAt(const Polar& p, const PairGeometry& g) const {
+    return {InvPi * (p.A + p.B * std::max(0.0, g.cosPhi) * p.sinAlpha * p.tanBeta), 0};
+  }
   RhoParts Parts(Vec3 wo, Vec3 wi) const {
     PairGeometry g(wo, wi);
     if (g.Below()) return {};
-    double theta_o = g.ThetaO(), theta_l = g.ThetaL();
-    double alpha = std::max(theta_o, theta_l), beta = std::min(theta_o, theta_l);
-    return {InvPi * (A() + B() * std::max(0.0, g.cosPhi) * std::sin(alpha) * std::tan(beta)), 0};
+    return PartsAt(PolarFactors(g), g);
   }
   double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).At(rho); }
 };
