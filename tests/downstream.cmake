@@ -12,8 +12,8 @@
 # runs; with the stamp removed kiln runs and says the table is up to date, which stays the same
 # file (inode and mtime).
 # Run by CTest: cmake -DKILN_BUILD_DIR=... -DKILN_SOURCE_DIR=... -DKILN=... -P downstream.cmake
-# -DKILN_DOWNSTREAM_WAYS=package, =subdirectory or =project (or a comma list) checks those ways alone
-# (CTest runs each way as a test of its own); unset: all three.
+# -DKILN_DOWNSTREAM_WAYS=package or =subdirectory,project checks those ways alone (CTest runs the
+# two halves as tests of their own); unset: all three.
 cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...)
 foreach(var KILN_BUILD_DIR KILN_SOURCE_DIR KILN)
   if(NOT ${var})
