@@ -55,76 +55,102 @@ namespace {
 /// The shards of the check below: CTest runs each as a test of its own (in parallel with -j).
 constexpr int kTexelCheckShards = 8;
 
-/// The sampled texels of a table of n texels: every 7th of a table of more than 60, else every
-/// one; shard s takes the j-th of them for (j + rotation) % kTexelCheckShards == s. Each kind
-/// rotates by its own index, so that the few costly texels of the small tables (the averages)
-/// spread over all shards, and the shards together check every sampled texel once.
+/// The texels of shard `shard` of a table of n texels: the j-th for (j + rotation) %
+/// kTexelCheckShards == shard. Each kind rotates by its own index, so that the costly texels of
+/// the small tables (the averages) spread over all shards; the shards together take every texel
+/// once.
 std::vector<size_t> ShardTexels(size_t n, int shard, size_t rotation) {
   std::vector<size_t> out;
-  const size_t step = n > 60 ? 7 : 1;
-  for (size_t i = 0, j = rotation; i < n; i += step, ++j)
+  for (size_t i = 0, j = rotation; i < n; ++i, ++j)
     if (j % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
   return out;
 }
 
-/// The reference's tolerance in the texel check of an average: a thousandth of the 1e-6 it
-/// proves and at most a sixtieth of the smallest declared bake error (5.96e-8), so the
-/// reference's own error moves no verdict. The other kinds take kTexelRefTolE (cheap there).
+/// The reference's tolerance in the texel check: a thousandth of the 1e-6 it proves and at most
+/// a sixtieth of the smallest declared bake error (5.96e-8), so the reference's own error moves no
+/// verdict (a texel off by 2e-6 stays more than 1e-6 from it).
 constexpr double kTexelRefTol = 1e-9;
-constexpr double kTexelRefTolE = 1e-11;
+/// An average's nested adaptive reference (an integral over mu of E by adaptive quadrature: the
+/// glass averages take ~1e7 integrand evaluations a texel), at its corners and worst-departing
+/// texels; a sixtieth of the averages' smallest declared bake error (5.7e-7).
+constexpr double kNestedRefTol = 1e-8;
 
-/// Seeded Latin-hypercube texels of a 2D average's check, besides its corners and its
-/// worst-departing texels.
-constexpr int kAverageSampleTexels = 4;
+/// A table of at most this many texels has every texel checked (every kind at size 5 but the
+/// exit glass E pair, whose split mu axis gives 824).
+constexpr size_t kEveryTexelMax = 128;
+/// A larger table: its corners, its kBakeWorstNodes worst-departing texels and this many seeded
+/// Latin-hypercube texels (verify::BakeCheckNodes, stratified over every axis).
+constexpr int kSampledTexels = 128;
 
-/// The texels the check compares, of which ShardTexels deals the shards theirs: every one of a
-/// table of E (every 7th above 60 texels, ShardTexels), every one of a 1D average; a 2D average
-/// (each texel an integral of integrals: ~1e7 integrand evaluations for the glass averages)
-/// at the nodes `kiln verify` checks (verify::BakeCheckNodes, its own seed): every corner, the
-/// kBakeWorstNodes texels that depart most from the line through their neighbours (where a
-/// texel off its function shows), and kAverageSampleTexels Latin-hypercube texels.
+/// The texels the check compares (ShardTexels deals them): every one, or for a table of more
+/// than kEveryTexelMax, the corners, the worst-departing and a stratified sample.
 std::vector<size_t> CheckedTexels(const TableSpec& spec, const Table& t) {
-  const bool average = std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos;
-  if (average && spec.axes.size() >= 2) {
-    std::vector<size_t> nodes = verify::BakeCheckNodes(spec, t, kAverageSampleTexels, 0x74657874);
-    std::sort(nodes.begin(), nodes.end());
-    return nodes;
+  std::vector<size_t> out;
+  if (spec.TexelCount() > kEveryTexelMax) {
+    out = verify::BakeCheckNodes(spec, t, kSampledTexels, 0x74657874);
+    std::sort(out.begin(), out.end());
+    return out;
   }
-  std::vector<size_t> all(spec.TexelCount());
-  for (size_t i = 0; i < all.size(); ++i) all[i] = i;
-  return all;
+  for (size_t i = 0; i < spec.TexelCount(); ++i) out.push_back(i);
+  return out;
 }
 
-/// Re-integrates shard `shard` of the sampled texels (ShardTexels) of each of OneOfEachKind(5)
-/// by adaptive quadrature (kTexelRefTol for an average, whose reference is an integral of
-/// integrals: the glass averages take ~20M integrand evaluations a texel at 1e-10, 30% fewer at
-/// 1e-9; kTexelRefTolE for the others) and compares them with what the bake stored (float32).
-/// The shards run in one process share the bakes (test::CachedBake).
+/// Whether `spec` is an average over mu with its own outer reference (QuantityInfo::
+/// verifyReference: adaptive quadrature over mu of E by its 3D table's rule, which the E kinds'
+/// own texels here hold to adaptive quadrature).
+bool HasOuterReference(const TableSpec& spec) {
+  return Describe(spec.quantity).verifyReference != nullptr;
+}
+
+/// The error of texel i of `t` (float32, relative above 1, the integral channels): against the
+/// kind's outer reference for an average, else adaptive quadrature, both to kTexelRefTol; with
+/// `nested` (an average's corners and worst-departing texels, verify::BakeCheckNodes) also
+/// against adaptive quadrature of the whole integral, to kNestedRefTol.
+double TexelError(const TableSpec& spec, const Table& t, size_t i, bool nested) {
+  double x[3];
+  NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
+  IntegrationStats st;
+  const auto outer = Describe(spec.quantity).verifyReference;
+  std::vector<std::vector<double>> refs;
+  refs.push_back(outer ? outer(spec, x, kTexelRefTol, st)
+                       : EvaluateSpec(spec, x, kTexelRefTol, st));
+  if (nested) refs.push_back(EvaluateSpec(spec, x, kNestedRefTol, st));
+  const size_t nc = spec.channels.size();
+  double worst = 0;
+  for (const std::vector<double>& exact : refs)
+    // A fitted table's coefficient channels are not integrals (firstIntegralChannel).
+    for (size_t c = size_t(Describe(spec.quantity).firstIntegralChannel); c < nc; ++c)
+      worst = std::max(worst,
+                       std::abs(t.data[i * nc + c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+  return worst;
+}
+
+/// The small bake of `spec` the texel check reads (shared by the tests of one process).
+const Table& TexelCheckBake(const TableSpec& spec) {
+  BakeOptions opt;
+  opt.measureLookupError = false;
+  return test::CachedBake(spec, opt);
+}
+
+/// Re-integrates shard `shard` of the checked texels (CheckedTexels, ShardTexels) of each of
+/// OneOfEachKind(5)
+/// (TexelReferences) and compares them with what the bake stored (float32), relative above 1.
+/// The shards run in one process share the bakes (test::CachedBake). An average's corners and
+/// worst-departing texels (those whose value departs most from the line through their
+/// neighbours: a texel off its function) are also held to nested adaptive quadrature.
 void CheckTexelsAgainstExact(int shard) {
   const std::vector<TableSpec> specs = OneOfEachKind(5);
   for (size_t k = 0; k < specs.size(); ++k) {
     const TableSpec& spec = specs[k];
-    BakeOptions opt;
-    opt.measureLookupError = false;
-    const Table& t = test::CachedBake(spec, opt);
-    const size_t nc = spec.channels.size();
+    const Table& t = TexelCheckBake(spec);
+    std::vector<size_t> nested;
+    if (HasOuterReference(spec)) nested = verify::BakeCheckNodes(spec, t, 0, 0);
     const std::vector<size_t> checked = CheckedTexels(spec, t);
     double worst = 0;
     for (size_t j : ShardTexels(checked.size(), shard, k)) {
       const size_t i = checked[j];
-      double x[3];
-      NodeEvaluationPoint(spec, i, x);  // where the bake evaluates (a collapsed layer: its limit)
-      IntegrationStats st;
-      std::vector<double> exact = EvaluateSpec(
-          spec, x,
-          std::string(QuantityName(spec.quantity)).find("avg") != std::string::npos ? kTexelRefTol
-                                                                                    : kTexelRefTolE,
-          st);
-      // A fitted table's coefficient channels are not integrals
-      // (QuantityInfo::firstIntegralChannel).
-      for (size_t c = size_t(Describe(spec.quantity).firstIntegralChannel); c < nc; ++c)
-        worst = std::max(
-            worst, std::abs(t.data[i * nc + c] - exact[c]) / std::max(1.0, std::abs(exact[c])));
+      const bool both = std::find(nested.begin(), nested.end(), i) != nested.end();
+      worst = std::max(worst, TexelError(spec, t, i, both));
     }
     INFO(spec.name << " worst texel error " << worst << " declared " << t.bakeError);
     CHECK(worst < 1e-6);
@@ -135,18 +161,44 @@ void CheckTexelsAgainstExact(int shard) {
 
 }  // namespace
 
-TEST_CASE("The texel check's shards take every sampled texel once", "[bake]") {
+TEST_CASE("The texel check's shards take every texel once", "[bake]") {
   for (size_t n : {1, 5, 25, 60, 61, 125, 1000})
     for (size_t rotation : {0, 3, 17}) {
       std::vector<int> taken(n, 0);
       for (int shard = 0; shard < kTexelCheckShards; ++shard)
         for (size_t i : ShardTexels(n, shard, rotation)) ++taken[i];
-      const size_t step = n > 60 ? 7 : 1;
       for (size_t i = 0; i < n; ++i) {
         INFO("n " << n << " rotation " << rotation << " texel " << i);
-        CHECK(taken[i] == (i % step == 0 ? 1 : 0));
+        CHECK(taken[i] == 1);
       }
     }
+}
+
+TEST_CASE("A texel off by 2e-6 fails the texel check wherever it lies", "[bake]") {
+  // Every texel of a 2D E table, a 1D average and a glass average (whose checked texels were
+  // once only its corners, worst-departing and 4 sampled ones of 25), raised or lowered by 2e-6
+  // in turn: one of the shards checks it and finds it more than 1e-6 from its reference.
+  for (const char* name : {"ggx-albedo", "ggx-albedo-avg", "ggx-dielectric-albedo-t-avg"}) {
+    const std::vector<TableSpec> specs = OneOfEachKind(5);
+    size_t k = 0;
+    while (k < specs.size() && specs[k].name != name) ++k;
+    REQUIRE(k < specs.size());
+    const TableSpec& spec = specs[k];
+    const Table& baked = TexelCheckBake(spec);
+    const std::vector<size_t> checked = CheckedTexels(spec, baked);
+    REQUIRE(spec.TexelCount() <= kEveryTexelMax);
+    const size_t nc = spec.channels.size(), first = Describe(spec.quantity).firstIntegralChannel;
+    for (size_t i = 0; i < spec.TexelCount(); ++i) {
+      int shards = 0;
+      for (int shard = 0; shard < kTexelCheckShards; ++shard)
+        for (size_t j : ShardTexels(checked.size(), shard, k)) shards += checked[j] == i;
+      Table wrong = baked;
+      wrong.data[i * nc + first] += i % 2 ? -2e-6f : 2e-6f;
+      INFO(name << " texel " << i);
+      CHECK(shards == 1);
+      CHECK(TexelError(spec, wrong, i, false) > 1e-6);
+    }
+  }
 }
 
 // Every texel of every table kind is within 1e-6 of the exact integral (relative above 1),

@@ -205,112 +205,118 @@ TEST_CASE("CsvText quotes fields that hold commas or quotes", "[bench]") {
   CHECK(records[1][13].empty());  // NaN: not measured
 }
 
-TEST_CASE("kiln bench writes the promised CSV rows and a well-formed SVG", "[bench]") {
-  std::string dir;
-  const BenchResult& result = TinyRun(dir);
-  std::string csv = Slurp(dir + "/bench.csv"), svg = Slurp(dir + "/bench.svg");
-  auto records = ParseCsv(csv);
-  REQUIRE(records.size() == result.rows.size() + 1);
-  CHECK(records[0] == CsvColumns());
-  for (const char* column :
-       {"section", "method", "table", "size", "samples_or_tol", "seconds", "evals", "bake_err_max",
-        "bake_err_rms", "lookup_linear_max", "lookup_linear_rms", "lookup_cubic_max",
-        "lookup_cubic_rms", "lookup_linear_max_off_corner", "bytes", "ns_per_call"})
-    CHECK(std::find(records[0].begin(), records[0].end(), column) != records[0].end());
-  auto col = [&](const char* name) {
-    return static_cast<size_t>(std::find(records[0].begin(), records[0].end(), name) -
-                               records[0].begin());
-  };
-  std::set<std::string> sections, sweepCombos;
-  for (size_t i = 1; i < records.size(); ++i) {
-    const auto& rec = records[i];
-    REQUIRE(rec.size() == records[0].size());
-    sections.insert(rec[col("section")]);
-    if (rec[col("section")] == "runtime") {
-      CHECK(std::stod(rec[col("ns_per_call")]) > 0);
-      continue;
+// One test for the two claims on one tiny run (TinyRun; ~5 s of CPU, which each CTest process
+// would spend again): what the run writes, and what its rows say.
+TEST_CASE("kiln bench (one tiny run) writes the promised CSV and SVG, and kiln beats Monte Carlo",
+          "[bench]") {
+  SECTION("kiln bench writes the promised CSV rows and a well-formed SVG") {
+    std::string dir;
+    const BenchResult& result = TinyRun(dir);
+    std::string csv = Slurp(dir + "/bench.csv"), svg = Slurp(dir + "/bench.svg");
+    auto records = ParseCsv(csv);
+    REQUIRE(records.size() == result.rows.size() + 1);
+    CHECK(records[0] == CsvColumns());
+    for (const char* column : {"section", "method", "table", "size", "samples_or_tol", "seconds",
+                               "evals", "bake_err_max", "bake_err_rms", "lookup_linear_max",
+                               "lookup_linear_rms", "lookup_cubic_max", "lookup_cubic_rms",
+                               "lookup_linear_max_off_corner", "bytes", "ns_per_call"})
+      CHECK(std::find(records[0].begin(), records[0].end(), column) != records[0].end());
+    auto col = [&](const char* name) {
+      return static_cast<size_t>(std::find(records[0].begin(), records[0].end(), name) -
+                                 records[0].begin());
+    };
+    std::set<std::string> sections, sweepCombos;
+    for (size_t i = 1; i < records.size(); ++i) {
+      const auto& rec = records[i];
+      REQUIRE(rec.size() == records[0].size());
+      sections.insert(rec[col("section")]);
+      if (rec[col("section")] == "runtime") {
+        CHECK(std::stod(rec[col("ns_per_call")]) > 0);
+        continue;
+      }
+      if (rec[col("section")] == "sweep")
+        sweepCombos.insert(rec[col("table")] + "/" + rec[col("method")]);
+      for (const char* c : {"seconds", "bake_err_max", "bake_err_rms", "lookup_linear_max",
+                            "lookup_cubic_max", "lookup_linear_max_off_corner"}) {
+        INFO("row " << i << " column " << c);
+        double v = std::stod(rec[col(c)]);
+        CHECK(std::isfinite(v));
+        CHECK(v >= 0);
+      }
+      CHECK(std::stod(rec[col("lookup_linear_max_off_corner")]) <=
+            std::stod(rec[col("lookup_linear_max")]));
+      CHECK(std::stoll(rec[col("evals")]) > 0);
+      CHECK(std::stoll(rec[col("bytes")]) ==
+            4 * std::stoll(rec[col("texels")]) * (rec[col("table")] == "ggx-dfg" ? 2 : 1));
     }
-    if (rec[col("section")] == "sweep")
-      sweepCombos.insert(rec[col("table")] + "/" + rec[col("method")]);
-    for (const char* c : {"seconds", "bake_err_max", "bake_err_rms", "lookup_linear_max",
-                          "lookup_cubic_max", "lookup_linear_max_off_corner"}) {
-      INFO("row " << i << " column " << c);
-      double v = std::stod(rec[col(c)]);
-      CHECK(std::isfinite(v));
-      CHECK(v >= 0);
-    }
-    CHECK(std::stod(rec[col("lookup_linear_max_off_corner")]) <=
-          std::stod(rec[col("lookup_linear_max")]));
-    CHECK(std::stoll(rec[col("evals")]) > 0);
-    CHECK(std::stoll(rec[col("bytes")]) ==
-          4 * std::stoll(rec[col("texels")]) * (rec[col("table")] == "ggx-dfg" ? 2 : 1));
-  }
-  CHECK(sections == std::set<std::string>{"sweep", "size", "threads", "baker-issue", "runtime"});
-  // A table with a fixed rule (ggx-dfg, burley-albedo) has one kiln row, no tolerance sweep;
-  // the others are swept adaptively.
-  for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"})
-    for (const char* method : {"kiln", "mc-hammersley", "gauss-legendre"}) {
-      std::string m = std::string(method) == "kiln" && UsesFixedRule(CatalogueTable(table))
-                          ? "kiln-fixed-rule"
-                          : method;
-      CHECK(sweepCombos.count(std::string(table) + "/" + m) == 1);
-    }
-  // Runtime: linear and cubic lookups in 1D, 2D and 3D tables, evaluation and integration.
-  std::set<std::string> runtime;
-  for (const BenchRow& r : result.rows)
-    if (r.section == "runtime") runtime.insert(r.method + "/" + std::to_string(r.dims));
-  for (const char* m :
-       {"lookup-linear/1", "lookup-cubic/1", "lookup-linear/2", "lookup-cubic/2", "lookup-linear/3",
-        "lookup-cubic/3", "evaluate/0", "directional-albedo/0", "fit-evaluate/2"})
-    CHECK(runtime.count(m) == 1);
-
-  CHECK(XmlProblem(svg).empty());
-  CHECK(svg.find("<svg") != std::string::npos);
-  CHECK(Count(svg, "<g>") == 6);  // 3 error-time panels + 3 size panels
-  CHECK(Count(svg, "<polyline") >= 3 * 3);
-}
-
-TEST_CASE("kiln bench: kiln's bake beats 1024-sample Monte Carlo on bake error", "[bench]") {
-  std::string dir;
-  const BenchResult& result = TinyRun(dir);
-  auto find = [&](const std::string& section, const std::string& table, const std::string& method) {
-    const BenchRow* best = nullptr;
+    CHECK(sections == std::set<std::string>{"sweep", "size", "threads", "baker-issue", "runtime"});
+    // A table with a fixed rule (ggx-dfg, burley-albedo) has one kiln row, no tolerance sweep;
+    // the others are swept adaptively.
+    for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"})
+      for (const char* method : {"kiln", "mc-hammersley", "gauss-legendre"}) {
+        std::string m = std::string(method) == "kiln" && UsesFixedRule(CatalogueTable(table))
+                            ? "kiln-fixed-rule"
+                            : method;
+        CHECK(sweepCombos.count(std::string(table) + "/" + m) == 1);
+      }
+    // Runtime: linear and cubic lookups in 1D, 2D and 3D tables, evaluation and integration.
+    std::set<std::string> runtime;
     for (const BenchRow& r : result.rows)
-      if (r.section == section && r.table == table && r.method == method &&
-          (!best || r.bakeMax < best->bakeMax))
-        best = &r;
-    return best;
-  };
-  for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"}) {
-    const BenchRow* kiln =
-        find("sweep", table, UsesFixedRule(CatalogueTable(table)) ? "kiln-fixed-rule" : "kiln");
-    const BenchRow* mc = find("sweep", table, "mc-hammersley");
-    REQUIRE(kiln);
-    REQUIRE(mc);
-    INFO(table);
-    CHECK(kiln->bakeMax < 1e-6);  // DESIGN.md's target, float32 storage included
-    CHECK(mc->bakeMax > 10 * kiln->bakeMax);
+      if (r.section == "runtime") runtime.insert(r.method + "/" + std::to_string(r.dims));
+    for (const char* m : {"lookup-linear/1", "lookup-cubic/1", "lookup-linear/2", "lookup-cubic/2",
+                          "lookup-linear/3", "lookup-cubic/3", "evaluate/0", "directional-albedo/0",
+                          "fit-evaluate/2"})
+      CHECK(runtime.count(m) == 1);
+
+    CHECK(XmlProblem(svg).empty());
+    CHECK(svg.find("<svg") != std::string::npos);
+    CHECK(Count(svg, "<g>") == 6);  // 3 error-time panels + 3 size panels
+    CHECK(Count(svg, "<polyline") >= 3 * 3);
   }
-  const BenchRow* issueKiln = find("baker-issue", "ggx-dfg", "kiln");
-  const BenchRow* issueMc = find("baker-issue", "ggx-dfg", "mc-hammersley");
-  REQUIRE(issueKiln);
-  REQUIRE(issueMc);
-  CHECK(issueKiln->threads == 2);
-  CHECK(issueMc->threads == 2);
-  // The like-for-like pair (each written to EXR, no lookup-error check) bakes the same texels.
-  const BenchRow* issueWritten = find("baker-issue", "ggx-dfg", "kiln-bake-written");
-  const BenchRow* issueMcWritten = find("baker-issue", "ggx-dfg", "mc-hammersley-written");
-  REQUIRE(issueWritten);
-  REQUIRE(issueMcWritten);
-  CHECK(issueWritten->bakeMax == issueKiln->bakeMax);
-  CHECK(issueMcWritten->bakeMax == issueMc->bakeMax);
-  // Per-texel sampling sums the same samples: the same table to float rounding.
-  const BenchRow* issuePerTexel = find("baker-issue", "ggx-dfg", "mc-hammersley-per-texel");
-  REQUIRE(issuePerTexel);
-  CHECK(std::abs(issuePerTexel->bakeMax - issueMc->bakeMax) < 1e-6);
-  // Thread scaling: the kiln bake on all threads is bit-identical to 1 thread.
-  for (const BenchRow& r : result.rows)
-    if (r.section == "threads" && r.method == "kiln")
-      CHECK(r.note.find("bit-identical") != std::string::npos);
-  CHECK_FALSE(result.summary.empty());
+
+  SECTION("kiln bench: kiln's bake beats 1024-sample Monte Carlo on bake error") {
+    std::string dir;
+    const BenchResult& result = TinyRun(dir);
+    auto find = [&](const std::string& section, const std::string& table,
+                    const std::string& method) {
+      const BenchRow* best = nullptr;
+      for (const BenchRow& r : result.rows)
+        if (r.section == section && r.table == table && r.method == method &&
+            (!best || r.bakeMax < best->bakeMax))
+          best = &r;
+      return best;
+    };
+    for (const char* table : {"ggx-dfg", "burley-albedo", "ggx-fresnel-albedo"}) {
+      const BenchRow* kiln =
+          find("sweep", table, UsesFixedRule(CatalogueTable(table)) ? "kiln-fixed-rule" : "kiln");
+      const BenchRow* mc = find("sweep", table, "mc-hammersley");
+      REQUIRE(kiln);
+      REQUIRE(mc);
+      INFO(table);
+      CHECK(kiln->bakeMax < 1e-6);  // DESIGN.md's target, float32 storage included
+      CHECK(mc->bakeMax > 10 * kiln->bakeMax);
+    }
+    const BenchRow* issueKiln = find("baker-issue", "ggx-dfg", "kiln");
+    const BenchRow* issueMc = find("baker-issue", "ggx-dfg", "mc-hammersley");
+    REQUIRE(issueKiln);
+    REQUIRE(issueMc);
+    CHECK(issueKiln->threads == 2);
+    CHECK(issueMc->threads == 2);
+    // The like-for-like pair (each written to EXR, no lookup-error check) bakes the same texels.
+    const BenchRow* issueWritten = find("baker-issue", "ggx-dfg", "kiln-bake-written");
+    const BenchRow* issueMcWritten = find("baker-issue", "ggx-dfg", "mc-hammersley-written");
+    REQUIRE(issueWritten);
+    REQUIRE(issueMcWritten);
+    CHECK(issueWritten->bakeMax == issueKiln->bakeMax);
+    CHECK(issueMcWritten->bakeMax == issueMc->bakeMax);
+    // Per-texel sampling sums the same samples: the same table to float rounding.
+    const BenchRow* issuePerTexel = find("baker-issue", "ggx-dfg", "mc-hammersley-per-texel");
+    REQUIRE(issuePerTexel);
+    CHECK(std::abs(issuePerTexel->bakeMax - issueMc->bakeMax) < 1e-6);
+    // Thread scaling: the kiln bake on all threads is bit-identical to 1 thread.
+    for (const BenchRow& r : result.rows)
+      if (r.section == "threads" && r.method == "kiln")
+        CHECK(r.note.find("bit-identical") != std::string::npos);
+    CHECK_FALSE(result.summary.empty());
+  }
 }

@@ -312,8 +312,10 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   std::vector<double> exact;
   Sample s;
   s.reused = DefaultReference() && opt_.reuse && opt_.reuse(x, exact, st);
+  const auto own = opt_.verifyReference ? Describe(spec_.quantity).verifyReference : nullptr;
   if (!s.reused)
-    exact = opt_.refTol > 0 ? EvaluateSpec(spec_, x, opt_.refTol, st)
+    exact = opt_.refTol > 0
+                ? (own ? own(spec_, x, opt_.refTol, st) : EvaluateSpec(spec_, x, opt_.refTol, st))
             : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
                             : SearchReference(spec_, x, st);
   if (opt_.bakeRule) st.errorEstimate = 0;  // the bake's own rule

@@ -83,7 +83,10 @@ struct LookupSearchOptions {
   /// counted in max, rms and points).
   long long randomPoints = 0;
   double refTol = 0;  ///< > 0: adaptive quadrature to refTol as the reference
-  int threads = 0;    ///< 0: all cores
+  /// With refTol > 0: the kind's verification reference (QuantityInfo::verifyReference, an
+  /// average's adaptive mu integral of E) to refTol where it has one, instead of EvaluateSpec.
+  bool verifyReference = false;
+  int threads = 0;  ///< 0: all cores
   Filter filter = Filter::Linear;
   bool alsoCubic = false;  ///< also sample the probe points with the cubic filter
   /// Evaluate the points by the bake's own rule (EvaluateSpec), not its verification-grade form

@@ -103,7 +103,7 @@ void RegisterVerify(CLI::App& app) {
     double tol = 0;
     int threads = 0;
     std::string filter;
-    bool json = false, quiet = false;
+    bool json = false, quiet = false, outerReference = false;
     int bakeNodes = verify::kBakeSampleNodes;
   };
   auto args = std::make_shared<Args>();
@@ -121,6 +121,10 @@ void RegisterVerify(CLI::App& app) {
       sub->add_option("--tol", args->tol,
                       "reference by adaptive quadrature to this tolerance (default: the bake's own "
                       "method, its fixed rule where it has one)");
+  sub->add_flag("--outer-reference", args->outerReference,
+                "with --tol: an average's search cells and random points take the bake-error "
+                "check's reference (adaptive quadrature over mu of E by its 3D table's rule); "
+                "the declared worst point keeps adaptive quadrature of the whole integral");
   sub->add_option("--bake-nodes", args->bakeNodes,
                   "bake-error check: sampled nodes per table besides the corners and the nodes "
                   "that depart most from their neighbours (reference: adaptive quadrature or a "
@@ -153,6 +157,8 @@ void RegisterVerify(CLI::App& app) {
     if (oTol->count() && !(args->tol >= 1e-12 && args->tol <= 1e-4))
       throw std::invalid_argument("verify: --tol " + FullPrecision(args->tol) +
                                   " must be in [1e-12, 1e-4]");
+    if (args->outerReference && !oTol->count())
+      throw std::invalid_argument("verify: --outer-reference needs --tol");
     CheckThreads("verify", args->threads);
     // A closed-form fit (DIR/TABLE-fit.h, `kiln fit`): its own check (baker/fit/fit_verify.h).
     if (args->paths.size() == 1 && IsFitHeaderPath(args->paths[0])) {
@@ -173,6 +179,7 @@ void RegisterVerify(CLI::App& app) {
     opt.points = args->points;
     opt.cells = args->cells;
     opt.tol = args->tol;
+    opt.outerReference = args->outerReference;
     opt.threads = args->threads;
     opt.filter = args->filter;
     opt.bakeNodes = args->bakeNodes;

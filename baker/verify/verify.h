@@ -18,8 +18,13 @@ struct VerifyOptions {
   long long points = 0;  ///< random points of the lookup search, besides its cells
   long long cells = 0;   ///< lookup search: at most this many cells (0: as the budget allows)
   double tol = 0;        ///< > 0: the lookup search's reference by adaptive quadrature to tol
-  int threads = 0;       ///< 0: all cores
-  std::string filter;    ///< "" (the declared one), "linear" or "cubic" (then not checked)
+  /// With tol > 0: the search's cells and random points of a kind with a verification reference
+  /// of its own (QuantityInfo::verifyReference; an average: adaptive quadrature over mu of E by
+  /// its 3D table's rule, which that table's check holds to adaptive) take that reference; the
+  /// declared worst point keeps the whole integral's adaptive quadrature.
+  bool outerReference = false;
+  int threads = 0;     ///< 0: all cores
+  std::string filter;  ///< "" (the declared one), "linear" or "cubic" (then not checked)
   int bakeNodes = kBakeSampleNodes;  ///< sampled nodes of the bake-error check (bake_error.h)
 };
 

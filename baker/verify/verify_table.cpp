@@ -100,6 +100,7 @@ void CheckLookupError(const TableSpec& spec, const Table& t, const VerifyOptions
   so.maxCells = opt.cells;
   so.randomPoints = opt.points;
   so.refTol = opt.tol;
+  so.verifyReference = opt.outerReference;
   so.threads = opt.threads;
   so.filter = v.filter == "cubic" ? Filter::Cubic : Filter::Linear;
   v.lookup = MeasureLookupError(spec, t.view(), so);
