@@ -1,4 +1,4 @@
-// The bits of a float, for the tests that hold lookups bit for bit.
+// The bits of a float or a double, for the tests that hold lookups bit for bit.
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -10,6 +10,13 @@ namespace kiln::test {
 inline uint32_t Bits(float f) {
   uint32_t u = 0;
   std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+
+/// x's IEEE 754 bits (the double counterpart of Bits(float)).
+inline uint64_t Bits(double x) {
+  uint64_t u = 0;
+  std::memcpy(&u, &x, sizeof u);
   return u;
 }
 

@@ -12,18 +12,12 @@
 #include "baker/models/gotanda.h"
 #include "baker/models/oren_nayar.h"
 #include "baker/tables/spec.h"
-#include "committed_luts.h"
-#include "kiln/exr_loader.h"
+#include "committed_texels.h"
+#include "float_bits.h"
 
 using namespace kiln;
 
 namespace {
-
-uint64_t DoubleBits(double x) {
-  uint64_t u = 0;
-  std::memcpy(&u, &x, sizeof u);
-  return u;
-}
 
 /// Whether, on a grid of views, lights (the horizon and the normal included) and azimuths
 /// (forward, backward, sideways), PartsAt with the polar factors of the row's first azimuth gives
@@ -41,8 +35,8 @@ int CheckRows(const M& m) {
         const Vec3 wi{sinL * std::cos(phi), sinL * std::sin(phi), muL};
         const RhoParts row = m.PartsAt(polar, PairGeometry(wo, wi)), own = m.Parts(wo, wi);
         INFO("mu_o " << muO << " mu_l " << muL << " phi " << phi);
-        REQUIRE(DoubleBits(row.lin) == DoubleBits(own.lin));
-        REQUIRE(DoubleBits(row.quad) == DoubleBits(own.quad));
+        REQUIRE(test::Bits(row.lin) == test::Bits(own.lin));
+        REQUIRE(test::Bits(row.quad) == test::Bits(own.quad));
         ++checked;
       }
     }
@@ -71,21 +65,6 @@ TEST_CASE("The diffuse fixed rule's rows give the committed Oren-Nayar and Gotan
   for (const char* name : {"oren-nayar-albedo", "oren-nayar-qualitative-albedo",
                            "oren-nayar-qualitative-ir-albedo", "gotanda-ggx-albedo"}) {
     INFO(name);
-    Table t = loadTable(test::LutsDir() + "/" + name + ".exr");
-    const TableSpec spec = SpecFromTable(t);
-    const size_t n = spec.TexelCount(), nc = spec.channels.size();
-    REQUIRE(t.data.size() == n * nc);
-    int differing = 0;
-    for (size_t i = 0; i < n; i += 7) {
-      double x[3];
-      NodeEvaluationPoint(spec, i, x);
-      IntegrationStats st;
-      const std::vector<double> v = EvaluateSpec(spec, x, st);
-      for (size_t c = 0; c < nc; ++c) {
-        const float f = static_cast<float>(v[c]);
-        differing += std::memcmp(&f, &t.data[i * nc + c], sizeof f) != 0;
-      }
-    }
-    CHECK(differing == 0);
+    CHECK(test::TexelsDifferingFromRule(name, 7) == 0);
   }
 }

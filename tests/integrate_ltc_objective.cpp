@@ -12,16 +12,11 @@
 #include "baker/integrate/ltc_objective.h"
 #include "baker/math/constants.h"
 #include "baker/math/splitmix.h"
+#include "float_bits.h"
 
 using namespace kiln;
 
 namespace {
-
-uint64_t DoubleBits(double x) {
-  uint64_t u = 0;
-  std::memcpy(&u, &x, sizeof u);
-  return u;
-}
 
 /// Points on the sphere (either hemisphere), with weights of either sign.
 struct Points {
@@ -71,11 +66,11 @@ TEST_CASE("The LTC objective's sums in lanes give the bits of one point at a tim
       const double cross = LtcCrossSum(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
       const double crossRef =
           LtcCrossSumScalar(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
-      REQUIRE(DoubleBits(cross) == DoubleBits(crossRef));
+      REQUIRE(test::Bits(cross) == test::Bits(crossRef));
       for (int power : {2, 3}) {
         const double own = LtcOwnSum(m, p.x.data(), p.y.data(), p.z.data(), n, power);
         const double ownRef = LtcOwnSumScalar(m, p.x.data(), p.y.data(), p.z.data(), n, power);
-        REQUIRE(DoubleBits(own) == DoubleBits(ownRef));
+        REQUIRE(test::Bits(own) == test::Bits(ownRef));
       }
       ++checked;
     }
@@ -93,7 +88,7 @@ TEST_CASE(
   const std::vector<double> x = {0.0, 0.3, 0.0, 0.0}, y = {0.0, 0.1, 0.0, 0.2},
                             z = {-1.0, -0.2, 0.0, 0.9}, w = {1.0, 2.0, 3.0, 4.0};
   const double twoBelow = LtcCrossSum(m, x.data(), y.data(), z.data(), w.data(), 2);
-  CHECK(DoubleBits(twoBelow) == DoubleBits(0.0));
+  CHECK(test::Bits(twoBelow) == test::Bits(0.0));
   const double withOrigin = LtcCrossSum(m, x.data(), y.data(), z.data(), w.data(), 4);
   const double withOriginRef = LtcCrossSumScalar(m, x.data(), y.data(), z.data(), w.data(), 4);
   CHECK(std::isnan(withOrigin));
