@@ -6,11 +6,10 @@
 // microfacets leave total internal reflection), GGX alpha from 1e-6 (roughness 1e-3) to 1. Against
 // the adaptive reference (at 1000x below the bound): within kDielectricRuleBound on both channels,
 // on the grid's edges and worst points and a seeded stratified sample of the rest (the dense grid
-// as a [long] test). And the
-// identities: E_R + E_T <= 1 (single scattering loses energy), with equality and E_R = F(mu) in
-// the smooth limit (alpha -> 0, the rule at alpha = 1e-6 within 1e-4 of it away from mu_c), and
-// the loss 1 - E_R - E_T grows with roughness (for mu >= 0.3: at grazing views the masking layer
-// mu ~ alpha makes the smoothest lobes lose the most).
+// as a [long] test). And the identities: E_R + E_T <= 1 (single scattering loses energy), with
+// equality and E_R = F(mu) in the smooth limit (alpha -> 0, the rule at alpha = 1e-6 within 1e-4
+// of it away from mu_c), and the loss 1 - E_R - E_T grows with roughness (for mu >= 0.3: at
+// grazing views the masking layer mu ~ alpha makes the smoothest lobes lose the most).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
