@@ -1,6 +1,7 @@
 // kiln bench --catalogue: each table's stored texels against the adaptive reference, for the
 // channels that are integrals (a fitted table's coefficients have no reference); the rows per
-// table kind and the yardstick that say where a catalogue's time goes.
+// table kind and the yardstick that say where a catalogue's time goes. The command line's run
+// (its printed rows and its default folder) is tests/cli_bench_folders.cpp.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -107,32 +108,4 @@ TEST_CASE("The catalogue bench without lookup-error searches times the texels al
   CHECK(run.rows[0].seconds > 0);
   CHECK(run.yardstickSeconds == 0);
   CHECK(run.total.Times(run.yardstickSeconds) == 0);
-}
-
-TEST_CASE(
-    "kiln bench --catalogue --no-reference prints the kind rows and the yardstick, the two "
-    "catalogue-only flags are refused without --catalogue",
-    "[bench][cli]") {
-  const std::string dir = test::TempDir("bench_catalogue_cli");
-  test::CommandResult r = test::RunKiln(
-      "bench --catalogue --only lambert-albedo --no-reference "
-      "-j 1 --out " +
-      dir);
-  INFO(r.out << r.err);
-  REQUIRE(r.exitCode == 0);
-  CHECK(r.out.find("yardstick: 1024-sample Monte Carlo") != std::string::npos);
-  CHECK(r.out.find("\nalbedo ") != std::string::npos);
-  CHECK(r.out.find("x the yardstick (texels ") != std::string::npos);
-  const std::string csv = test::ReadFile(dir + "/catalogue.csv");
-  CHECK(csv.find("\nkind,albedo,") != std::string::npos);
-  CHECK(csv.find("\ntotal,total,") != std::string::npos);
-  CHECK(csv.find("\nyardstick,") != std::string::npos);
-  for (const char* flag : {"--no-reference", "--no-lookup-error"}) {
-    test::CommandResult bad = test::RunKiln(std::string("bench --quick ") + flag);
-    INFO(flag << ": " << bad.err);
-    CHECK(bad.exitCode != 0);
-    CHECK(test::CountLines(bad.err) == 1);
-    CHECK(bad.err.find("need --catalogue") != std::string::npos);
-  }
-  std::filesystem::remove_all(dir);
 }

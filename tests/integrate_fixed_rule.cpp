@@ -137,6 +137,7 @@ TEST_CASE(
     INFO("r = " << r << ": fixed - adaptive = " << e - ref << " (" << fixed.evals << " vs "
                 << adaptive.evals << " evaluations)");
     CHECK(std::abs(e - ref) <= 1e-7);
+    CHECK(fixed.errorEstimate <= 1e-6);  // what the bake declares, below the hard limit
     if (r == 0) continue;  // the smooth limit: E_avg = 1 exactly, no integral on either side
     CHECK(fixed.evals * 20 < adaptive.evals);
   }

@@ -103,8 +103,13 @@ TEST_CASE(
     "Every microfacet albedo-avg table's fixed rule is within 1e-7 of adaptive quadrature at "
     "1e-10",
     "[integrate][fixed-rule-average]") {
+  // ggx-albedo-avg's points here (r = 0.05, 0.5, 1) are among those of its own test, which holds
+  // it to the same 1e-7 and declared estimate at 11 roughnesses (tests/integrate_fixed_rule.cpp):
+  // its nested references are not integrated twice.
+  int checked = 0;
   for (const TableSpec& spec : TablesOf(Quantity::AlbedoAvg)) {
-    if (!FindModel(spec.model)->specular()) continue;
+    if (!FindModel(spec.model)->specular() || spec.name == "ggx-albedo-avg") continue;
+    ++checked;
     std::string where;
     double worst = WorstAgainstAdaptive(spec, {{0.05}, {0.5}, {1.0}}, where);
     std::printf("average fixed rule %-36s worst %.3g at %s\n", spec.name.c_str(), worst,
@@ -112,6 +117,7 @@ TEST_CASE(
     INFO(spec.name << ": worst " << worst << " at " << where);
     CHECK(worst <= 1e-7);
   }
+  CHECK(checked >= 4);  // beckmann, beckmann-separable, blinn-phong, ggx-separable
 }
 
 TEST_CASE(

@@ -4,10 +4,12 @@
 #include <dirent.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
 #include "cli_util.h"
 #include "committed_luts.h"
@@ -32,6 +34,7 @@ std::vector<std::string> TableFiles() {
 
 constexpr double kLookupBound = 1e-3;   ///< the default 2D microfacet tables' lookup error
 constexpr double kReferenceTol = 1e-6;  ///< their references' tolerance: 1000 times below it
+constexpr int kLookupPoints = 300;      ///< the seeded points of each table's check
 
 }  // namespace
 
@@ -112,13 +115,17 @@ TEST_CASE("A lookup at a node of any committed table returns the stored texel ex
 namespace {
 
 /// The worst lookup error of the 2D table `t` against adaptive quadrature at kReferenceTol over
-/// 300 seeded points, a third of them grazing (mu down to 1e-12) and a third in the corner
-/// (mu, r) -> (0, 0). stopAbove >= 0: returns at the first point beyond it.
-double LookupWorst(const Table& t, std::string& where, double stopAbove = -1) {
+/// kLookupPoints seeded points, a third of them grazing (mu down to 1e-12) and a third in the
+/// corner (mu, r) -> (0, 0). stopAbove >= 0: returns at the first point beyond it. `references`,
+/// when not null, receives each point's reference (every channel), in the order of the points (the
+/// same for every table); `given`, when not null, holds them instead of integrating.
+double LookupWorst(const Table& t, std::string& where, double stopAbove = -1,
+                   std::vector<std::vector<double>>* references = nullptr,
+                   const std::vector<std::vector<double>>* given = nullptr) {
   TableSpec spec = SpecFromTable(t);
   test::Rng rng(99);
   double worst = 0;
-  for (int i = 0; i < 300; ++i) {
+  for (int i = 0; i < kLookupPoints; ++i) {
     double u = rng.Uniform(), v = rng.Uniform();
     double x[2] = {u, v};
     if (i % 3 == 1) x[0] = std::pow(10.0, -12 * u);  // grazing, down to 1e-12
@@ -127,7 +134,9 @@ double LookupWorst(const Table& t, std::string& where, double stopAbove = -1) {
       x[1] = i % 2 ? 0.0 : std::pow(10.0, -6 * v);
     }
     IntegrationStats st;
-    std::vector<double> exact = EvaluateSpec(spec, x, kReferenceTol, st);
+    const std::vector<double> exact =
+        given ? (*given)[static_cast<size_t>(i)] : EvaluateSpec(spec, x, kReferenceTol, st);
+    if (references) references->push_back(exact);
     float got[2];
     t.view().sample(x, got);
     for (size_t c = 0; c < exact.size(); ++c)
@@ -150,10 +159,30 @@ TEST_CASE(
   // corner (mu, r) -> (0, 0) is sampled like the rest: a third of the points lie in it. The
   // references are adaptive quadrature, independent of the fixed rule the ggx tables are baked
   // with, at a tolerance 1000 times below the bound checked (kReferenceTol).
+  // ggx-albedo's E is ggx-dfg's A + B (F = 1): its references are the DFG's, summed, at the same
+  // points (each channel within kReferenceTol, their sum within twice it: 500 times below the
+  // bound), instead of a second integration of the same integrand.
+  std::vector<std::vector<double>> dfg, albedo;
   for (const char* name :
        {"ggx-dfg", "ggx-albedo", "ggx-separable-dfg", "beckmann-dfg", "blinn-phong-albedo"}) {
+    const bool isDfg = std::string(name) == "ggx-dfg", isAlbedo = std::string(name) == "ggx-albedo";
+    if (isAlbedo) {
+      REQUIRE(dfg.size() == static_cast<size_t>(kLookupPoints));
+      for (const std::vector<double>& ab : dfg) albedo.push_back({ab[0] + ab[1]});
+      // The identity, checked where it is hardest: the bulk, a grazing view, the corner.
+      const TableSpec e = CatalogueTable("ggx-albedo"), ab = CatalogueTable("ggx-dfg");
+      for (const std::array<double, 2>& x :
+           {std::array<double, 2>{0.5, 0.5}, {1e-6, 0.3}, {1e-9, 1e-4}}) {
+        IntegrationStats st;
+        const std::vector<double> own = EvaluateSpec(e, x.data(), kReferenceTol, st),
+                                  sum = EvaluateSpec(ab, x.data(), kReferenceTol, st);
+        INFO("mu " << x[0] << " r " << x[1]);
+        CHECK(std::abs(own[0] - (sum[0] + sum[1])) <= 2 * kReferenceTol);
+      }
+    }
     std::string where;
-    const double worst = LookupWorst(loadTable(LutsDir() + "/" + name + ".exr"), where);
+    const double worst = LookupWorst(loadTable(LutsDir() + "/" + name + ".exr"), where, -1,
+                                     isDfg ? &dfg : nullptr, isAlbedo ? &albedo : nullptr);
     INFO(name << " worst " << worst << " at " << where);
     CHECK(worst < kLookupBound);
   }
