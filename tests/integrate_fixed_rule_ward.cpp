@@ -8,6 +8,7 @@
 #include "baker/integrate/fixed_rule_ward.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
+#include "average_albedo_checks.h"
 
 namespace kiln {
 namespace {
@@ -90,11 +91,7 @@ void CheckWardAverage(const Variant& v, std::initializer_list<double> rs) {
     CHECK(FixedRuleWardAlbedoAvg(v.norm, r * r) == Approx(ref).margin(kWardRuleBound));
     // The average-albedo stress checks at the roughness edge r = 1 (tests/stress_integrals.cpp
     // shares this reference there): finite, non-negative, at most 1 where energy conserving.
-    const double total = avg.lin + avg.quad;
-    const ModelInfo& info = *FindModel(v.id);
-    CHECK(std::isfinite(total));
-    if (info.nonNegative) CHECK(total >= 0);
-    if (info.energyConserving) CHECK(total <= 1 + 1e-6);
+    test::CheckAverageAlbedoPhysical(*FindModel(v.id), avg.lin + avg.quad);
   }
 }
 

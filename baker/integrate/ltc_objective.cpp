@@ -38,22 +38,47 @@ double LtcOwnSumScalar(const LtcMatrix& ltc, const double* cx, const double* cy,
 
 #if defined(__SSE2__)
 
+namespace {
+
+/// A 3x3 matrix with the LTC's zero pattern (entries 0, 2, 4, 6, 8), in both lanes.
+struct SparseLanes {
+  __m128d a0, a2, a4, a6, a8;
+  explicit SparseLanes(const double* a)
+      : a0(_mm_set1_pd(a[0])),
+        a2(_mm_set1_pd(a[2])),
+        a4(_mm_set1_pd(a[4])),
+        a6(_mm_set1_pd(a[6])),
+        a8(_mm_set1_pd(a[8])) {}
+};
+
+/// Two points (x, y, z) times the matrix a, and their squared lengths: the scalar loops'
+/// operations in their order, so each lane has their bits.
+struct TransformedLanes {
+  __m128d x, y, z, len2;
+};
+inline TransformedLanes Transform(const SparseLanes& a, __m128d x, __m128d y, __m128d z) {
+  TransformedLanes q;
+  q.x = _mm_add_pd(_mm_mul_pd(a.a0, x), _mm_mul_pd(a.a2, z));
+  q.y = _mm_mul_pd(a.a4, y);
+  q.z = _mm_add_pd(_mm_mul_pd(a.a6, x), _mm_mul_pd(a.a8, z));
+  q.len2 = _mm_add_pd(_mm_add_pd(_mm_mul_pd(q.x, q.x), _mm_mul_pd(q.y, q.y)), _mm_mul_pd(q.z, q.z));
+  return q;
+}
+
+}  // namespace
+
 double LtcCrossSum(const LtcMatrix& ltc, const double* px, const double* py, const double* pz,
                    const double* pc, size_t n) {
-  const __m128d i0 = _mm_set1_pd(ltc.inv[0]), i2 = _mm_set1_pd(ltc.inv[2]),
-                i4 = _mm_set1_pd(ltc.inv[4]), i6 = _mm_set1_pd(ltc.inv[6]),
-                i8 = _mm_set1_pd(ltc.inv[8]);
+  const SparseLanes inv(ltc.inv);
   const __m128d scale = _mm_set1_pd(kLtcInvPi * ltc.detInv), zero = _mm_setzero_pd();
   double cross = 0, term[2];
   size_t k = 0;
   for (; k + 2 <= n; k += 2) {
     const __m128d x = _mm_loadu_pd(px + k), y = _mm_loadu_pd(py + k), z = _mm_loadu_pd(pz + k);
-    const __m128d qx = _mm_add_pd(_mm_mul_pd(i0, x), _mm_mul_pd(i2, z)), qy = _mm_mul_pd(i4, y),
-                  qz = _mm_add_pd(_mm_mul_pd(i6, x), _mm_mul_pd(i8, z));
-    const __m128d len2 =
-        _mm_add_pd(_mm_add_pd(_mm_mul_pd(qx, qx), _mm_mul_pd(qy, qy)), _mm_mul_pd(qz, qz));
-    // max(zero, qz) is (0 > qz ? 0 : qz), std::max(qz, 0.0)'s choice (NaN and -0 kept).
-    const __m128d d = _mm_div_pd(_mm_mul_pd(_mm_max_pd(zero, qz), scale), _mm_mul_pd(len2, len2));
+    const TransformedLanes q = Transform(inv, x, y, z);
+    // max(zero, q.z) is (0 > q.z ? 0 : q.z), std::max(q.z, 0.0)'s choice (NaN and -0 kept).
+    const __m128d d =
+        _mm_div_pd(_mm_mul_pd(_mm_max_pd(zero, q.z), scale), _mm_mul_pd(q.len2, q.len2));
     _mm_storeu_pd(term, _mm_mul_pd(_mm_loadu_pd(pc + k), d));
     cross += term[0];
     cross += term[1];
@@ -64,17 +89,13 @@ double LtcCrossSum(const LtcMatrix& ltc, const double* px, const double* py, con
 
 double LtcOwnSum(const LtcMatrix& ltc, const double* cx, const double* cy, const double* cz,
                  size_t n, int p) {
-  const __m128d m0 = _mm_set1_pd(ltc.m[0]), m2 = _mm_set1_pd(ltc.m[2]), m4 = _mm_set1_pd(ltc.m[4]),
-                m6 = _mm_set1_pd(ltc.m[6]), m8 = _mm_set1_pd(ltc.m[8]);
+  const SparseLanes m(ltc.m);
   const __m128d kk = _mm_set1_pd(kLtcInvPi * ltc.detInv);
   double own = 0, term[2];
   size_t j = 0;
   for (; j + 2 <= n; j += 2) {
     const __m128d x = _mm_loadu_pd(cx + j), y = _mm_loadu_pd(cy + j), z = _mm_loadu_pd(cz + j);
-    const __m128d ax = _mm_add_pd(_mm_mul_pd(m0, x), _mm_mul_pd(m2, z)), ay = _mm_mul_pd(m4, y),
-                  az = _mm_add_pd(_mm_mul_pd(m6, x), _mm_mul_pd(m8, z));
-    const __m128d len2 =
-        _mm_add_pd(_mm_add_pd(_mm_mul_pd(ax, ax), _mm_mul_pd(ay, ay)), _mm_mul_pd(az, az));
+    const __m128d len2 = Transform(m, x, y, z).len2;
     __m128d d = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(z, kk), len2), _mm_sqrt_pd(len2));
     if (p != 2) d = _mm_mul_pd(d, d);
     _mm_storeu_pd(term, d);
