@@ -136,10 +136,36 @@ TEST_CASE("a coarser glass rule leaves its bound: the grid detects under-resolut
   for (int k = 0; k < 4; ++k) {
     coarse.outerNodes[k] = std::max(2, coarse.outerNodes[k] / 2);
     coarse.innerNodes[k] = std::max(2, coarse.innerNodes[k] / 2);
+    coarse.exitOuterNodes[k] = std::max(2, coarse.exitOuterNodes[k] / 2);
+    for (int q = 0; q < 4; ++q)
+      coarse.exitInnerNodes[k][q] = std::max(2, coarse.exitInnerNodes[k][q] / 2);
   }
   const GridResult g = OverGrid(&coarse, Points(3), kDielectricRuleBound);
   INFO("worst " << g.worst << " at " << g.where << " after " << g.points << " points");
   CHECK(g.worst > kDielectricRuleBound);
+}
+
+TEST_CASE(
+    "the exit side's node classes take under 80% of the entering side's counts' evaluations there",
+    "[dielectric][glass-rule]") {
+  // The same grid's exit points with the exit counts removed (exitOuterNodes[0] = 0: the
+  // entering side's counts on both sides); the tuned rule's accuracy there is held above.
+  DielectricRuleOptions entering = TunedDielectricRuleOptions();
+  entering.exitOuterNodes[0] = 0;
+  long long exitCounts = 0, enteringCounts = 0;
+  for (double eta : kEtas) {
+    if (!(eta < 1)) continue;
+    for (double mu : kMus)
+      for (double r : kRs) {
+        const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+        FixedRuleDielectricAlbedo(mu, alpha, eta, TunedDielectricRuleOptions(), &exitCounts);
+        FixedRuleDielectricAlbedo(mu, alpha, eta, entering, &enteringCounts);
+      }
+  }
+  std::printf(
+      "glass rule, exit side: %lld evaluations with its classes, %lld with the entering's\n",
+      exitCounts, enteringCounts);
+  CHECK(10 * exitCounts < 8 * enteringCounts);
 }
 
 TEST_CASE("the glass rule gives the same bits on every call", "[dielectric][glass-rule]") {

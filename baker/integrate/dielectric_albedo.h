@@ -26,12 +26,17 @@ std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
 /// its width in radians against innerWidth. Then the ratios of the geometric panel sequences:
 /// the reflected ray's masking layer (maskingRatio), the grazing view's sweep (grazingRatio),
 /// the GGX tail in tan theta_m (tailRatio). The adaptive reference keeps ratio 4 everywhere.
+/// The exit side (eta < 1) takes exitOuterNodes by the same weight classes and, on the rings of
+/// an outer panel of class k, exitInnerNodes[k] by the same width classes (a ring of small
+/// weight needs fewer azimuth nodes); exitOuterNodes[0] == 0: the counts above on both sides.
 struct DielectricRuleOptions {
   int outerNodes[4] = {24, 24, 24, 24};
   double outerWeight[3] = {1e-2, 1e-4, 1e-6};
   int innerNodes[4] = {16, 16, 16, 16};
   double innerWidth[3] = {1, 0.1, 0.02};
   double maskingRatio = 4, grazingRatio = 4, tailRatio = 4;
+  int exitOuterNodes[4] = {0, 0, 0, 0};
+  int exitInnerNodes[4][4] = {};
 };
 
 /// The bake's node counts (dielectric_albedo.cpp, kTuned).

@@ -90,44 +90,119 @@ KILN_AVX512 inline V Weigh(V base, V mi, V w, V a2, V gDen, V mu) {
   return Div(Mul(Mul(base, w), p), Add(Mul(gDen, p), Mul(mu, a2s2)));
 }
 
+/// A FastRing's constants, broadcast.
+struct FastConsts {
+  V A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen, e2m1sq;
+  bool reflectOnly;
+};
+
+KILN_AVX512 inline FastConsts ConstsOf(const FastRing& r) {
+  return {Set(r.A),     Set(r.B),      Set(r.cosM), Set(r.mu),   Set(r.eta),
+          Set(r.eta2),  Set(r.eta2m1), Set(r.a2),   Set(r.gDen), Set(r.eta2m1 * r.eta2m1),
+          r.reflectOnly};
+}
+
+/// FastView::Integrand {R, T} at the azimuths phi[u] of lanes k[u], U vectors at once (their
+/// operations interleaved: the chain of one vector is long, of cos, square roots and divisions):
+/// the terms into R[u], T[u] (0 in the other lanes). Each lane's operations are the portable
+/// code's; a ray's term is computed only where some lane of the U vectors has it.
+template <int U>
+KILN_AVX512 inline __attribute__((always_inline)) void FastTerms(const FastConsts& q, const V* phi,
+                                                                 const M* k, V* R, V* T) {
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
+  V c[U], base[U], cc[U], g[U], F[U], muR[U];
+  M ok[U], rok[U], tok[U];
+  M anyR = 0, anyT = 0;
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u) {
+    c[u] = Add(q.A, Mul(q.B, CosHalfTurn8(phi[u])));
+    ok[u] = Gt(c[u], zero) & k[u];
+    base[u] = Div(c[u], q.cosM);
+    cc[u] = StdMin(c[u], one);
+    const V g2 = Add(Mul(cc[u], cc[u]), q.eta2m1);
+    const M gok = Gt(g2, zero);
+    g[u] = _mm512_mask_sqrt_pd(zero, gok, g2);
+    const V a = Add(cc[u], g[u]), b = Add(Mul(q.eta2, cc[u]), g[u]);
+    const V aa = Mul(a, a), bb = Mul(b, b);
+    const V x = Sub(Mul(Mul(Add(q.eta2, one), cc[u]), cc[u]), one);
+    const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+    const V Fv =
+        StdMin(one, Div(Mul(q.e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
+    F[u] = _mm512_mask_blend_pd(gok, one, Fv);
+    muR[u] = Sub(Mul(Mul(two, c[u]), q.cosM), q.mu);
+    // Each ray's term only where some lane has it (under total internal reflection none
+    // transmits; past the reflected horizon none reflects).
+    rok[u] = ok[u] & Gt(muR[u], zero) & Gt(F[u], zero);
+    anyR |= rok[u];
+  }
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u)
+    R[u] =
+        anyR ? _mm512_maskz_mov_pd(rok[u], Weigh(base[u], muR[u], F[u], q.a2, q.gDen, q.mu)) : zero;
+  V muT[U];
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u) {
+    tok[u] = 0;
+    muT[u] = zero;
+    if (!q.reflectOnly) {
+      muT[u] = Div(Sub(q.mu, Mul(Sub(cc[u], g[u]), q.cosM)), q.eta);
+      tok[u] = ok[u] & Lt(F[u], one) & Gt(muT[u], zero);
+    }
+    anyT |= tok[u];
+  }
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u)
+    T[u] = anyT ? _mm512_maskz_mov_pd(tok[u],
+                                      Weigh(base[u], muT[u], Sub(one, F[u]), q.a2, q.gDen, q.mu))
+                : zero;
+}
+
 }  // namespace
 
 KILN_AVX512 void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR,
                                    double* outT) {
-  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
-  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM), mu = Set(r.mu), eta = Set(r.eta),
-          eta2 = Set(r.eta2), eta2m1 = Set(r.eta2m1), a2 = Set(r.a2), gDen = Set(r.gDen),
-          e2m1sq = Set(r.eta2m1 * r.eta2m1);
+  const FastConsts q = ConstsOf(r);
   for (int j = 0; j < J; j += 8) {
     const int m = J - j < 8 ? J - j : 8;
     const M k = static_cast<M>((1u << m) - 1);
-    const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
-    const M ok = Gt(c, zero) & k;
-    const V base = Div(c, cosM), cc = StdMin(c, one);
-    const V g2 = Add(Mul(cc, cc), eta2m1);
-    const M gok = Gt(g2, zero);
-    const V g = _mm512_mask_sqrt_pd(zero, gok, g2);
-    const V a = Add(cc, g), b = Add(Mul(eta2, cc), g);
-    const V aa = Mul(a, a), bb = Mul(b, b);
-    const V x = Sub(Mul(Mul(Add(eta2, one), cc), cc), one);
-    const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-    const V Fv = StdMin(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
-    const V F = _mm512_mask_blend_pd(gok, one, Fv);
-    const V muR = Sub(Mul(Mul(two, c), cosM), mu);
-    // Each ray's term only where some lane has it (under total internal reflection none
-    // transmits; past the reflected horizon none reflects).
-    const M rok = ok & Gt(muR, zero) & Gt(F, zero);
-    _mm512_mask_storeu_pd(outR + j, k,
-                          rok ? _mm512_maskz_mov_pd(rok, Weigh(base, muR, F, a2, gDen, mu)) : zero);
-    M tok = 0;
-    V muT = zero;
-    if (!r.reflectOnly) {
-      muT = Div(Sub(mu, Mul(Sub(cc, g), cosM)), eta);
-      tok = ok & Lt(F, one) & Gt(muT, zero);
+    V R, T;
+    const V p = _mm512_maskz_loadu_pd(k, phi + j);
+    FastTerms<1>(q, &p, &k, &R, &T);
+    _mm512_mask_storeu_pd(outR + j, k, R);
+    _mm512_mask_storeu_pd(outT + j, k, T);
+  }
+}
+
+KILN_AVX512 void FastRingWeighted(const FastRing& r, bool visible, RingBuffer& buf) {
+  constexpr int U = 2;  // vectors per step
+  const FastConsts q = ConstsOf(r);
+  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2), three = Set(3), six = Set(6);
+  const int J = buf.J;
+  for (int j = 0; j < J; j += 8 * U) {
+    V phi[U], w[U], R[U], T[U];
+    M k[U];
+#pragma GCC unroll 4
+    for (int u = 0; u < U; ++u) {
+      const int left = J - j - 8 * u, m = left < 0 ? 0 : left < 8 ? left : 8;
+      k[u] = static_cast<M>((1u << m) - 1);
+      const int o = j + 8 * u;
+      // Smooth(a, b, t, &dj): dj = (b - a) * 6 * t * (1 - t), phi = a + (b - a) * t * t *
+      // (3 - 2 t); the node's weight gw * dj.
+      const V a = _mm512_maskz_loadu_pd(k[u], buf.a + o),
+              b = _mm512_maskz_loadu_pd(k[u], buf.b + o),
+              t = _mm512_maskz_loadu_pd(k[u], buf.t + o);
+      const V d = Sub(b, a);
+      const V dj = Mul(Mul(Mul(d, six), t), Sub(one, t));
+      phi[u] = Add(a, Mul(Mul(Mul(d, t), t), Sub(three, Mul(two, t))));
+      w[u] = Mul(_mm512_maskz_loadu_pd(k[u], buf.gw + o), dj);
+      R[u] = T[u] = zero;
     }
-    _mm512_mask_storeu_pd(
-        outT + j, k,
-        tok ? _mm512_maskz_mov_pd(tok, Weigh(base, muT, Sub(one, F), a2, gDen, mu)) : zero);
+    if (visible) FastTerms<U>(q, phi, k, R, T);
+#pragma GCC unroll 4
+    for (int u = 0; u < U; ++u) {
+      _mm512_mask_storeu_pd(buf.tR + j + 8 * u, k[u], Mul(w[u], R[u]));
+      _mm512_mask_storeu_pd(buf.tT + j + 8 * u, k[u], Mul(w[u], T[u]));
+    }
   }
 }
 
@@ -286,6 +361,7 @@ KILN_AVX512 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const dou
 #else  // no AVX-512F path on this target: Enabled() is false, these are never called
 
 void FastRingIntegrand(const FastRing&, const double*, int, double*, double*) {}
+void FastRingWeighted(const FastRing&, bool, RingBuffer&) {}
 void ColumnRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
                       double*, double*) {}
 void ColumnRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*,

@@ -27,6 +27,9 @@ struct RingBuffer {
   double wR[kMaxRingNodes], wb[kMaxRingNodes], cc[kMaxRingNodes], tR[kMaxRingNodes],
       tT[kMaxRingNodes];
   unsigned char valid[kMaxRingNodes];
+  /// The exit walk's nodes by panel (FastRingWeighted): the panel [a, b] and the Gauss node t
+  /// and weight gw on [0, 1] of each node.
+  double a[kMaxRingNodes], b[kMaxRingNodes], t[kMaxRingNodes], gw[kMaxRingNodes];
 };
 
 /// One ring of the exit side's per-point walk (dielectric_albedo.cpp, FastView): the view's and
@@ -39,6 +42,13 @@ struct FastRing {
 /// FastView::Integrand {R, T} at the J azimuths phi[0 .. J-1] of ring r (cos phi by
 /// dielectric_walk::CosHalfTurn), into outR, outT. Needs Enabled().
 void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR, double* outT);
+
+/// The same ring's weighted terms from its nodes as the walk makes them
+/// (dielectric_walk::WalkNodes, Smooth): node j at phi = a + (b - a) t^2 (3 - 2 t) with weight
+/// w = gw (b - a) 6 t (1 - t) (a = buf.a[j], b = buf.b[j], t = buf.t[j], gw = buf.gw[j]), into
+/// buf.tR[j] = w R(phi), buf.tT[j] = w T(phi); R = T = 0 where !visible (a ring with cos_m <= 0).
+/// Every operation in Smooth's order: the portable walk's products. Needs Enabled().
+void FastRingWeighted(const FastRing& r, bool visible, RingBuffer& buf);
 
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).

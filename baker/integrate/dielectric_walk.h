@@ -32,23 +32,24 @@ constexpr int kMaxPhiBreaks = 40;
 /// Gauss nodes per panel by class. An outer panel [v_a, v_b] takes outerNodes[k] for the first k
 /// with its weight bound W > outerWeight[k] (outerNodes[3] below them all), W = (v_a - v_b) (mu +
 /// sin_o tan theta_m(v_b)) / gDen (the integrand is at most (c / cos_m) / gDen, c = o.m <= mu
-/// cos_m + sin_o sin_m, for every weight w(c) <= 1); an inner panel by its width in radians
-/// against innerWidth. Equal counts in every class: one Gauss rule for all panels.
+/// cos_m + sin_o sin_m, for every weight w(c) <= 1); an inner panel of a ring of that outer panel
+/// takes innerNodes[k][q] for the first q with its width in radians > innerWidth[q]. Equal counts
+/// in every class: one Gauss rule for all panels.
 struct NodeClasses {
   int outerNodes[4];
   double outerWeight[3];
-  int innerNodes[4];
+  int innerNodes[4][4];  ///< [outer class][inner width class]
   double innerWidth[3];
 };
 
 /// The node classes of a rule's options (DielectricRuleOptions, DielectricBtdfRuleOptions: the
-/// same four fields by name).
+/// same four fields by name): the inner counts the same for the rings of every outer class.
 template <class Options>
 NodeClasses ClassesOf(const Options& o) {
   NodeClasses c;
   for (int k = 0; k < 4; ++k) {
     c.outerNodes[k] = o.outerNodes[k];
-    c.innerNodes[k] = o.innerNodes[k];
+    for (int q = 0; q < 4; ++q) c.innerNodes[k][q] = o.innerNodes[q];
   }
   for (int k = 0; k < 3; ++k) {
     c.outerWeight[k] = o.outerWeight[k];
@@ -57,11 +58,16 @@ NodeClasses ClassesOf(const Options& o) {
   return c;
 }
 
-/// The node count of a class: counts[k] for the first k with x > bounds[k], else counts[3].
-inline int NodesOf(const int* counts, const double* bounds, double x) {
+/// The class of x: the first k with x > bounds[k], else 3.
+inline int ClassOf(const double* bounds, double x) {
   for (int k = 0; k < 3; ++k)
-    if (x > bounds[k]) return counts[k];
-  return counts[3];
+    if (x > bounds[k]) return k;
+  return 3;
+}
+
+/// The node count of a class: counts[ClassOf(bounds, x)].
+inline int NodesOf(const int* counts, const double* bounds, double x) {
+  return counts[ClassOf(bounds, x)];
 }
 
 /// cos(phi) for phi in [0, pi] (every azimuth the walks visit): -sin(x), x = phi - pi/2 in
@@ -101,15 +107,15 @@ int VBreaks(const Problem& p, double* vs) {
   return nt;
 }
 
-/// Walks the fixed rule's nodes with node classes `rule` in its one summation order: panels in
-/// order of v, rings (theta_m nodes) in order within each, azimuth nodes in order within a ring.
-/// For each ring: visit.BeginRing(h); visit.Node(h, phi, w) for each of its azimuth nodes (w the
-/// inner Gauss weight times the smoothstep's Jacobian); visit.EndRing(wo), wo the ring's outer
-/// weight times its Jacobian and 1 / pi. The visitor sums: FixedWalk below one integrand, the
-/// glass tables' eta columns (dielectric_albedo.cpp, dielectric_btdf.cpp) one per eta. Returns
-/// the azimuth nodes visited (the integrand evaluations).
+/// Walks the fixed rule's panels with node classes `rule` in its one summation order: panels in
+/// order of v, rings (theta_m nodes) in order within each, azimuth panels in order within a ring.
+/// For each ring: visit.BeginRing(h); visit.Panel(a, b, g) for each of its azimuth panels [a, b]
+/// of positive width with its Gauss rule g on [0, 1] (the nodes are Smooth(a, b, g.x[j]) with
+/// weights g.w[j] times the smoothstep's Jacobian, in order of j); visit.EndRing(wo), wo the
+/// ring's outer weight times its Jacobian and 1 / pi. Returns the azimuth nodes of those panels
+/// (the integrand evaluations).
 template <class Problem, class Visitor>
-long long WalkNodes(const Problem& p, const NodeClasses& rule, Visitor& visit) {
+long long WalkPanels(const Problem& p, const NodeClasses& rule, Visitor& visit) {
   double vs[kMaxThetaBreaks];
   const int nt = VBreaks(p, vs);
   long long count = 0;
@@ -120,8 +126,9 @@ long long WalkNodes(const Problem& p, const NodeClasses& rule, Visitor& visit) {
     const double weight =
         vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
                : INFINITY;
-    const GaussRule01& go =
-        CachedGaussLegendre01(NodesOf(rule.outerNodes, rule.outerWeight, weight));
+    const int outerClass = ClassOf(rule.outerWeight, weight);
+    const int* innerNodes = rule.innerNodes[outerClass];
+    const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
     for (size_t ko = 0; ko < go.x.size(); ++ko) {
       double jac;
       const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
@@ -134,19 +141,40 @@ long long WalkNodes(const Problem& p, const NodeClasses& rule, Visitor& visit) {
       for (int k = 0; k + 1 < np; ++k) {
         const double width = phis[k + 1] - phis[k];
         if (!(width > 0)) continue;
-        const GaussRule01& gi =
-            CachedGaussLegendre01(NodesOf(rule.innerNodes, rule.innerWidth, width));
-        for (size_t j = 0; j < gi.x.size(); ++j) {
-          double dj;
-          const double phi = Smooth(phis[k], phis[k + 1], gi.x[j], &dj);
-          ++count;
-          visit.Node(h, phi, gi.w[j] * dj);
-        }
+        const GaussRule01& gi = CachedGaussLegendre01(NodesOf(innerNodes, rule.innerWidth, width));
+        count += static_cast<long long>(gi.x.size());
+        visit.Panel(phis[k], phis[k + 1], gi);
       }
       visit.EndRing(go.w[ko] * jac / Pi);
     }
   }
   return count;
+}
+
+/// Walks the fixed rule's nodes (WalkPanels' order): for each ring visit.BeginRing(h);
+/// visit.Node(h, phi, w) for each of its azimuth nodes (w the inner Gauss weight times the
+/// smoothstep's Jacobian); visit.EndRing(wo). The visitor sums: FixedWalk below one integrand,
+/// the glass tables' eta columns (dielectric_albedo.cpp, dielectric_btdf.cpp) one per eta.
+/// Returns the azimuth nodes visited (the integrand evaluations).
+template <class Problem, class Visitor>
+long long WalkNodes(const Problem& p, const NodeClasses& rule, Visitor& visit) {
+  struct Nodes {
+    Visitor& visit;
+    PolarParam h{};
+    void BeginRing(const PolarParam& ring) {
+      h = ring;
+      visit.BeginRing(ring);
+    }
+    void Panel(double a, double b, const GaussRule01& g) {
+      for (size_t j = 0; j < g.x.size(); ++j) {
+        double dj;
+        const double phi = Smooth(a, b, g.x[j], &dj);
+        visit.Node(h, phi, g.w[j] * dj);
+      }
+    }
+    void EndRing(double wo) { visit.EndRing(wo); }
+  } nodes{visit};
+  return WalkPanels(p, rule, nodes);
 }
 
 /// The integral by the fixed rule with node classes `rule` (WalkNodes); evals (optional)
