@@ -54,7 +54,8 @@ std::vector<size_t> EdgeRows() {
 /// Where the tuned rule errs most on the dense grid (the [long] test below), as (mu, (eta, r))
 /// indices, always visited: E_R at mu = 0.5 next to the exit side's eta' = 1/1.1, 3.2e-7 at
 /// (1/1.1, r = 0.35), 3.1e-7 at (1/1.1001, 0.35), 2.7e-7 at (1/1.1001, 0.7), 2.7e-7 at
-/// (1/1.1, 0.7), 2.2e-7 at (1/1.15, 0.35).
+/// (1/1.1, 0.7), 2.2e-7 at (1/1.15, 0.35); the first still the worst, 3.2e-7, with the exit
+/// side's own node counts.
 const std::vector<test::GridIndex> kWorstPoints = {{6, 39}, {6, 46}, {6, 47}, {6, 40}, {6, 53}};
 
 /// The points the default tests visit: the columns mu = 0, 1e-6 and 1 and the EdgeRows whole,
