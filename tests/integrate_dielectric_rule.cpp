@@ -147,7 +147,7 @@ TEST_CASE("a coarser glass rule leaves its bound: the grid detects under-resolut
 }
 
 TEST_CASE(
-    "the exit side's node classes take under 80% of the entering side's counts' evaluations there",
+    "the exit side's node classes take under 85% of the entering side's counts' evaluations there",
     "[dielectric][glass-rule]") {
   // The same grid's exit points with the exit counts removed (exitOuterNodes[0] = 0: the
   // entering side's counts on both sides); the tuned rule's accuracy there is held above.
@@ -166,7 +166,7 @@ TEST_CASE(
   std::printf(
       "glass rule, exit side: %lld evaluations with its classes, %lld with the entering's\n",
       exitCounts, enteringCounts);
-  CHECK(10 * exitCounts < 8 * enteringCounts);
+  CHECK(100 * exitCounts < 85 * enteringCounts);
 }
 
 TEST_CASE("the glass rule gives the same bits on every call", "[dielectric][glass-rule]") {

@@ -71,7 +71,7 @@
 // lane by lane, no fused multiply-add: the same bits as the portable path
 // (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass tables (docs/models.md
 // section 16, "The rule's cost").
-// The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 10 / 4 / 2 outer nodes, and the
+// The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 12 / 4 / 2 outer nodes, and the
 // azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,124 evaluations per
 // texel of the exit E pair against 8,535. Its AVX-512F path keeps a ring's panels as they come
 // (dielectric_walk::WalkPanels) and makes the nodes, their weights and the weighted terms sixteen
@@ -383,14 +383,15 @@ Channels<2> View::Integrand(PolarParam h, double cp) const { return kiln::Integr
 /// 18 outer nodes raised to 24 when a third grid (tests/integrate_dielectric_rule.cpp) found
 /// 6.9e-7 at (mu, r, eta) = (0.83, 0.7, 0.56): worst 2.7e-7, 2.8e-7, 3.2e-7 on the three grids.
 /// The exit side's counts (eta < 1: the exit E pair's per-point walk): the bulk's outer panels
-/// at 22 nodes and 10 in the next class, and the azimuth nodes of a ring by its outer class
+/// at 22 nodes (12, 4, 2 in the next classes), and the azimuth nodes of a ring by its outer class
 /// too, 12 / 10 / 6 / 6 by width on the bulk's rings, 8 / 6 / 4 / 4, 4 / 4 / 2 / 2 and 2 on the
-/// rings of weight below 1e-2, 1e-4, 1e-6: 17-20% fewer evaluations than the entering side's
+/// rings of weight below 1e-2, 1e-4, 1e-6: 15-18% fewer evaluations than the entering side's
 /// counts over a 5,236-point exit grid (14 eta' 1/3 .. 0.999, 22 mu with mu_c -+ 1e-4, 0.01 and
 /// mu = eta', 17 roughness 1/39^2 .. 1) and 9,000 random points of the tables' domain (a third
 /// grazing, a fifth within 0.01 of mu_c, a seventh of mu = eta'), worst |fixed - adaptive at
-/// 1e-10| 6.2e-7 and 5.5e-7 (6.3e-7 and 5.2e-7 before). 20 outer nodes left 7.3e-7 next to
-/// mu_c at roughness 0.44-0.61; docs/design/glass-tables.md.
+/// 1e-10| 6.3e-7 and 5.5e-7 as before (6.3e-7, 5.2e-7). 20 outer nodes left 7.3e-7 next to mu_c
+/// at roughness 0.44-0.61; 10 in the second class moved E_R's grazing slope at mu = 1e-6
+/// (tests/runtime_stored_dielectric_exit.cpp); docs/design/glass-tables.md.
 const DielectricRuleOptions kTuned = {{24, 12, 4, 2},
                                       {1e-2, 1e-4, 1e-6},
                                       {12, 10, 6, 6},
@@ -398,7 +399,7 @@ const DielectricRuleOptions kTuned = {{24, 12, 4, 2},
                                       4,
                                       16,
                                       4,
-                                      {22, 10, 4, 2},
+                                      {22, 12, 4, 2},
                                       {{12, 10, 6, 6}, {8, 6, 4, 4}, {4, 4, 2, 2}, {2, 2, 2, 2}}};
 
 /// The node classes of the exit side's walk (eta < 1) for options opt: its exit counts, or the
