@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "baker/math/quadrature.h"
+#include "baker/models/beckmann_lambda.h"
 #include "baker/models/fresnel.h"
 #include "baker/models/registry.h"
 #include "baker/models/roughness.h"
@@ -88,13 +89,10 @@ inline double MuLambdaGGX(double mu, double sin, double a) {
   return den > 0 ? a2s2 / den : 0;
 }
 
-/// mu Lambda(mu) of Beckmann: (alpha sin exp(-x^2) / sqrt(pi) - mu erfc(x)) / 2, x = mu / (alpha
-/// sin) (alpha / (2 sqrt(pi)) at mu = 0).
+/// mu Lambda(mu) of Beckmann, sin = sqrt(1 - mu^2) given (models/beckmann_lambda.h: one exp,
+/// no erfc, for x = mu / (alpha sin) <= 6; alpha / (2 sqrt(pi)) at mu = 0).
 inline double MuLambdaBeckmann(double mu, double sin, double a) {
-  if (!(sin > 0)) return 0;
-  double x = mu / (a * sin);
-  if (!(x < 27)) return 0;  // exp(-x^2) underflows: Lambda is 0 to double precision
-  return std::max(0.0, (a * sin * std::exp(-x * x) * InvSqrtPi - mu * std::erfc(x)) / 2);
+  return BeckmannMuLambda(mu, sin, a);
 }
 
 /// Beckmann's Lambda(x) = (e^(-x^2) / (x sqrt(pi)) - erfc(x)) / 2 < e^(-x^2) / (2 sqrt(pi) x),
@@ -110,6 +108,7 @@ struct Context {
   double mu, st, a, oxs, ozs;
   double gNum;        ///< mu + mu Lambda_ggx(o)
   double gDenO;       ///< mu + mu Lambda(o) (the model's)
+  double gRatio;      ///< gNum / gDenO
   double blinnK;      ///< 1 / alpha^2 - 1 (Blinn-Phong)
   double tCap;        ///< t beyond which r < 1e-16 (1: none)
   double eta = 0;     ///< > 0: the albedo with FrDielectric(o.h, eta)
@@ -174,7 +173,10 @@ void AddUnity2(Context& k, double t, double C, double S, double q, double M2, do
   k.sumB += val * (w2 * w2 * w);
 }
 
-/// Adds weight times the integrand at inner node t of the azimuth with cos p = c.
+/// Adds weight times the integrand at inner node t of the azimuth with cos p = c. One division
+/// by M2 (mu_l = N1 / M2, sin_l = sqrt((M2 - N1)(M2 + N1)) / M2, 1 / |n'| = sqrt(1 / M2)); for
+/// Beckmann's Lambda x = mu_l / (alpha sin_l) from the same root, Lambda(l) =
+/// exp(-x^2) psi(x) / (2 x) (models/beckmann_lambda.h) and g's quotient folded into the node's.
 inline void Add(Context& k, double c, double t, double weight) {
   ++k.count;
   const double a = k.a, mu = k.mu;
@@ -182,38 +184,49 @@ inline void Add(Context& k, double c, double t, double weight) {
   const double C2 = C * C, M2 = aS * aS + C2;
   const double N1 = 2 * k.st * aS * C * c + mu * (C2 - aS * aS);  // mu_l M2
   if (!(N1 > 0)) return;
-  const double muL = N1 / M2, sinL = std::sqrt((M2 - N1) * (M2 + N1)) / M2;
-  double r = 1;
-  if (k.model.ndf == FixedRuleNdf::Beckmann) {
-    const double u = C2 > 0 ? S * S / C2 : INFINITY;
-    r = u < 700 ? std::exp(-u) * (1 + u) * (1 + u) : 0;
-  } else if (k.model.ndf == FixedRuleNdf::BlinnPhong) {
-    const double qm = q * q / M2;
-    if (k.blinnK == 0)
-      r = qm * qm;
-    else
-      r = C2 > 0 ? qm * qm * std::exp(-k.blinnK * std::log1p(aS * aS / C2)) : 0;
-  }
   if (k.model.ndf == FixedRuleNdf::UnityBRDF1) {
-    AddUnity(k, t, C, S, q, M2, muL, weight, c);
+    AddUnity(k, t, C, S, q, M2, N1 / M2, weight, c);
     return;
   }
   if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
-    AddUnity2(k, t, C, S, q, M2, muL, weight, c);
+    AddUnity2(k, t, C, S, q, M2, N1 / M2, weight, c);
     return;
   }
-  if (r == 0) return;
-  double g;
-  if (k.model.ndf != FixedRuleNdf::GGX && !(muL / (a * sinL) < kBeckmannLambdaNegligibleX)) {
-    g = k.gNum / k.gDenO;  // Lambda(l) vanishes in the sum (kBeckmannLambdaNegligibleX)
+  const double invM2 = 1 / M2, rootL = std::sqrt((M2 - N1) * (M2 + N1));  // sin_l M2
+  const double shape = weight * t * (2 * k.oxs * c * t + k.ozs * C);
+  double val;
+  if (k.model.ndf == FixedRuleNdf::GGX) {
+    const double muL = N1 * invM2, sinL = rootL * invM2;
+    const double muLambdaL = MuLambdaGGX(muL, sinL, a);
+    const double g = k.model.separable ? k.gNum / k.gDenO * (muL / (muL + muLambdaL))
+                                       : k.gNum / (k.gDenO + mu * (muLambdaL / muL));
+    val = shape / (q * q * q) * g;
   } else {
-    const double muLambdaL = k.model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(muL, sinL, a)
-                                                              : MuLambdaBeckmann(muL, sinL, a);
-    g = k.model.separable ? k.gNum / k.gDenO * (muL / (muL + muLambdaL))
-                          : k.gNum / (k.gDenO + mu * (muLambdaL / muL));
+    double r;
+    if (k.model.ndf == FixedRuleNdf::Beckmann) {
+      const double u = C2 > 0 ? S * S / C2 : INFINITY;
+      r = u < 700 ? std::exp(-u) * (1 + u) * (1 + u) : 0;
+    } else {  // Blinn-Phong
+      const double qm = q * q * invM2;
+      if (k.blinnK == 0)
+        r = qm * qm;
+      else
+        r = C2 > 0 ? qm * qm * std::exp(-k.blinnK * std::log1p(aS * aS / C2)) : 0;
+    }
+    if (r == 0) return;
+    const double x = N1 / (a * rootL);
+    if (!(x < kBeckmannLambdaNegligibleX)) {
+      val = shape * r * k.gRatio / (q * q * q);  // Lambda(l) vanishes in the sum
+    } else {
+      // 2 x Lambda(l) = e psi: g = gNum 2x / (gDenO 2x + mu e psi) height-correlated,
+      // gNum / gDenO 2x / (2x + e psi) separable.
+      const double ePsi = std::exp(-x * x) * BeckmannPsi(x), x2 = 2 * x;
+      const double gNum = k.model.separable ? k.gRatio * x2 : k.gNum * x2;
+      const double gDen = k.model.separable ? x2 + ePsi : k.gDenO * x2 + mu * ePsi;
+      val = shape * r * gNum / (q * q * q * gDen);
+    }
   }
-  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * r * g;
-  const double oh = (k.st * aS * c + mu * C) / std::sqrt(M2);
+  const double oh = (k.st * aS * c + mu * C) * std::sqrt(invM2);
   if (k.eta > 0) {
     k.sumV += val * FrDielectric(oh, k.eta);
   } else {
@@ -634,6 +647,7 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   k.gNum = k.mu + MuLambdaGGX(k.mu, k.st, k.a);
   k.gDenO = k.mu + (model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(k.mu, k.st, k.a)
                                                    : MuLambdaBeckmann(k.mu, k.st, k.a));
+  k.gRatio = k.gNum / k.gDenO;
   k.blinnK = 1 / (k.a * k.a) - 1;
   // The end of the NDF: u = tan^2 t' where log r = -37 (r = exp(-u) (1 + u)^2 for Beckmann; for
   // Blinn-Phong 2 log(1 + u) - (1 / alpha^2 + 1) log(1 + alpha^2 u), by bisection in log u, none
