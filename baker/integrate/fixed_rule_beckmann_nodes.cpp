@@ -1,0 +1,152 @@
+// Beckmann-family nodes of the microfacet fixed rule (fixed_rule_beckmann_nodes.h).
+// The scalar form below is the definition; the SSE2 form computes two nodes at once with the
+// same operations in the same order (each lane's arithmetic is IEEE double, as the scalar's),
+// the exp, log1p and psi of each lane in scalar code between its vector steps.
+#include "baker/integrate/fixed_rule_beckmann_nodes.h"
+
+#include <cmath>
+
+#include "baker/math/fast_exp.h"
+#include "baker/models/beckmann_lambda.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace kiln {
+namespace {
+
+/// Beckmann's Lambda(x) = (e^(-x^2) / (x sqrt(pi)) - erfc(x)) / 2 < e^(-x^2) / (2 sqrt(pi) x),
+/// x = mu / (alpha sin), is below 1.1e-17 from this x on: less than a fifth of half an ulp
+/// (2^-54 relative) of what Add adds it to (mu_o + mu_o Lambda(o) >= mu_o after a factor mu_o,
+/// or mu_l after a factor mu_l), so the sum rounds to that term alone and g is gNum / gDenO, the
+/// same bits without the erfc and exp (tests/integrate_fixed_rule_lambda_skip.cpp).
+constexpr double kBeckmannLambdaNegligibleX = kBeckmannPsiMaxX;
+/// Beckmann's r = exp(-u) (1 + u)^2 is taken as 0 from this u = tan^2 t' on.
+constexpr double kBeckmannMaxU = 700;
+
+/// r, the NDF's ratio to GGX's at the node (0: the node adds nothing).
+/// Beckmann: exp(-u) (1 + u)^2, u = S^2 / C^2 (given as sOverC2, used where C^2 > 0);
+/// Blinn-Phong: (q^2 / M2)^2 (1 + aS^2 / C^2)^(-K), K = 1 / alpha^2 - 1.
+inline double Ratio(const BeckmannNodeView& v, double C2, double sOverC2, double qm,
+                    double aSOverC2) {
+  if (!v.blinnPhong) {
+    const double u = C2 > 0 ? sOverC2 : INFINITY;
+    return u < kBeckmannMaxU ? ExpFast(-u) * (1 + u) * (1 + u) : 0;
+  }
+  if (v.blinnK == 0) return qm * qm;
+  return C2 > 0 ? qm * qm * ExpFast(-v.blinnK * Log1pNonNegative(aSOverC2)) : 0;
+}
+
+/// g = gN / gD at x = mu_l / (alpha sin_l): gNum / gDenO (as gRatio / 1) where Lambda(l)
+/// vanishes; else, with 2 x Lambda(l) = exp(-x^2) psi(x), gNum 2x / (gDenO 2x + mu e psi)
+/// (height-correlated) or gRatio 2x / (2x + e psi) (separable).
+inline void MaskingQuotient(const BeckmannNodeView& v, double x, double* gN, double* gD) {
+  if (!(x < kBeckmannLambdaNegligibleX)) {
+    *gN = v.gRatio;
+    *gD = 1;
+    return;
+  }
+  const double ePsi = ExpFast(-x * x) * BeckmannPsi(x), x2 = 2 * x;
+  *gN = v.separable ? v.gRatio * x2 : v.gNum * x2;
+  *gD = v.separable ? x2 + ePsi : v.gDenO * x2 + v.mu * ePsi;
+}
+
+/// One node: adds its value to sumV and its (1 - o.h)^5 part to sumB.
+inline void ScalarNode(const BeckmannNodeView& v, double c, double t, double weight, double& sumV,
+                       double& sumB) {
+  const double a = v.a, mu = v.mu;
+  const double t2 = t * t, C = 1 - t2, q = 1 + t2, S = 2 * t, aS = a * S;
+  const double C2 = C * C, aS2 = aS * aS, M2 = aS2 + C2;
+  const double N1 = 2 * v.st * aS * C * c + mu * (C2 - aS2);  // mu_l M2
+  if (!(N1 > 0)) return;
+  const double invM2 = 1 / M2, rootL = std::sqrt((M2 - N1) * (M2 + N1));  // sin_l M2
+  const double r = Ratio(v, C2, S * S / C2, q * q * invM2, aS2 / C2);
+  if (r == 0) return;
+  double gN, gD;
+  MaskingQuotient(v, N1 / (a * rootL), &gN, &gD);
+  const double shape = weight * t * (2 * v.oxs * c * t + v.ozs * C);
+  const double val = shape * r * gN / (q * q * q * gD);
+  const double oh = (v.st * aS * c + mu * C) * std::sqrt(invM2);
+  const double w = 1 - oh, w2 = w * w;
+  sumV += val;
+  sumB += val * (w2 * w2 * w);
+}
+
+}  // namespace
+
+void AddBeckmannNodesScalar(const BeckmannNodeView& v, double c, const double* t,
+                            const double* weight, int n, double& sumV, double& sumB) {
+  for (int i = 0; i < n; ++i) ScalarNode(v, c, t[i], weight[i], sumV, sumB);
+}
+
+#if defined(__SSE2__)
+
+void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, const double* weight,
+                      int n, double& sumV, double& sumB) {
+  const __m128d one = _mm_set1_pd(1), two = _mm_set1_pd(2), a = _mm_set1_pd(v.a);
+  const __m128d mu = _mm_set1_pd(v.mu), cc = _mm_set1_pd(c);
+  const __m128d twoSt = _mm_set1_pd(2 * v.st), st = _mm_set1_pd(v.st);
+  const __m128d twoOxs = _mm_set1_pd(2 * v.oxs), ozs = _mm_set1_pd(v.ozs);
+  int i = 0;
+  for (; i + 2 <= n; i += 2) {
+    const __m128d tt = _mm_loadu_pd(t + i);
+    const __m128d t2 = _mm_mul_pd(tt, tt), C = _mm_sub_pd(one, t2), q = _mm_add_pd(one, t2);
+    const __m128d S = _mm_mul_pd(two, tt), aS = _mm_mul_pd(a, S);
+    const __m128d C2 = _mm_mul_pd(C, C), aS2 = _mm_mul_pd(aS, aS), M2 = _mm_add_pd(aS2, C2);
+    const __m128d N1 = _mm_add_pd(_mm_mul_pd(_mm_mul_pd(_mm_mul_pd(twoSt, aS), C), cc),
+                                  _mm_mul_pd(mu, _mm_sub_pd(C2, aS2)));
+    const __m128d invM2 = _mm_div_pd(one, M2);
+    const __m128d rootL = _mm_sqrt_pd(_mm_mul_pd(_mm_sub_pd(M2, N1), _mm_add_pd(M2, N1)));
+    const __m128d sOverC2 = _mm_div_pd(_mm_mul_pd(S, S), C2);
+    const __m128d qm = _mm_mul_pd(_mm_mul_pd(q, q), invM2);
+    const __m128d aSOverC2 = _mm_div_pd(aS2, C2);
+    const __m128d x = _mm_div_pd(N1, _mm_mul_pd(a, rootL));
+    alignas(16) double n1[2], c2[2], so[2], qmv[2], ao[2], xv[2];
+    _mm_store_pd(n1, N1);
+    _mm_store_pd(c2, C2);
+    _mm_store_pd(so, sOverC2);
+    _mm_store_pd(qmv, qm);
+    _mm_store_pd(ao, aSOverC2);
+    _mm_store_pd(xv, x);
+    alignas(16) double r[2] = {0, 0}, gN[2] = {0, 0}, gD[2] = {1, 1};
+    bool add[2];
+    for (int l = 0; l < 2; ++l) {
+      add[l] = n1[l] > 0;
+      if (!add[l]) continue;
+      r[l] = Ratio(v, c2[l], so[l], qmv[l], ao[l]);
+      add[l] = r[l] != 0;
+      if (add[l]) MaskingQuotient(v, xv[l], &gN[l], &gD[l]);
+    }
+    if (!add[0] && !add[1]) continue;
+    const __m128d shape =
+        _mm_mul_pd(_mm_mul_pd(_mm_loadu_pd(weight + i), tt),
+                   _mm_add_pd(_mm_mul_pd(_mm_mul_pd(twoOxs, cc), tt), _mm_mul_pd(ozs, C)));
+    const __m128d q3 = _mm_mul_pd(_mm_mul_pd(q, q), q);
+    const __m128d val = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(shape, _mm_load_pd(r)), _mm_load_pd(gN)),
+                                   _mm_mul_pd(q3, _mm_load_pd(gD)));
+    const __m128d oh = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(_mm_mul_pd(st, aS), cc), _mm_mul_pd(mu, C)),
+                                  _mm_sqrt_pd(invM2));
+    const __m128d w = _mm_sub_pd(one, oh), w2 = _mm_mul_pd(w, w);
+    const __m128d b = _mm_mul_pd(val, _mm_mul_pd(_mm_mul_pd(w2, w2), w));
+    alignas(16) double vv[2], bv[2];
+    _mm_store_pd(vv, val);
+    _mm_store_pd(bv, b);
+    for (int l = 0; l < 2; ++l)
+      if (add[l]) {
+        sumV += vv[l];
+        sumB += bv[l];
+      }
+  }
+  if (i < n) AddBeckmannNodesScalar(v, c, t + i, weight + i, n - i, sumV, sumB);
+}
+
+#else
+
+void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, const double* weight,
+                      int n, double& sumV, double& sumB) {
+  AddBeckmannNodesScalar(v, c, t, weight, n, sumV, sumB);
+}
+
+#endif
+
+}  // namespace kiln
