@@ -102,3 +102,17 @@ TEST_CASE("Beckmann's mu Lambda in the one-exp form agrees with BeckmannDistribu
             Approx(BeckmannDistribution{alpha}.MuLambda(mu)).epsilon(1e-14));
     }
 }
+
+#if defined(__SSE2__)
+TEST_CASE("BeckmannPsi2 gives BeckmannPsi's bits in each lane", "[models][beckmann-lambda]") {
+  int differ = 0;
+  for (int i = 0; i <= 24000; ++i) {
+    const double x0 = kBeckmannPsiMaxX * i / 24000,
+                 x1 = kBeckmannPsiMaxX * ((i * 7919) % 24001) / 24000;
+    alignas(16) double out[2];
+    _mm_store_pd(out, BeckmannPsi2(_mm_set_pd(x1, x0)));
+    differ += out[0] != BeckmannPsi(x0) || out[1] != BeckmannPsi(x1);
+  }
+  CHECK(differ == 0);
+}
+#endif

@@ -1,12 +1,14 @@
 // Beckmann-family nodes of the microfacet fixed rule (fixed_rule_beckmann_nodes.h).
 // The scalar form below is the definition; the SSE2 form computes two nodes at once with the
-// same operations in the same order (each lane's arithmetic is IEEE double, as the scalar's),
-// the exp, log1p and psi of each lane in scalar code between its vector steps.
+// same operations in the same order (each lane's arithmetic is IEEE double, as the scalar's):
+// ExpFast2 and BeckmannPsi2 give ExpFast's and BeckmannPsi's bits in each lane, Blinn-Phong's
+// log1p and exp are taken lane by lane, and a branch becomes a mask where both sides are
+// computed on clamped arguments and each lane keeps its own.
 #include "baker/integrate/fixed_rule_beckmann_nodes.h"
 
 #include <cmath>
 
-#include "baker/math/fast_exp.h"
+#include "baker/math/fast_exp_log.h"
 #include "baker/models/beckmann_lambda.h"
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -83,10 +85,13 @@ void AddBeckmannNodesScalar(const BeckmannNodeView& v, double c, const double* t
 
 void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, const double* weight,
                       int n, double& sumV, double& sumB) {
-  const __m128d one = _mm_set1_pd(1), two = _mm_set1_pd(2), a = _mm_set1_pd(v.a);
-  const __m128d mu = _mm_set1_pd(v.mu), cc = _mm_set1_pd(c);
+  const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1), two = _mm_set1_pd(2);
+  const __m128d a = _mm_set1_pd(v.a), mu = _mm_set1_pd(v.mu), cc = _mm_set1_pd(c);
   const __m128d twoSt = _mm_set1_pd(2 * v.st), st = _mm_set1_pd(v.st);
   const __m128d twoOxs = _mm_set1_pd(2 * v.oxs), ozs = _mm_set1_pd(v.ozs);
+  const __m128d maxU = _mm_set1_pd(kBeckmannMaxU), psiMax = _mm_set1_pd(kBeckmannLambdaNegligibleX);
+  const __m128d gNum = _mm_set1_pd(v.gNum), gDenO = _mm_set1_pd(v.gDenO);
+  const __m128d gRatio = _mm_set1_pd(v.gRatio);
   int i = 0;
   for (; i + 2 <= n; i += 2) {
     const __m128d tt = _mm_loadu_pd(t + i);
@@ -97,33 +102,43 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
                                   _mm_mul_pd(mu, _mm_sub_pd(C2, aS2)));
     const __m128d invM2 = _mm_div_pd(one, M2);
     const __m128d rootL = _mm_sqrt_pd(_mm_mul_pd(_mm_sub_pd(M2, N1), _mm_add_pd(M2, N1)));
-    const __m128d sOverC2 = _mm_div_pd(_mm_mul_pd(S, S), C2);
-    const __m128d qm = _mm_mul_pd(_mm_mul_pd(q, q), invM2);
-    const __m128d aSOverC2 = _mm_div_pd(aS2, C2);
-    const __m128d x = _mm_div_pd(N1, _mm_mul_pd(a, rootL));
-    alignas(16) double n1[2], c2[2], so[2], qmv[2], ao[2], xv[2];
-    _mm_store_pd(n1, N1);
-    _mm_store_pd(c2, C2);
-    _mm_store_pd(so, sOverC2);
-    _mm_store_pd(qmv, qm);
-    _mm_store_pd(ao, aSOverC2);
-    _mm_store_pd(xv, x);
-    alignas(16) double r[2] = {0, 0}, gN[2] = {0, 0}, gD[2] = {1, 1};
-    bool add[2];
-    for (int l = 0; l < 2; ++l) {
-      add[l] = n1[l] > 0;
-      if (!add[l]) continue;
-      r[l] = Ratio(v, c2[l], so[l], qmv[l], ao[l]);
-      add[l] = r[l] != 0;
-      if (add[l]) MaskingQuotient(v, xv[l], &gN[l], &gD[l]);
+    // r: Beckmann's in the lanes (u clamped to kBeckmannMaxU, where r is 0 anyway; C2 = 0 gives
+    // +inf, clamped too), Blinn-Phong's (a log1p and an exp of the lane's own range) lane by lane.
+    __m128d r;
+    if (!v.blinnPhong) {
+      const __m128d sOverC2 = _mm_div_pd(_mm_mul_pd(S, S), C2);
+      const __m128d u = _mm_min_pd(sOverC2, maxU), u1 = _mm_add_pd(one, u);
+      const __m128d live = _mm_and_pd(_mm_cmpgt_pd(C2, zero), _mm_cmplt_pd(sOverC2, maxU));
+      r = _mm_and_pd(live, _mm_mul_pd(_mm_mul_pd(ExpFast2(_mm_sub_pd(zero, u)), u1), u1));
+    } else {
+      alignas(16) double c2[2], qm[2], ao[2], rv[2];
+      _mm_store_pd(c2, C2);
+      _mm_store_pd(qm, _mm_mul_pd(_mm_mul_pd(q, q), invM2));
+      _mm_store_pd(ao, _mm_div_pd(aS2, C2));
+      for (int l = 0; l < 2; ++l) rv[l] = Ratio(v, c2[l], 0, qm[l], ao[l]);
+      r = _mm_load_pd(rv);
     }
-    if (!add[0] && !add[1]) continue;
+    // Bit l: lane l adds (mu_l > 0 and r != 0).
+    const int add = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(N1, zero), _mm_cmpneq_pd(r, zero)));
+    if (add == 0) continue;
+    // g = gN / gD (MaskingQuotient): psi at x clamped to [0, 6] (NaN: 6), gRatio / 1 where
+    // !(x < 6).
+    const __m128d x = _mm_div_pd(N1, _mm_mul_pd(a, rootL));
+    const __m128d xc = _mm_max_pd(_mm_min_pd(x, psiMax), zero);
+    const __m128d ePsi =
+        _mm_mul_pd(ExpFast2(_mm_sub_pd(zero, _mm_mul_pd(xc, xc))), BeckmannPsi2(xc));
+    const __m128d x2 = _mm_mul_pd(two, xc);
+    const __m128d gNl = _mm_mul_pd(v.separable ? gRatio : gNum, x2);
+    const __m128d gDl = v.separable ? _mm_add_pd(x2, ePsi)
+                                    : _mm_add_pd(_mm_mul_pd(gDenO, x2), _mm_mul_pd(mu, ePsi));
+    const __m128d lam = _mm_cmplt_pd(x, psiMax);
+    const __m128d gN = _mm_or_pd(_mm_and_pd(lam, gNl), _mm_andnot_pd(lam, gRatio));
+    const __m128d gD = _mm_or_pd(_mm_and_pd(lam, gDl), _mm_andnot_pd(lam, one));
     const __m128d shape =
         _mm_mul_pd(_mm_mul_pd(_mm_loadu_pd(weight + i), tt),
                    _mm_add_pd(_mm_mul_pd(_mm_mul_pd(twoOxs, cc), tt), _mm_mul_pd(ozs, C)));
     const __m128d q3 = _mm_mul_pd(_mm_mul_pd(q, q), q);
-    const __m128d val = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(shape, _mm_load_pd(r)), _mm_load_pd(gN)),
-                                   _mm_mul_pd(q3, _mm_load_pd(gD)));
+    const __m128d val = _mm_div_pd(_mm_mul_pd(_mm_mul_pd(shape, r), gN), _mm_mul_pd(q3, gD));
     const __m128d oh = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(_mm_mul_pd(st, aS), cc), _mm_mul_pd(mu, C)),
                                   _mm_sqrt_pd(invM2));
     const __m128d w = _mm_sub_pd(one, oh), w2 = _mm_mul_pd(w, w);
@@ -132,7 +147,7 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
     _mm_store_pd(vv, val);
     _mm_store_pd(bv, b);
     for (int l = 0; l < 2; ++l)
-      if (add[l]) {
+      if (add & (1 << l)) {
         sumV += vv[l];
         sumB += bv[l];
       }

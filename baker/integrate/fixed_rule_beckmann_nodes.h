@@ -1,6 +1,6 @@
 // The inner nodes of the microfacet fixed rule (fixed_rule_microfacet.cpp) for Beckmann and
 // Blinn-Phong, a panel at a time: two nodes per SSE2 instruction for the divisions and square
-// roots, the exp and log1p inline (math/fast_exp.h), Lambda(l) in its one-exp form
+// roots, the exp and log1p inline (math/fast_exp_log.h), Lambda(l) in its one-exp form
 // (models/beckmann_lambda.h). Each lane does the scalar form's operations in its order, so both
 // give the same bits (tests/integrate_fixed_rule_beckmann_nodes.cpp).
 //

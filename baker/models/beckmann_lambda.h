@@ -10,6 +10,9 @@
 #include <cmath>
 
 #include "baker/math/constants.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace kiln {
 
@@ -36,6 +39,25 @@ inline double BeckmannPsi(double x) {
   const double q0 = p01 + p23 * z2, q1 = p45 + p67 * z2, q2 = p89 + pab * z2;
   return q0 + (q1 + q2 * z4) * z4;
 }
+
+#if defined(__SSE2__)
+/// BeckmannPsi in both lanes, x in [0, kBeckmannPsiMaxX] in each (the caller clamps): the same
+/// operations, so each lane has BeckmannPsi's bits.
+inline __m128d BeckmannPsi2(__m128d x) {
+  const int i0 = std::min(static_cast<int>(_mm_cvtsd_f64(x) * 4), kBeckmannPsiPieces - 1);
+  const int i1 =
+      std::min(static_cast<int>(_mm_cvtsd_f64(_mm_unpackhi_pd(x, x)) * 4), kBeckmannPsiPieces - 1);
+  const __m128d z = _mm_sub_pd(_mm_mul_pd(_mm_set1_pd(8), x), _mm_set_pd(2 * i1 + 1, 2 * i0 + 1));
+  const double *a = kBeckmannPsiCoeffs[i0], *b = kBeckmannPsiCoeffs[i1];
+  auto c = [&](int k) { return _mm_set_pd(b[k], a[k]); };
+  auto pair = [&](int k) { return _mm_add_pd(c(k), _mm_mul_pd(c(k + 1), z)); };
+  const __m128d z2 = _mm_mul_pd(z, z), z4 = _mm_mul_pd(z2, z2);
+  const __m128d q0 = _mm_add_pd(pair(0), _mm_mul_pd(pair(2), z2));
+  const __m128d q1 = _mm_add_pd(pair(4), _mm_mul_pd(pair(6), z2));
+  const __m128d q2 = _mm_add_pd(pair(8), _mm_mul_pd(pair(10), z2));
+  return _mm_add_pd(q0, _mm_mul_pd(_mm_add_pd(q1, _mm_mul_pd(q2, z4)), z4));
+}
+#endif
 
 /// mu Lambda(mu) of Beckmann at roughness alpha > 0, view cosine mu in [0, 1] and sine
 /// sin = sqrt(1 - mu^2) given: (alpha sin / 2) exp(-x^2) psi(x), x = mu / (alpha sin), for
