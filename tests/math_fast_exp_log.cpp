@@ -83,6 +83,26 @@ TEST_CASE("ExpFast2 gives ExpFast's bits in each lane", "[math][fast-exp-log]") 
   }
   CHECK(differ == 0);
 }
+
+TEST_CASE("LogFast2 and Log1pNonNegative2 give their scalar forms' bits in each lane",
+          "[math][fast-exp-log]") {
+  std::mt19937_64 rng(0x32E5);
+  std::uniform_real_distribution<double> lg(-700, 700), small(-40, 2);
+  int differ = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double x0 = std::exp(lg(rng)), x1 = i % 2 ? 1 + std::exp(small(rng)) : x0 * 3;
+    const double y0 = std::exp(small(rng)), y1 = i % 5 ? std::exp(lg(rng)) : 0.75;
+    alignas(16) double lx[2], ly[2];
+    _mm_store_pd(lx, LogFast2(_mm_set_pd(x1, x0)));
+    _mm_store_pd(ly, Log1pNonNegative2(_mm_set_pd(y1, y0)));
+    differ += lx[0] != LogFast(x0) || lx[1] != LogFast(x1);
+    differ += ly[0] != Log1pNonNegative(y0) || ly[1] != Log1pNonNegative(y1);
+  }
+  alignas(16) double ends[2];
+  _mm_store_pd(ends, Log1pNonNegative2(_mm_set_pd(1e-300, 0.0)));
+  differ += ends[0] != 0 || ends[1] != 1e-300;
+  CHECK(differ == 0);
+}
 #endif
 
 TEST_CASE(
@@ -90,29 +110,28 @@ TEST_CASE(
     "[math][fast-exp-log]") {
   std::mt19937_64 rng(0x32E4);
   std::uniform_real_distribution<double> lg(-708, 709), near1(0.9, 1.1);
-  double worstUlp = 0, worstAbs = 0;
+  double worstUlp = 0;
   auto check = [&](double x) {
     const long double ref = std::log(static_cast<long double>(x));
     const double v = LogFast(x);
-    if (std::abs(ref) >= 1)
-      worstUlp = std::max(worstUlp, Ulps(v, ref));
-    else
-      worstAbs = std::max(worstAbs, static_cast<double>(std::abs(v - ref)));
+    if (ref != 0) worstUlp = std::max(worstUlp, Ulps(v, ref));
   };
   for (int i = 0; i < 400000; ++i) check(i % 2 ? std::exp(lg(rng)) : near1(rng));
   for (double x : {2.2250738585072014e-308, 1.7976931348623157e308, 1.0, 2.0, 0.5,
                    std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0), std::nextafter(2.0, 0.0)})
     check(x);
-  INFO("worst " << worstUlp << " ulp (|log x| >= 1), " << worstAbs << " absolute (below)");
+  INFO("worst " << worstUlp << " ulp");
   CHECK(worstUlp <= 2);
-  CHECK(worstAbs <= 3e-16);
   CHECK(LogFast(1) == 0);
-  // Just above 1 (r = x - 1 exact): relative accuracy, what log1p's form needs.
+  // Near 1 on both sides (r exact, e ln 2 and log 2 cancelling exactly below 1): relative
+  // accuracy, what log1p's form needs.
   double worstNear1 = 0;
   for (int i = 1; i <= 100000; ++i)
-    for (double x : {1 + i * (1.0 / 64) / 100001, 1 + std::ldexp(static_cast<double>(i), -60)})
+    for (double x :
+         {1 + i * (1.0 / 64) / 100001, 1 - i * (1.0 / 64) / 100001,
+          1 + std::ldexp(static_cast<double>(i), -60), 1 - std::ldexp(static_cast<double>(i), -61)})
       worstNear1 = std::max(worstNear1, Ulps(LogFast(x), std::log(static_cast<long double>(x))));
-  INFO("worst " << worstNear1 << " ulp on (1, 1 + 1/64)");
+  INFO("worst " << worstNear1 << " ulp on (1 - 1/64, 1 + 1/64)");
   CHECK(worstNear1 <= 2);
   // Outside the normal range: std::log's values.
   CHECK(LogFast(0) == -INFINITY);

@@ -1,9 +1,9 @@
 // Beckmann-family nodes of the microfacet fixed rule (fixed_rule_beckmann_nodes.h).
 // The scalar form below is the definition; the SSE2 form computes two nodes at once with the
 // same operations in the same order (each lane's arithmetic is IEEE double, as the scalar's):
-// ExpFast2 and BeckmannPsi2 give ExpFast's and BeckmannPsi's bits in each lane, Blinn-Phong's
-// log1p and exp are taken lane by lane, and a branch becomes a mask where both sides are
-// computed on clamped arguments and each lane keeps its own.
+// ExpFast2, Log1pNonNegative2 and BeckmannPsi2 give their scalar forms' bits in each lane, and a
+// branch becomes a mask where both sides are computed on clamped arguments and each lane keeps
+// its own (Blinn-Phong's exp below ExpFast's table, r < 1e-304, is taken lane by lane).
 #include "baker/integrate/fixed_rule_beckmann_nodes.h"
 
 #include <cmath>
@@ -92,6 +92,7 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
   const __m128d maxU = _mm_set1_pd(kBeckmannMaxU), psiMax = _mm_set1_pd(kBeckmannLambdaNegligibleX);
   const __m128d gNum = _mm_set1_pd(v.gNum), gDenO = _mm_set1_pd(v.gDenO);
   const __m128d gRatio = _mm_set1_pd(v.gRatio);
+  const __m128d maxY = _mm_set1_pd(1e300), minArg = _mm_set1_pd(-kExpFastMaxAbs);
   int i = 0;
   for (; i + 2 <= n; i += 2) {
     const __m128d tt = _mm_loadu_pd(t + i);
@@ -111,12 +112,25 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
       const __m128d live = _mm_and_pd(_mm_cmpgt_pd(C2, zero), _mm_cmplt_pd(sOverC2, maxU));
       r = _mm_and_pd(live, _mm_mul_pd(_mm_mul_pd(ExpFast2(_mm_sub_pd(zero, u)), u1), u1));
     } else {
-      alignas(16) double c2[2], qm[2], ao[2], rv[2];
-      _mm_store_pd(c2, C2);
-      _mm_store_pd(qm, _mm_mul_pd(_mm_mul_pd(q, q), invM2));
-      _mm_store_pd(ao, _mm_div_pd(aS2, C2));
-      for (int l = 0; l < 2; ++l) rv[l] = Ratio(v, c2[l], 0, qm[l], ao[l]);
-      r = _mm_load_pd(rv);
+      const __m128d qm = _mm_mul_pd(_mm_mul_pd(q, q), invM2), qm2 = _mm_mul_pd(qm, qm);
+      if (v.blinnK == 0) {
+        r = qm2;
+      } else {
+        // (C2 > 0 lanes; the others' y clamped to a finite value and masked.)
+        const __m128d live = _mm_cmpgt_pd(C2, zero);
+        const __m128d y = _mm_and_pd(live, _mm_min_pd(_mm_div_pd(aS2, C2), maxY));
+        const __m128d arg = _mm_mul_pd(_mm_set1_pd(-v.blinnK), Log1pNonNegative2(y));
+        if (_mm_movemask_pd(_mm_and_pd(live, _mm_cmplt_pd(arg, minArg))) == 0) {
+          r = _mm_and_pd(live, _mm_mul_pd(qm2, ExpFast2(_mm_max_pd(arg, minArg))));
+        } else {  // exp below ExpFast's table (r < 1e-304): lane by lane, as the scalar form
+          alignas(16) double c2[2], qmv[2], ao[2], rv[2];
+          _mm_store_pd(c2, C2);
+          _mm_store_pd(qmv, qm);
+          _mm_store_pd(ao, _mm_div_pd(aS2, C2));
+          for (int l = 0; l < 2; ++l) rv[l] = Ratio(v, c2[l], 0, qmv[l], ao[l]);
+          r = _mm_load_pd(rv);
+        }
+      }
     }
     // Bit l: lane l adds (mu_l > 0 and r != 0).
     const int add = _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(N1, zero), _mm_cmpneq_pd(r, zero)));
