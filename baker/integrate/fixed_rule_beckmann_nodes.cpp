@@ -13,6 +13,10 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#if defined(__x86_64__)
+#include <immintrin.h>
+#define KILN_AVX2 __attribute__((target("avx2")))
+#endif
 
 namespace kiln {
 namespace {
@@ -76,10 +80,226 @@ inline void ScalarNode(const BeckmannNodeView& v, double c, double t, double wei
 
 }  // namespace
 
+double BeckmannNodeRatio(const BeckmannNodeView& v, double C2, double sOverC2, double qm,
+                         double aSOverC2) {
+  return Ratio(v, C2, sOverC2, qm, aSOverC2);
+}
+
 void AddBeckmannNodesScalar(const BeckmannNodeView& v, double c, const double* t,
                             const double* weight, int n, double& sumV, double& sumB) {
   for (int i = 0; i < n; ++i) ScalarNode(v, c, t[i], weight[i], sumV, sumB);
 }
+
+#if defined(__x86_64__)
+
+namespace {
+
+/// Whether this CPU runs the AVX2 lanes (four nodes at a time; no FMA: the same bits).
+bool HasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+
+/// table[index] in four lanes (32- and 64-bit indices), by masked gathers into zero (GCC's
+/// unmasked gather reads an undefined source register).
+KILN_AVX2 inline __m256d Gather4(const double* table, __m128i index) {
+  const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  return _mm256_mask_i32gather_pd(_mm256_setzero_pd(), table, index, all, 8);
+}
+KILN_AVX2 inline __m256d Gather4(const double* table, __m256i index) {
+  const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  return _mm256_mask_i64gather_pd(_mm256_setzero_pd(), table, index, all, 8);
+}
+
+/// 0 <= n < 2^52 in each 64-bit lane, as a double (exact): n in the mantissa of 2^52, less 2^52.
+KILN_AVX2 inline __m256d SmallToDouble4(__m256i n) {
+  const __m256d two52 = _mm256_set1_pd(4503599627370496.0);
+  return _mm256_sub_pd(_mm256_castsi256_pd(_mm256_or_si256(n, _mm256_castpd_si256(two52))), two52);
+}
+
+/// a - r b in four lanes.
+KILN_AVX2 inline __m256d Lin4(__m256d r, double a, double b) {
+  return _mm256_sub_pd(_mm256_set1_pd(a), _mm256_mul_pd(r, _mm256_set1_pd(b)));
+}
+
+/// c_k + c_(k+1) z of each lane's psi piece (row: the piece's first coefficient's index).
+KILN_AVX2 inline __m256d PsiPair4(const double* base, __m128i row, __m256d z, int k) {
+  return _mm256_add_pd(Gather4(base + k, row), _mm256_mul_pd(Gather4(base + k + 1, row), z));
+}
+
+/// ExpFast in four lanes, |x| <= kExpFastMaxAbs in each: ExpFast2's operations.
+KILN_AVX2 inline __m256d ExpFast4(__m256d x) {
+  const __m256d shift = _mm256_set1_pd(kExpShift);
+  const __m256d kd =
+      _mm256_sub_pd(_mm256_add_pd(_mm256_mul_pd(x, _mm256_set1_pd(kExpInvLn2N)), shift), shift);
+  const __m256d r = _mm256_sub_pd(_mm256_sub_pd(x, _mm256_mul_pd(kd, _mm256_set1_pd(kExpLn2NHi))),
+                                  _mm256_mul_pd(kd, _mm256_set1_pd(kExpLn2NLo)));
+  const __m128i k = _mm256_cvtpd_epi32(kd);  // kd is an integer: exact
+  const __m128i j = _mm_and_si128(k, _mm_set1_epi32(63));
+  const __m128i e = _mm_srai_epi32(_mm_sub_epi32(k, j), 6);
+  const __m256d t = Gather4(kExp2Sixtyfourths, j);
+  const __m256i biased = _mm256_cvtepi32_epi64(_mm_add_epi32(e, _mm_set1_epi32(1023)));
+  const __m256d scale = _mm256_castsi256_pd(_mm256_slli_epi64(biased, 52));
+  const __m256d r2 = _mm256_mul_pd(r, r);
+  const __m256d inner =
+      _mm256_add_pd(_mm256_add_pd(_mm256_set1_pd(0.5), _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 6))),
+                    _mm256_mul_pd(r2, _mm256_add_pd(_mm256_set1_pd(1.0 / 24),
+                                                    _mm256_mul_pd(r, _mm256_set1_pd(1.0 / 120)))));
+  const __m256d p = _mm256_add_pd(r, _mm256_mul_pd(r2, inner));
+  return _mm256_mul_pd(_mm256_add_pd(t, _mm256_mul_pd(t, p)), scale);
+}
+
+/// LogFast in four lanes, x normal, positive and finite in each: LogFast2's operations.
+KILN_AVX2 inline __m256d LogFast4(__m256d x) {
+  const __m256i bits = _mm256_castpd_si256(x);
+  const __m256d e =
+      _mm256_sub_pd(SmallToDouble4(_mm256_srli_epi64(bits, 52)), _mm256_set1_pd(1023));
+  const __m256i j = _mm256_srli_epi64(
+      _mm256_add_epi64(_mm256_and_si256(_mm256_srli_epi64(bits, 45), _mm256_set1_epi64x(127)),
+                       _mm256_set1_epi64x(1)),
+      1);
+  const __m256d m = _mm256_castsi256_pd(
+      _mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi64x(0x000FFFFFFFFFFFFFll)),
+                      _mm256_set1_epi64x(0x3FF0000000000000ll)));
+  const __m256d centre =
+      _mm256_mul_pd(_mm256_add_pd(_mm256_set1_pd(64), SmallToDouble4(j)), _mm256_set1_pd(1.0 / 64));
+  const __m256d r = _mm256_mul_pd(_mm256_sub_pd(m, centre), Gather4(kLogInvCentres, j));
+  const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2);
+  const __m256d q01 = Lin4(r, 0.5, 1.0 / 3), q23 = Lin4(r, 0.25, 1.0 / 5);
+  const __m256d q45 = Lin4(r, 1.0 / 6, 1.0 / 7), q67 = Lin4(r, 0.125, 1.0 / 9);
+  const __m256d Q =
+      _mm256_add_pd(_mm256_add_pd(q01, _mm256_mul_pd(q23, r2)),
+                    _mm256_mul_pd(r4, _mm256_add_pd(_mm256_add_pd(q45, _mm256_mul_pd(q67, r2)),
+                                                    _mm256_mul_pd(r4, _mm256_set1_pd(0.1)))));
+  const __m256d hi =
+      _mm256_add_pd(_mm256_mul_pd(e, _mm256_set1_pd(kLogLn2Hi)), Gather4(kLogCentresHi, j));
+  const __m256d lo =
+      _mm256_add_pd(_mm256_mul_pd(e, _mm256_set1_pd(kLogLn2Lo)), Gather4(kLogCentresLo, j));
+  return _mm256_add_pd(hi, _mm256_add_pd(lo, _mm256_sub_pd(r, _mm256_mul_pd(r2, Q))));
+}
+
+/// Log1pNonNegative in four lanes, y >= 0 finite in each: Log1pNonNegative2's operations.
+KILN_AVX2 inline __m256d Log1pNonNegative4(__m256d y) {
+  const __m256d one = _mm256_set1_pd(1), u = _mm256_add_pd(one, y);
+  const __m256d l = LogFast4(u);
+  const __m256d small = _mm256_cmp_pd(y, _mm256_set1_pd(0.75), _CMP_LT_OQ);
+  const __m256d scaled = _mm256_mul_pd(l, _mm256_div_pd(y, _mm256_sub_pd(u, one)));
+  const __m256d v = _mm256_blendv_pd(l, scaled, small);
+  return _mm256_blendv_pd(v, y, _mm256_cmp_pd(u, one, _CMP_EQ_OQ));
+}
+
+/// BeckmannPsi in four lanes, x in [0, kBeckmannPsiMaxX] in each: BeckmannPsi2's operations.
+KILN_AVX2 inline __m256d BeckmannPsi4(__m256d x) {
+  const __m128i i = _mm_min_epi32(_mm256_cvttpd_epi32(_mm256_mul_pd(x, _mm256_set1_pd(4))),
+                                  _mm_set1_epi32(kBeckmannPsiPieces - 1));
+  const __m256d odd = _mm256_cvtepi32_pd(_mm_add_epi32(_mm_add_epi32(i, i), _mm_set1_epi32(1)));
+  const __m256d z = _mm256_sub_pd(_mm256_mul_pd(_mm256_set1_pd(8), x), odd);
+  const __m128i row = _mm_mullo_epi32(i, _mm_set1_epi32(kBeckmannPsiTerms));
+  const double* base = &kBeckmannPsiCoeffs[0][0];
+  const __m256d z2 = _mm256_mul_pd(z, z), z4 = _mm256_mul_pd(z2, z2);
+  const __m256d q0 =
+      _mm256_add_pd(PsiPair4(base, row, z, 0), _mm256_mul_pd(PsiPair4(base, row, z, 2), z2));
+  const __m256d q1 =
+      _mm256_add_pd(PsiPair4(base, row, z, 4), _mm256_mul_pd(PsiPair4(base, row, z, 6), z2));
+  const __m256d q2 =
+      _mm256_add_pd(PsiPair4(base, row, z, 8), _mm256_mul_pd(PsiPair4(base, row, z, 10), z2));
+  return _mm256_add_pd(q0, _mm256_mul_pd(_mm256_add_pd(q1, _mm256_mul_pd(q2, z4)), z4));
+}
+
+/// The SSE2 loop's body four nodes at a time; returns how many nodes it took (a multiple of 4).
+KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const double* t,
+                                   const double* weight, int n, double& sumV, double& sumB) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), two = _mm256_set1_pd(2);
+  const __m256d a = _mm256_set1_pd(v.a), mu = _mm256_set1_pd(v.mu), cc = _mm256_set1_pd(c);
+  const __m256d twoSt = _mm256_set1_pd(2 * v.st), st = _mm256_set1_pd(v.st);
+  const __m256d twoOxs = _mm256_set1_pd(2 * v.oxs), ozs = _mm256_set1_pd(v.ozs);
+  const __m256d maxU = _mm256_set1_pd(kBeckmannMaxU);
+  const __m256d psiMax = _mm256_set1_pd(kBeckmannLambdaNegligibleX);
+  const __m256d gNum = _mm256_set1_pd(v.gNum), gDenO = _mm256_set1_pd(v.gDenO);
+  const __m256d gRatio = _mm256_set1_pd(v.gRatio);
+  const __m256d maxY = _mm256_set1_pd(1e300), minArg = _mm256_set1_pd(-kExpFastMaxAbs);
+  int i = 0;
+  for (; i + 4 <= n; i += 4) {
+    const __m256d tt = _mm256_loadu_pd(t + i);
+    const __m256d t2 = _mm256_mul_pd(tt, tt), C = _mm256_sub_pd(one, t2);
+    const __m256d q = _mm256_add_pd(one, t2);
+    const __m256d S = _mm256_mul_pd(two, tt), aS = _mm256_mul_pd(a, S);
+    const __m256d C2 = _mm256_mul_pd(C, C), aS2 = _mm256_mul_pd(aS, aS);
+    const __m256d M2 = _mm256_add_pd(aS2, C2);
+    const __m256d N1 = _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(twoSt, aS), C), cc),
+                                     _mm256_mul_pd(mu, _mm256_sub_pd(C2, aS2)));
+    const __m256d invM2 = _mm256_div_pd(one, M2);
+    const __m256d rootL =
+        _mm256_sqrt_pd(_mm256_mul_pd(_mm256_sub_pd(M2, N1), _mm256_add_pd(M2, N1)));
+    const __m256d live = _mm256_cmp_pd(C2, zero, _CMP_GT_OQ);
+    __m256d r;
+    if (!v.blinnPhong) {
+      const __m256d sOverC2 = _mm256_div_pd(_mm256_mul_pd(S, S), C2);
+      const __m256d u = _mm256_min_pd(sOverC2, maxU), u1 = _mm256_add_pd(one, u);
+      const __m256d keep = _mm256_and_pd(live, _mm256_cmp_pd(sOverC2, maxU, _CMP_LT_OQ));
+      r = _mm256_and_pd(keep,
+                        _mm256_mul_pd(_mm256_mul_pd(ExpFast4(_mm256_sub_pd(zero, u)), u1), u1));
+    } else {
+      const __m256d qm = _mm256_mul_pd(_mm256_mul_pd(q, q), invM2);
+      const __m256d qm2 = _mm256_mul_pd(qm, qm);
+      if (v.blinnK == 0) {
+        r = qm2;
+      } else {
+        const __m256d y = _mm256_and_pd(live, _mm256_min_pd(_mm256_div_pd(aS2, C2), maxY));
+        const __m256d arg = _mm256_mul_pd(_mm256_set1_pd(-v.blinnK), Log1pNonNegative4(y));
+        const __m256d low = _mm256_and_pd(live, _mm256_cmp_pd(arg, minArg, _CMP_LT_OQ));
+        r = _mm256_and_pd(live, _mm256_mul_pd(qm2, ExpFast4(_mm256_max_pd(arg, minArg))));
+        if (_mm256_movemask_pd(low) != 0) {  // exp below ExpFast's table: lane by lane
+          alignas(32) double c2[4], qmv[4], ao[4], rv[4];
+          _mm256_store_pd(c2, C2);
+          _mm256_store_pd(qmv, qm);
+          _mm256_store_pd(ao, _mm256_div_pd(aS2, C2));
+          for (int l = 0; l < 4; ++l) rv[l] = BeckmannNodeRatio(v, c2[l], 0, qmv[l], ao[l]);
+          r = _mm256_load_pd(rv);
+        }
+      }
+    }
+    const int add = _mm256_movemask_pd(
+        _mm256_and_pd(_mm256_cmp_pd(N1, zero, _CMP_GT_OQ), _mm256_cmp_pd(r, zero, _CMP_NEQ_UQ)));
+    if (add == 0) continue;
+    const __m256d x = _mm256_div_pd(N1, _mm256_mul_pd(a, rootL));
+    const __m256d xc = _mm256_max_pd(_mm256_min_pd(x, psiMax), zero);
+    const __m256d ePsi =
+        _mm256_mul_pd(ExpFast4(_mm256_sub_pd(zero, _mm256_mul_pd(xc, xc))), BeckmannPsi4(xc));
+    const __m256d x2 = _mm256_mul_pd(two, xc);
+    const __m256d gNl = _mm256_mul_pd(v.separable ? gRatio : gNum, x2);
+    const __m256d gDl = v.separable
+                            ? _mm256_add_pd(x2, ePsi)
+                            : _mm256_add_pd(_mm256_mul_pd(gDenO, x2), _mm256_mul_pd(mu, ePsi));
+    const __m256d lam = _mm256_cmp_pd(x, psiMax, _CMP_LT_OQ);
+    const __m256d gN = _mm256_blendv_pd(gRatio, gNl, lam);
+    const __m256d gD = _mm256_blendv_pd(one, gDl, lam);
+    const __m256d shape = _mm256_mul_pd(
+        _mm256_mul_pd(_mm256_loadu_pd(weight + i), tt),
+        _mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(twoOxs, cc), tt), _mm256_mul_pd(ozs, C)));
+    const __m256d q3 = _mm256_mul_pd(_mm256_mul_pd(q, q), q);
+    const __m256d val =
+        _mm256_div_pd(_mm256_mul_pd(_mm256_mul_pd(shape, r), gN), _mm256_mul_pd(q3, gD));
+    const __m256d oh =
+        _mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_mul_pd(st, aS), cc), _mm256_mul_pd(mu, C)),
+                      _mm256_sqrt_pd(invM2));
+    const __m256d w = _mm256_sub_pd(one, oh), w2 = _mm256_mul_pd(w, w);
+    const __m256d b = _mm256_mul_pd(val, _mm256_mul_pd(_mm256_mul_pd(w2, w2), w));
+    alignas(32) double vv[4], bv[4];
+    _mm256_store_pd(vv, val);
+    _mm256_store_pd(bv, b);
+    for (int l = 0; l < 4; ++l)
+      if (add & (1 << l)) {
+        sumV += vv[l];
+        sumB += bv[l];
+      }
+  }
+  return i;
+}
+
+}  // namespace
+
+#endif
 
 #if defined(__SSE2__)
 
@@ -94,6 +314,9 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
   const __m128d gRatio = _mm_set1_pd(v.gRatio);
   const __m128d maxY = _mm_set1_pd(1e300), minArg = _mm_set1_pd(-kExpFastMaxAbs);
   int i = 0;
+#if defined(__x86_64__)
+  if (HasAvx2()) i = AddBeckmannNodesAvx2(v, c, t, weight, n, sumV, sumB);
+#endif
   for (; i + 2 <= n; i += 2) {
     const __m128d tt = _mm_loadu_pd(t + i);
     const __m128d t2 = _mm_mul_pd(tt, tt), C = _mm_sub_pd(one, t2), q = _mm_add_pd(one, t2);

@@ -1,8 +1,9 @@
 // The inner nodes of the microfacet fixed rule (fixed_rule_microfacet.cpp) for Beckmann and
-// Blinn-Phong, a panel at a time: two nodes per SSE2 instruction for the divisions and square
-// roots, the exp and log1p inline (math/fast_exp_log.h), Lambda(l) in its one-exp form
-// (models/beckmann_lambda.h). Each lane does the scalar form's operations in its order, so both
-// give the same bits (tests/integrate_fixed_rule_beckmann_nodes.cpp).
+// Blinn-Phong, a panel at a time: four nodes per AVX2 instruction where the CPU has it, else two
+// per SSE2 instruction, the exp, log and log1p inline (math/fast_exp_log.h), Lambda(l) in its
+// one-exp form (models/beckmann_lambda.h). Each lane does the scalar form's operations in its
+// order, without fused multiply-adds, so every path gives the same bits
+// (tests/integrate_fixed_rule_beckmann_nodes.cpp).
 //
 // A node is t = tan(t'/2) on the azimuth with cos p = c, t' the polar angle of the GGX-stretched
 // normal (fixed_rule_microfacet.cpp, "Derivation"); it adds weight times
@@ -29,6 +30,12 @@ struct BeckmannNodeView {
 /// given; nodes below the horizon (mu_l <= 0) or where r = 0 add nothing. SSE2 where available.
 void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, const double* weight,
                       int n, double& sumV, double& sumB);
+
+/// r, the NDF's ratio to GGX's at a node, as the scalar form computes it: Beckmann's
+/// exp(-u) (1 + u)^2 (u = sOverC2 where C2 > 0), Blinn-Phong's (qm)^2 (1 + aSOverC2)^(-K)
+/// (0: the node adds nothing). The lanes take it where their exp leaves ExpFast's table.
+double BeckmannNodeRatio(const BeckmannNodeView& v, double C2, double sOverC2, double qm,
+                         double aSOverC2);
 
 /// The same one node at a time in scalar arithmetic (the lanes' reference).
 void AddBeckmannNodesScalar(const BeckmannNodeView& v, double c, const double* t,
