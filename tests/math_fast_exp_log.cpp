@@ -7,6 +7,7 @@
 #include <random>
 
 #include "baker/math/fast_exp_log.h"
+#include "baker/math/fast_exp_log_avx2.h"
 
 using namespace kiln;
 
@@ -138,3 +139,41 @@ TEST_CASE(
   CHECK(std::isnan(LogFast(-1)));
   CHECK(LogFast(4.9e-324) == std::log(4.9e-324));
 }
+
+#if defined(__x86_64__)
+namespace {
+
+/// f's four lanes at (x0, x1, x2, x3), computed in an AVX2 function (its target attribute).
+template <class F>
+KILN_AVX2 void Lanes4(F f, const double* x, double* out) {
+  _mm256_storeu_pd(out, f(_mm256_loadu_pd(x)));
+}
+KILN_AVX2 __m256d Exp4(__m256d x) { return ExpFast4(x); }
+KILN_AVX2 __m256d Log4(__m256d x) { return LogFast4(x); }
+KILN_AVX2 __m256d Log1p4(__m256d x) { return Log1pNonNegative4(x); }
+
+}  // namespace
+
+TEST_CASE("ExpFast4, LogFast4 and Log1pNonNegative4 give their scalar forms' bits in each lane",
+          "[math][fast-exp-log]") {
+  if (!__builtin_cpu_supports("avx2")) return;  // (no AVX2 path on this CPU)
+  std::mt19937_64 rng(0x32E6);
+  std::uniform_real_distribution<double> wide(-kExpFastMaxAbs, kExpFastMaxAbs), small(-40, 2);
+  int differ = 0;
+  for (int i = 0; i < 100000; ++i) {
+    double xe[4], xl[4], y[4], oe[4], ol[4], oy[4];
+    for (int l = 0; l < 4; ++l) {
+      xe[l] = (i + l) % 2 ? wide(rng) : small(rng);
+      xl[l] = (i + l) % 3 ? std::exp(wide(rng)) : 1 + std::exp(small(rng)) * (l % 2 ? 1 : -0.01);
+      y[l] = (i + l) % 5 ? std::exp(small(rng)) : l * 0.25;
+    }
+    Lanes4(Exp4, xe, oe);
+    Lanes4(Log4, xl, ol);
+    Lanes4(Log1p4, y, oy);
+    for (int l = 0; l < 4; ++l)
+      differ +=
+          oe[l] != ExpFast(xe[l]) || ol[l] != LogFast(xl[l]) || oy[l] != Log1pNonNegative(y[l]);
+  }
+  CHECK(differ == 0);
+}
+#endif
