@@ -1,7 +1,8 @@
 // Sheen rows (fixed_rule_sheen_row.h). The scalar form is the definition; the AVX2 form takes
 // four azimuth nodes at once with the same operations in the same order (LogFast4 and ExpFast4
-// have LogFast's and ExpFast's bits in each lane); a lane outside their tables (sin^2(theta_h)
-// not a normal positive double, or an exp argument below -kExpFastMaxAbs) takes SheenNdf itself.
+// have LogFast's and ExpFast's bits in each lane, 0 below kExpUnderflow as ExpFast); a lane
+// outside their tables (sin^2(theta_h) not a normal positive double, or an exp argument in
+// [kExpUnderflow, -kExpFastMaxAbs)) takes SheenNdf itself.
 #include "baker/integrate/fixed_rule_sheen_row.h"
 
 #include <algorithm>
@@ -59,6 +60,13 @@ bool HasAvx2() {
   return avx2;
 }
 
+/// ExpFast in four lanes for any argument but those in [kExpUnderflow, -kExpFastMaxAbs), which the
+/// caller redoes: 0 below kExpUnderflow (as ExpFast), the table above.
+KILN_AVX2 inline __m256d ExpOrZero4(__m256d arg) {
+  const __m256d e = ExpFast4(_mm256_max_pd(arg, _mm256_set1_pd(-kExpFastMaxAbs)));
+  return _mm256_and_pd(_mm256_cmp_pd(arg, _mm256_set1_pd(kExpUnderflow), _CMP_GE_OQ), e);
+}
+
 /// The row's first nodes four at a time, their terms added to `row` in node order; returns how
 /// many it took (a multiple of 4).
 KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
@@ -86,22 +94,25 @@ KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, doub
     __m256d arg, d;
     if (!ndf.velvet) {
       arg = _mm256_mul_pd(LogFast4(s2c), charlieK);
-      d = _mm256_div_pd(_mm256_mul_pd(charlieC, ExpFast4(_mm256_max_pd(arg, minArg))), twoPi);
+      d = _mm256_div_pd(_mm256_mul_pd(charlieC, ExpOrZero4(arg)), twoPi);
     } else {
       arg = _mm256_sub_pd(zero, _mm256_div_pd(_mm256_sub_pd(one, s2c), _mm256_mul_pd(a2v, s2c)));
-      const __m256d e = ExpFast4(_mm256_max_pd(arg, minArg));
+      const __m256d e = ExpOrZero4(arg);
       d = _mm256_mul_pd(velvetNorm, _mm256_add_pd(one, _mm256_div_pd(_mm256_mul_pd(four, e),
                                                                      _mm256_mul_pd(s2c, s2c))));
     }
-    // Lanes off the tables: SheenNdf itself.
-    const __m256d off = _mm256_or_pd(_mm256_cmp_pd(s2, minNormal, _CMP_NGE_UQ),
-                                     _mm256_cmp_pd(arg, minArg, _CMP_LT_OQ));
+    // Lanes off the tables: SheenNdf itself (an exp argument in [kExpUnderflow, -kExpFastMaxAbs)).
+    const __m256d off =
+        _mm256_or_pd(_mm256_cmp_pd(s2, minNormal, _CMP_NGE_UQ),
+                     _mm256_and_pd(_mm256_cmp_pd(arg, minArg, _CMP_LT_OQ),
+                                   _mm256_cmp_pd(arg, _mm256_set1_pd(kExpUnderflow), _CMP_GE_OQ)));
     if (_mm256_movemask_pd(off) != 0) {
       _mm256_store_pd(dv, d);
       _mm256_store_pd(s2v, s2);
       _mm256_store_pd(argv, arg);
       for (int l = 0; l < 4; ++l)
-        if (!(s2v[l] >= kMinNormal) || argv[l] < -kExpFastMaxAbs) dv[l] = SheenNdf(ndf, s2v[l]);
+        if (!(s2v[l] >= kMinNormal) || (argv[l] < -kExpFastMaxAbs && argv[l] >= kExpUnderflow))
+          dv[l] = SheenNdf(ndf, s2v[l]);
       d = _mm256_load_pd(dv);
     }
     // ws_j (D V) where h is defined, ws_j 0 where not (as the scalar form).
