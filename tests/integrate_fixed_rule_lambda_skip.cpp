@@ -1,6 +1,7 @@
-// The microfacet fixed rule skips Beckmann's Lambda(l) (an erfc and an exp) where
-// x = mu_l / (alpha sin_l) >= 6 (fixed_rule_microfacet.cpp, kBeckmannLambdaNegligibleX): there it
-// vanishes in the sums it enters, so the rule's bits, and the committed tables, are unchanged.
+// The microfacet fixed rule skips Beckmann's Lambda(l) (an exp and psi) where
+// x = mu_l / (alpha sin_l) >= 6 (fixed_rule_beckmann_nodes.cpp, kBeckmannLambdaNegligibleX):
+// there it vanishes in the sums it enters, so the rule's bits, and the committed tables, are
+// unchanged.
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -210,20 +210,29 @@ TEST_CASE(
     else
       CHECK(text.find("|fixed-rule:") == std::string::npos);
     // Version 3: the GGX kernel's variants (ggx-separable's microfacet kinds, the exact-Fresnel
-    // albedo and its average) and the microfacet kinds of beckmann, beckmann-separable and
-    // blinn-phong (fewer nodes); the rest keep the hashes of before.
-    const bool microfacet3 = spec.model == "ggx-separable" || spec.model == "beckmann" ||
-                             spec.model == "beckmann-separable" || spec.model == "blinn-phong";
-    const bool kernel3 =
-        (microfacet3 && (spec.name.find("-dfg") != std::string::npos ||
-                         spec.name.find("-albedo") != std::string::npos)) ||
-        spec.name == "ggx-fresnel-albedo" || spec.name == "ggx-fresnel-albedo-avg" ||
-        // charlie-smith's own node counts; the Charlie pair's average panels
-        // (ltc-charlie-smith's version is the ltc kind's "fit4o-rule3")
+    // albedo and its average), the sheen rows with the inline exp and log (charlie's dfg and
+    // albedo, ashikhmin-velvet's three), the glass exit pair's third revision. Version 4: the
+    // Beckmann family's one-exp Lambda and SIMD nodes after fewer nodes (the microfacet kinds of
+    // beckmann, beckmann-separable and blinn-phong), charlie-smith's inline sheen rows after its
+    // own node counts (ltc-charlie-smith's version is the ltc kind's "fit4o-rule3"), the Charlie
+    // average after its own panels; the glass entering tables' (E_R, E_T, the BTDF split sum)
+    // own fourth revision. The rest keep the hashes of before.
+    const bool microfacetKind = spec.name.find("-dfg") != std::string::npos ||
+                                spec.name.find("-albedo") != std::string::npos;
+    const bool beckmannFamily = spec.model == "beckmann" || spec.model == "beckmann-separable" ||
+                                spec.model == "blinn-phong";
+    const bool version4 =
+        (beckmannFamily && microfacetKind) ||
         (spec.model == "charlie-smith" && spec.quantity != Quantity::Ltc) ||
-        spec.name == "charlie-albedo-avg" ||
-        // the glass exit pair: its rule's third revision (the E tables' own)
+        spec.name == "charlie-albedo-avg" || spec.name == "ggx-dielectric-albedo-r" ||
+        spec.name == "ggx-dielectric-albedo-t" || spec.name == "ggx-dielectric-btdf-split-sum";
+    const bool version3 =
+        (spec.model == "ggx-separable" && microfacetKind) || spec.name == "ggx-fresnel-albedo" ||
+        spec.name == "ggx-fresnel-albedo-avg" ||
+        ((spec.model == "charlie" || spec.model == "ashikhmin-velvet") && microfacetKind &&
+         spec.name != "charlie-albedo-avg") ||
         spec.name == "ggx-dielectric-albedo-r-exit" || spec.name == "ggx-dielectric-albedo-t-exit";
-    CHECK((text.find("|fixed-rule:3|") != std::string::npos) == kernel3);
+    CHECK((text.find("|fixed-rule:3|") != std::string::npos) == version3);
+    CHECK((text.find("|fixed-rule:4|") != std::string::npos) == version4);
   }
 }

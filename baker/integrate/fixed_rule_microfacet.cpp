@@ -51,7 +51,9 @@
 #include <cstring>
 #include <vector>
 
+#include "baker/integrate/fixed_rule_beckmann_nodes.h"
 #include "baker/math/quadrature.h"
+#include "baker/models/beckmann_lambda.h"
 #include "baker/models/fresnel.h"
 #include "baker/models/registry.h"
 #include "baker/models/roughness.h"
@@ -88,32 +90,24 @@ inline double MuLambdaGGX(double mu, double sin, double a) {
   return den > 0 ? a2s2 / den : 0;
 }
 
-/// mu Lambda(mu) of Beckmann: (alpha sin exp(-x^2) / sqrt(pi) - mu erfc(x)) / 2, x = mu / (alpha
-/// sin) (alpha / (2 sqrt(pi)) at mu = 0).
+/// mu Lambda(mu) of Beckmann, sin = sqrt(1 - mu^2) given (models/beckmann_lambda.h: one exp,
+/// no erfc, for x = mu / (alpha sin) <= 6; alpha / (2 sqrt(pi)) at mu = 0).
 inline double MuLambdaBeckmann(double mu, double sin, double a) {
-  if (!(sin > 0)) return 0;
-  double x = mu / (a * sin);
-  if (!(x < 27)) return 0;  // exp(-x^2) underflows: Lambda is 0 to double precision
-  return std::max(0.0, (a * sin * std::exp(-x * x) * InvSqrtPi - mu * std::erfc(x)) / 2);
+  return BeckmannMuLambda(mu, sin, a);
 }
-
-/// Beckmann's Lambda(x) = (e^(-x^2) / (x sqrt(pi)) - erfc(x)) / 2 < e^(-x^2) / (2 sqrt(pi) x),
-/// x = mu / (alpha sin), is below 1.1e-17 from this x on: less than a fifth of half an ulp
-/// (2^-54 relative) of what Add adds it to (mu_o + mu_o Lambda(o) >= mu_o after a factor mu_o,
-/// or mu_l after a factor mu_l), so the sum rounds to that term alone and g is gNum / gDenO, the
-/// same bits without the erfc and exp (tests/integrate_fixed_rule_lambda_skip.cpp).
-constexpr double kBeckmannLambdaNegligibleX = 6;
 
 /// What one evaluation needs: the view, the model, the Fresnel index.
 struct Context {
   FixedRuleModel model;
   double mu, st, a, oxs, ozs;
-  double gNum;        ///< mu + mu Lambda_ggx(o)
-  double gDenO;       ///< mu + mu Lambda(o) (the model's)
-  double blinnK;      ///< 1 / alpha^2 - 1 (Blinn-Phong)
-  double tCap;        ///< t beyond which r < 1e-16 (1: none)
-  double eta = 0;     ///< > 0: the albedo with FrDielectric(o.h, eta)
-  double unityA = 0;  ///< UnityBRDF1: Unity's a = max(r^2, 0.002) (a is alpha_q)
+  double gNum;            ///< mu + mu Lambda_ggx(o)
+  double gDenO;           ///< mu + mu Lambda(o) (the model's)
+  double gRatio;          ///< gNum / gDenO
+  BeckmannNodeView view;  ///< the same for AddBeckmannNodes (Beckmann, Blinn-Phong)
+  double blinnK;          ///< 1 / alpha^2 - 1 (Blinn-Phong)
+  double tCap;            ///< t beyond which r < 1e-16 (1: none)
+  double eta = 0;         ///< > 0: the albedo with FrDielectric(o.h, eta)
+  double unityA = 0;      ///< UnityBRDF1: Unity's a = max(r^2, 0.002) (a is alpha_q)
   double sumV = 0, sumB = 0;
   long long count = 0;
 };
@@ -174,46 +168,30 @@ void AddUnity2(Context& k, double t, double C, double S, double q, double M2, do
   k.sumB += val * (w2 * w2 * w);
 }
 
-/// Adds weight times the integrand at inner node t of the azimuth with cos p = c.
+/// Adds weight times the integrand at inner node t of the azimuth with cos p = c: GGX (the
+/// general rule's ggx-separable and exact-Fresnel albedo) and the Unity models; Beckmann and
+/// Blinn-Phong take AddBeckmannNodes (fixed_rule_beckmann_nodes.h) a panel at a time.
 inline void Add(Context& k, double c, double t, double weight) {
-  ++k.count;
   const double a = k.a, mu = k.mu;
   const double t2 = t * t, C = 1 - t2, q = 1 + t2, S = 2 * t, aS = a * S;
   const double C2 = C * C, M2 = aS * aS + C2;
   const double N1 = 2 * k.st * aS * C * c + mu * (C2 - aS * aS);  // mu_l M2
   if (!(N1 > 0)) return;
-  const double muL = N1 / M2, sinL = std::sqrt((M2 - N1) * (M2 + N1)) / M2;
-  double r = 1;
-  if (k.model.ndf == FixedRuleNdf::Beckmann) {
-    const double u = C2 > 0 ? S * S / C2 : INFINITY;
-    r = u < 700 ? std::exp(-u) * (1 + u) * (1 + u) : 0;
-  } else if (k.model.ndf == FixedRuleNdf::BlinnPhong) {
-    const double qm = q * q / M2;
-    if (k.blinnK == 0)
-      r = qm * qm;
-    else
-      r = C2 > 0 ? qm * qm * std::exp(-k.blinnK * std::log1p(aS * aS / C2)) : 0;
-  }
   if (k.model.ndf == FixedRuleNdf::UnityBRDF1) {
-    AddUnity(k, t, C, S, q, M2, muL, weight, c);
+    AddUnity(k, t, C, S, q, M2, N1 / M2, weight, c);
     return;
   }
   if (k.model.ndf == FixedRuleNdf::UnityBRDF2) {
-    AddUnity2(k, t, C, S, q, M2, muL, weight, c);
+    AddUnity2(k, t, C, S, q, M2, N1 / M2, weight, c);
     return;
   }
-  if (r == 0) return;
-  double g;
-  if (k.model.ndf != FixedRuleNdf::GGX && !(muL / (a * sinL) < kBeckmannLambdaNegligibleX)) {
-    g = k.gNum / k.gDenO;  // Lambda(l) vanishes in the sum (kBeckmannLambdaNegligibleX)
-  } else {
-    const double muLambdaL = k.model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(muL, sinL, a)
-                                                              : MuLambdaBeckmann(muL, sinL, a);
-    g = k.model.separable ? k.gNum / k.gDenO * (muL / (muL + muLambdaL))
-                          : k.gNum / (k.gDenO + mu * (muLambdaL / muL));
-  }
-  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * r * g;
-  const double oh = (k.st * aS * c + mu * C) / std::sqrt(M2);
+  const double invM2 = 1 / M2;
+  const double muL = N1 * invM2, sinL = std::sqrt((M2 - N1) * (M2 + N1)) * invM2;
+  const double muLambdaL = MuLambdaGGX(muL, sinL, a);
+  const double g = k.model.separable ? k.gNum / k.gDenO * (muL / (muL + muLambdaL))
+                                     : k.gNum / (k.gDenO + mu * (muLambdaL / muL));
+  const double val = weight * t * (2 * k.oxs * c * t + k.ozs * C) / (q * q * q) * g;
+  const double oh = (k.st * aS * c + mu * C) * std::sqrt(invM2);
   if (k.eta > 0) {
     k.sumV += val * FrDielectric(oh, k.eta);
   } else {
@@ -223,10 +201,26 @@ inline void Add(Context& k, double c, double t, double weight) {
   }
 }
 
+/// Adds the n nodes (t[i], weight[i]) of the azimuth with cos p = c, in order.
+inline void AddNodes(Context& k, double c, const double* t, const double* weight, int n) {
+  k.count += n;
+  if (k.model.ndf == FixedRuleNdf::Beckmann || k.model.ndf == FixedRuleNdf::BlinnPhong) {
+    AddBeckmannNodes(k.view, c, t, weight, n, k.sumV, k.sumB);
+    return;
+  }
+  for (int i = 0; i < n; ++i) Add(k, c, t[i], weight[i]);
+}
+
 /// A plain Gauss panel of n nodes over t in [t0, t0 + len].
 inline void PlainPanel(Context& k, double c, double pw, double t0, double len, int n) {
   const GaussRule01& g = Gauss(n);
-  for (size_t i = 0; i < g.x.size(); ++i) Add(k, c, t0 + len * g.x[i], pw * len * g.w[i]);
+  const int m = static_cast<int>(g.x.size());
+  double t[kMaxNodes], w[kMaxNodes];
+  for (int i = 0; i < m; ++i) {
+    t[i] = t0 + len * g.x[i];
+    w[i] = pw * len * g.w[i];
+  }
+  AddNodes(k, c, t, w, m);
 }
 
 /// A panel of length len from the end `end` (t = end + dir x, dir = +-1), graded towards `end`
@@ -236,10 +230,14 @@ inline void GradedPanel(Context& k, double c, double pw, double end, double dir,
                         double e, int base, double perEFold) {
   const double h = std::log1p(len / e), em = std::expm1(h);
   const GaussRule01& g = Gauss(base + static_cast<int>(std::ceil(perEFold * h - 1e-9)));
-  for (size_t i = 0; i < g.x.size(); ++i) {
+  const int m = static_cast<int>(g.x.size());
+  double t[kMaxNodes], w[kMaxNodes];
+  for (int i = 0; i < m; ++i) {
     const double x = len * std::expm1(h * g.x[i]) / em;
-    Add(k, c, end + dir * x, pw * len * h * g.w[i] * std::exp(h * g.x[i]) / em);
+    t[i] = end + dir * x;
+    w[i] = pw * len * h * g.w[i] * std::exp(h * g.x[i]) / em;
   }
+  AddNodes(k, c, t, w, m);
 }
 
 /// A segment [t0, t1] of an azimuth graded towards its left end at scale eL and its right end at
@@ -634,7 +632,19 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   k.gNum = k.mu + MuLambdaGGX(k.mu, k.st, k.a);
   k.gDenO = k.mu + (model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(k.mu, k.st, k.a)
                                                    : MuLambdaBeckmann(k.mu, k.st, k.a));
+  k.gRatio = k.gNum / k.gDenO;
   k.blinnK = 1 / (k.a * k.a) - 1;
+  k.view = {k.a,
+            k.mu,
+            k.st,
+            k.oxs,
+            k.ozs,
+            k.gNum,
+            k.gDenO,
+            k.gRatio,
+            k.blinnK,
+            model.ndf == FixedRuleNdf::BlinnPhong,
+            model.separable};
   // The end of the NDF: u = tan^2 t' where log r = -37 (r = exp(-u) (1 + u)^2 for Beckmann; for
   // Blinn-Phong 2 log(1 + u) - (1 / alpha^2 + 1) log(1 + alpha^2 u), by bisection in log u, none
   // when it stays above), then t = tan(t'/2).

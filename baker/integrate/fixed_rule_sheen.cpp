@@ -58,6 +58,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "baker/integrate/fixed_rule_sheen_row.h"
 #include "baker/math/quadrature.h"
 
 namespace kiln {
@@ -108,11 +109,11 @@ double Visibility(const M& m, double mu_o, double mu_l, double lambdaO) {
   }
 }
 
-/// The model's NDF from sin^2(theta_h).
+/// The model's NDF for the rows (fixed_rule_sheen_row.h: CharlieD or VelvetD with the inline exp
+/// and log).
 template <class M>
-double Ndf(const M& m, double sin2h) {
-  if constexpr (std::is_same_v<M, AshikhminVelvet>) return VelvetD(m.alpha, sin2h);
-  return CharlieD(m.alpha, sin2h);
+SheenRowNdf RowNdf(const M& m) {
+  return SheenRowNdf{std::is_same_v<M, AshikhminVelvet>, m.alpha};
 }
 
 template <class M>
@@ -152,20 +153,19 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
   }
   // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
   // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
-  // once per node. The same products as the model's Parts (D * V), so the same bits.
+  // once per node (fixed_rule_sheen_row.h: the model's Parts' products D * V with the inline exp
+  // and log, four nodes at a time).
   const double lambdaO = LambdaOf(m, mu_o);
+  const SheenRowNdf ndf = RowNdf(m);
   double sum = 0;
   for (size_t i = 0; i < tx.size(); ++i) {
     double e = std::exp(tx[i]), mu_l = Clamp(e - c, 0.0, 1.0);
     if (!(mu_o + mu_l > 0)) continue;
     double sinT = std::sqrt(std::max(0.0, 1 - mu_l * mu_l));
     const double v = Visibility(m, mu_o, mu_l, lambdaO);
-    double row = 0;
-    for (size_t j = 0; j < sx.size(); ++j) {
-      bool ok;
-      double s2 = HalfSin2(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], mu_l}, &ok);
-      row += ws[j] * (ok ? Ndf(m, s2) * v : 0);
-    }
+    const SheenRow rowIn{wo.x,          wo.z,          sinT,      mu_l,     v,
+                         cosPhi.data(), sinPhi.data(), ws.data(), sx.size()};
+    const double row = SheenRowSum(ndf, rowIn);
     sum += 2 * mu_l * tw[i] * e * row;
   }
   if (evals) *evals += static_cast<long long>(tx.size() * sx.size());

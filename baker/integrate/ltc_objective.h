@@ -1,9 +1,10 @@
 // The two sums of the LTC fit's objective (ltc_fit.cpp, FitLtc): the LTC's density at the lobe's
-// fixed points and at its own cosine points, two points at a time (SSE2 lanes where the compiler
-// has them, x86-64 always). Each point's term is the same IEEE arithmetic in the same order as
-// one point at a time (add, mul, div, sqrt correctly rounded in either lane, no fused
-// multiply-add without -march), and the terms are summed one by one in point order: the same
-// bits as the scalar loops (tests/integrate_ltc_objective.cpp holds them to those loops).
+// fixed points and at its own cosine points, four points at a time where the CPU has AVX2, else
+// two (SSE2 lanes where the compiler has them, x86-64 always). Each point's term is the same IEEE
+// arithmetic in the same order as one point at a time (add, mul, div, sqrt correctly rounded in
+// either lane, no fused multiply-add without -march), and the terms are summed one by one in point
+// order: the same bits as the scalar loops (tests/integrate_ltc_objective.cpp holds them to those
+// loops).
 #pragma once
 #include <cstddef>
 

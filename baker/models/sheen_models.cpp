@@ -35,7 +35,8 @@ ModelInfo CharlieModel() {
   m.make = [](const ModelArgs& a) -> AnyModel {
     return CharlieSheen{AlphaFromPerceptual(a.roughness)};
   };
-  m.averageRuleVersion = "3";  // the Charlie pair's own mu panels
+  m.fixedRuleVersion = "3";    // 3: the NDF's exp and log inline, SIMD rows (last bits)
+  m.averageRuleVersion = "4";  // 3: the Charlie pair's own mu panels; 4: as fixedRuleVersion 3
   // The steepest layer (E(0) = 8.9 at r = 0.045): 192 nodes keep the lookup error below 1e-3
   // (trial bakes with 128 log-warped roughness nodes: 1.7e-3 with 128, 9.9e-4 with 192).
   m.muAxis = AxisDefault{0, 1, 192, Warp::Root4};
@@ -57,8 +58,8 @@ ModelInfo CharlieSmithModel() {
     return CharlieSmithSheen{AlphaFromPerceptual(a.roughness)};
   };
   m.sheenRule = SheenRule::FittedSmith;
-  m.fixedRuleVersion = "3";  // its own node counts (kCharlieSmithRuleOptions)
-  m.averageRuleVersion = "3";
+  m.fixedRuleVersion = "4";  // 3: its own node counts; 4: the NDF's exp and log inline, SIMD
+  m.averageRuleVersion = "4";
   m.averageKink = 0.5;  // Lambda(mu)'s C1 switch
   // From mu = 1e-4, Filament's MIN_N_DOT_V: below it the fitted Lambda's clamp V <= 1 makes E
   // jump (1.63 at mu = 1e-8, 0.82 at 1e-6, 0.59 at 1e-4 for r = 0.386), a layer of the fit no
@@ -89,6 +90,7 @@ ModelInfo AshikhminVelvetModel() {
   m.make = [](const ModelArgs& a) -> AnyModel {
     return AshikhminVelvet{AlphaFromPerceptual(a.roughness)};
   };
+  m.fixedRuleVersion = "3";    // the NDF's exp inline, SIMD rows (last bits)
   m.averageSheenLayer = 1e-4;  // the finest layer of the sheens' E at mu = 0
   // Smooth in r: 48 x 48 (7.7e-4 of lookup error).
   m.muAxis = AxisDefault{0, 1, 48, Warp::Root4};

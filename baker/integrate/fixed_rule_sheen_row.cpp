@@ -1,0 +1,143 @@
+// Sheen rows (fixed_rule_sheen_row.h). The scalar form is the definition; the AVX2 form takes
+// four azimuth nodes at once with the same operations in the same order (LogFast4 and ExpFast4
+// have LogFast's and ExpFast's bits in each lane, 0 below kExpUnderflow as ExpFast); a lane
+// outside their tables (sin^2(theta_h) not a normal positive double, or an exp argument in
+// [kExpUnderflow, -kExpFastMaxAbs)) takes SheenNdf itself.
+#include "baker/integrate/fixed_rule_sheen_row.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "baker/math/constants.h"
+#include "baker/math/fast_exp_log.h"
+#if defined(__x86_64__)
+#include "baker/math/fast_exp_log_avx2.h"
+#endif
+
+namespace kiln {
+namespace {
+
+/// The smallest normal double: LogFast's table path starts here.
+constexpr double kMinNormal = 2.2250738585072014e-308;
+
+/// Node j's term ws_j (D V) of the row (0 where h is undefined); sin^2(theta_h) as HalfSin2.
+inline double NodeTerm(const SheenRowNdf& ndf, const SheenRow& r, size_t j) {
+  const double sx = r.woX + r.sinT * r.cosPhi[j], sy = 0 + r.sinT * r.sinPhi[j];
+  const double sz = r.woZ + r.muL;
+  const double xy = sx * sx + sy * sy, len2 = xy + sz * sz;
+  if (!(len2 > 0)) return r.ws[j] * 0;
+  const double s2 = std::min(1.0, std::max(0.0, xy / len2));
+  return r.ws[j] * (SheenNdf(ndf, s2) * r.v);
+}
+
+}  // namespace
+
+double SheenNdf(const SheenRowNdf& ndf, double sin2h) {
+  const double alpha = ndf.alpha;
+  if (ndf.velvet) {
+    const double a2 = alpha * alpha, norm = 1 / (Pi * (1 + 4 * a2));
+    if (a2 <= 0 || sin2h <= 0) return norm;
+    const double cos2h = 1 - sin2h;
+    return norm * (1 + 4 * ExpFast(-cos2h / (a2 * sin2h)) / (sin2h * sin2h));
+  }
+  if (sin2h <= 0) return 0;
+  return (2 + 1 / alpha) * ExpFast(LogFast(sin2h) * (0.5 / alpha)) / (2 * Pi);
+}
+
+double SheenRowSumScalar(const SheenRowNdf& ndf, const SheenRow& r) {
+  double row = 0;
+  for (size_t j = 0; j < r.n; ++j) row += NodeTerm(ndf, r, j);
+  return row;
+}
+
+#if defined(__x86_64__)
+
+namespace {
+
+/// Whether this CPU runs the AVX2 lanes.
+bool HasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+
+/// ExpFast in four lanes for any argument but those in [kExpUnderflow, -kExpFastMaxAbs), which the
+/// caller redoes: 0 below kExpUnderflow (as ExpFast), the table above.
+KILN_AVX2 inline __m256d ExpOrZero4(__m256d arg) {
+  const __m256d e = ExpFast4(_mm256_max_pd(arg, _mm256_set1_pd(-kExpFastMaxAbs)));
+  return _mm256_and_pd(_mm256_cmp_pd(arg, _mm256_set1_pd(kExpUnderflow), _CMP_GE_OQ), e);
+}
+
+/// The row's first nodes four at a time, their terms added to `row` in node order; returns how
+/// many it took (a multiple of 4).
+KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
+  const double alpha = ndf.alpha, a2 = alpha * alpha;
+  if (ndf.velvet && !(a2 > 0)) return 0;  // D = norm everywhere: the scalar form
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1);
+  const __m256d sinT = _mm256_set1_pd(r.sinT), woX = _mm256_set1_pd(r.woX);
+  const double szs = r.woZ + r.muL;
+  const __m256d sz2 = _mm256_set1_pd(szs * szs), v = _mm256_set1_pd(r.v);
+  const __m256d minArg = _mm256_set1_pd(-kExpFastMaxAbs), minNormal = _mm256_set1_pd(kMinNormal);
+  const __m256d charlieK = _mm256_set1_pd(0.5 / alpha), charlieC = _mm256_set1_pd(2 + 1 / alpha);
+  const __m256d twoPi = _mm256_set1_pd(2 * Pi), a2v = _mm256_set1_pd(a2), four = _mm256_set1_pd(4);
+  const __m256d velvetNorm = _mm256_set1_pd(1 / (Pi * (1 + 4 * a2)));
+  alignas(32) double dv[4], s2v[4], argv[4], tv[4];
+  size_t j = 0;
+  for (; j + 4 <= r.n; j += 4) {
+    const __m256d sx = _mm256_add_pd(woX, _mm256_mul_pd(sinT, _mm256_loadu_pd(r.cosPhi + j)));
+    const __m256d sy = _mm256_add_pd(zero, _mm256_mul_pd(sinT, _mm256_loadu_pd(r.sinPhi + j)));
+    const __m256d xy = _mm256_add_pd(_mm256_mul_pd(sx, sx), _mm256_mul_pd(sy, sy));
+    const __m256d len2 = _mm256_add_pd(xy, sz2);
+    const __m256d ok = _mm256_cmp_pd(len2, zero, _CMP_GT_OQ);
+    const __m256d s2 =
+        _mm256_and_pd(ok, _mm256_min_pd(one, _mm256_max_pd(_mm256_div_pd(xy, len2), zero)));
+    const __m256d s2c = _mm256_max_pd(s2, minNormal);
+    __m256d arg, d;
+    if (!ndf.velvet) {
+      arg = _mm256_mul_pd(LogFast4(s2c), charlieK);
+      d = _mm256_div_pd(_mm256_mul_pd(charlieC, ExpOrZero4(arg)), twoPi);
+    } else {
+      arg = _mm256_sub_pd(zero, _mm256_div_pd(_mm256_sub_pd(one, s2c), _mm256_mul_pd(a2v, s2c)));
+      const __m256d e = ExpOrZero4(arg);
+      d = _mm256_mul_pd(velvetNorm, _mm256_add_pd(one, _mm256_div_pd(_mm256_mul_pd(four, e),
+                                                                     _mm256_mul_pd(s2c, s2c))));
+    }
+    // Lanes off the tables: SheenNdf itself (an exp argument in [kExpUnderflow, -kExpFastMaxAbs)).
+    const __m256d off =
+        _mm256_or_pd(_mm256_cmp_pd(s2, minNormal, _CMP_NGE_UQ),
+                     _mm256_and_pd(_mm256_cmp_pd(arg, minArg, _CMP_LT_OQ),
+                                   _mm256_cmp_pd(arg, _mm256_set1_pd(kExpUnderflow), _CMP_GE_OQ)));
+    if (_mm256_movemask_pd(off) != 0) {
+      _mm256_store_pd(dv, d);
+      _mm256_store_pd(s2v, s2);
+      _mm256_store_pd(argv, arg);
+      for (int l = 0; l < 4; ++l)
+        if (!(s2v[l] >= kMinNormal) || (argv[l] < -kExpFastMaxAbs && argv[l] >= kExpUnderflow))
+          dv[l] = SheenNdf(ndf, s2v[l]);
+      d = _mm256_load_pd(dv);
+    }
+    // ws_j (D V) where h is defined, ws_j 0 where not (as the scalar form).
+    const __m256d term =
+        _mm256_mul_pd(_mm256_loadu_pd(r.ws + j), _mm256_and_pd(ok, _mm256_mul_pd(d, v)));
+    _mm256_store_pd(tv, term);
+    for (double t : tv) row += t;
+  }
+  return j;
+}
+
+}  // namespace
+
+double SheenRowSum(const SheenRowNdf& ndf, const SheenRow& r) {
+  double row = 0;
+  size_t j = 0;
+  if (HasAvx2()) j = SheenRowSumAvx2(ndf, r, row);
+  for (; j < r.n; ++j) row += NodeTerm(ndf, r, j);
+  return row;
+}
+
+#else
+
+double SheenRowSum(const SheenRowNdf& ndf, const SheenRow& r) { return SheenRowSumScalar(ndf, r); }
+
+#endif
+
+}  // namespace kiln
