@@ -47,19 +47,29 @@ std::vector<float> AxisPoints(double lo, double hi) {
   return xs;
 }
 
-/// Checks that the emitted C++ of `fit` gives EvaluateFit's bits at AxisPoints.
-void CheckEmittedBits(const FitResult& fit, const std::string& dir) {
-  const FitForm& f = fit.form;
-  const std::vector<float> xs = AxisPoints(f.axes[0].lo, f.axes[0].hi);
-  const std::vector<float> emitted =
-      test::RunEmittedFit(FitCppHeader(fit, "test"), FitFunctionName(f.table), 1, xs, dir);
-  for (size_t i = 0; i < xs.size(); ++i) {
-    float own[4];
-    EvaluateFit(f, &xs[i], own);
-    for (size_t c = 0; c < f.channels.size(); ++c) {
-      INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " at " << xs[i] << " channel "
-                   << c);
-      CHECK(emitted[4 * i + c] == own[c]);
+/// Checks that the emitted C++ of each of `fits` (forms of one table) gives EvaluateFit's bits at
+/// AxisPoints, the forms compiled into one program (test::RunEmittedFits).
+void CheckEmittedBits(const std::vector<FitResult>& fits, const std::string& dir) {
+  REQUIRE(!fits.empty());
+  const FitForm& first = fits[0].form;
+  const std::vector<float> xs = AxisPoints(first.axes[0].lo, first.axes[0].hi);
+  std::vector<std::string> headers;
+  for (const FitResult& fit : fits) {
+    REQUIRE(fit.form.table == first.table);  // one function name
+    headers.push_back(FitCppHeader(fit, "test"));
+  }
+  const std::vector<std::vector<float>> emitted =
+      test::RunEmittedFits(headers, FitFunctionName(first.table), 1, xs, dir);
+  for (size_t k = 0; k < fits.size(); ++k) {
+    const FitForm& f = fits[k].form;
+    for (size_t i = 0; i < xs.size(); ++i) {
+      float own[4];
+      EvaluateFit(f, &xs[i], own);
+      for (size_t c = 0; c < f.channels.size(); ++c) {
+        INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " lo " << f.axes[0].lo << " at "
+                     << xs[i] << " channel " << c);
+        CHECK(emitted[k][4 * i + c] == own[c]);
+      }
     }
   }
 }
@@ -73,7 +83,7 @@ TEST_CASE("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives k
   const std::string header = FitCppHeader(fit, "test");
   CHECK(header.find("form=horner") != std::string::npos);
   CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
-  CheckEmittedBits(fit, test::TempDir("fit_horner_cpp"));
+  CheckEmittedBits({fit}, test::TempDir("fit_horner_cpp"));
 }
 
 TEST_CASE(
@@ -94,14 +104,14 @@ TEST_CASE(
   fit.form.axes = {axis};
   fit.form.coefficients = {0.9f, -0.31f, 0.27f, -0.11f, 0.013f, 0.1f, 0.21f, -0.3f, 0.05f, 0.7f};
   fit.error.where = {0.5};
-  const std::string dir = test::TempDir("fit_horner_warps");
-  for (FitWarp warp : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4}) {
-    fit.form.axes[0].warp = warp;
-    fit.form.axes[0].lo = 0.045;
-    CheckEmittedBits(fit, dir);
-    fit.form.axes[0].lo = 0;
-    CheckEmittedBits(fit, dir);
-  }
+  std::vector<FitResult> forms;  // one compile for the six
+  for (FitWarp warp : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4})
+    for (double lo : {0.045, 0.0}) {
+      fit.form.axes[0].warp = warp;
+      fit.form.axes[0].lo = lo;
+      forms.push_back(fit);
+    }
+  CheckEmittedBits(forms, test::TempDir("fit_horner_warps"));
   // The count: the clamp, v - lo (a warped axis not starting at 0), the warp's sqrt, a
   // multiply and an add per degree and channel. A linear axis's t is v: its shift is folded in.
   fit.form.axes[0].lo = 0.045;
