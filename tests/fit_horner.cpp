@@ -75,17 +75,6 @@ void CheckEmittedBits(const std::vector<FitResult>& fits, const std::string& dir
 }
 }  // namespace
 
-TEST_CASE("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives kiln's bits",
-          "[fit][horner]") {
-  const FitResult& fit = HornerFit();
-  REQUIRE(fit.form.basis == FitBasis::Power);
-  CHECK(fit.error.max <= 1e-3);
-  const std::string header = FitCppHeader(fit, "test");
-  CHECK(header.find("form=horner") != std::string::npos);
-  CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
-  CheckEmittedBits({fit}, test::TempDir("fit_horner_cpp"));
-}
-
 TEST_CASE(
     "The emitted Horner C++ gives kiln's bits for a domain not starting at 0, the sqrt and "
     "root4 warps and two channels",
@@ -120,20 +109,6 @@ TEST_CASE(
   fit.form.axes[0].warp = FitWarp::Linear;
   CHECK(fit.form.OperationCount() == 2 + 2 * 2 * 4);
   CHECK(FitCppHeader(fit, "test").find("float t = v;") != std::string::npos);
-}
-
-TEST_CASE("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops",
-          "[fit][horner]") {
-  // Its table's warp is linear: 9 operations before the fetch's memory reads. The Chebyshev form
-  // of the same degree spends more than that (6 per axis for the clamp, normalisation and
-  // s = 2 w - 1, then the recurrence and 2 per term).
-  REQUIRE(CatalogueTable(kHornerTable).axes[0].warp == Warp::Linear);
-  const FitResult& fit = HornerFit();
-  CHECK(fit.error.maxOffJump <= 1e-3);
-  CHECK(fit.form.OperationCount() < kFetchAddressOpsLinear1D);
-  FitForm chebyshev = fit.form;
-  chebyshev.basis = FitBasis::Chebyshev;
-  CHECK(chebyshev.OperationCount() > kFetchAddressOpsLinear1D);
 }
 
 TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficient was raised 1 %",
@@ -175,26 +150,54 @@ TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficie
   CHECK(r.err.find("exceeds the stated") != std::string::npos);
 }
 
-TEST_CASE("A Horner fit's GLSL and HLSL compile with glslangValidator", "[fit][horner][shaders]") {
-  REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
-  const FitResult& fit = HornerFit();
-  const std::string dir = test::TempDir("fit_horner_shaders");
-  const std::string name = FitFunctionName(fit.form.table);
-  auto glslang = [&](const std::string& text, const std::string& ext, const std::string& flags) {
-    std::ofstream(dir + "/shader" + ext) << text;
-    const std::string cmd = "glslangValidator " + flags + " " + dir + "/shader" + ext + " > " +
-                            dir + "/glslang.log 2>&1";
-    const int status = std::system(cmd.c_str());
-    INFO(test::ReadFile(dir + "/glslang.log"));
-    CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
-  };
-  const std::string glslMain =
-      "\nin float p; out vec4 color;\nvoid main() { color = vec4(" + name + "(p)); }\n";
-  glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain, ".frag",
-          "-S frag");
-  glslang("#version 330\n" + FitGlsl(fit, "test") + glslMain, ".frag", "-S frag");
-  const std::string hlslMain =
-      "\nfloat4 main(float p : TEXCOORD0) : SV_Target { return float4(" + name + "(p).xxxx); }\n";
-  glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
-          "-D -V -e main -S frag -o " + dir + "/shader.spv");
+// One test for the three claims on one fit (HornerFit, ~1 s of CPU that each CTest process would
+// spend again): what the form is and its emitted C++ computes, its operation count, its shaders.
+TEST_CASE(
+    "A one-axis fit within 1e-3 is a Horner form: its emitted C++ gives kiln's bits, it is under "
+    "a bilinear fetch's address ops, its GLSL and HLSL compile with glslangValidator",
+    "[fit][horner][shaders]") {
+  SECTION("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives kiln's bits") {
+    const FitResult& fit = HornerFit();
+    REQUIRE(fit.form.basis == FitBasis::Power);
+    CHECK(fit.error.max <= 1e-3);
+    const std::string header = FitCppHeader(fit, "test");
+    CHECK(header.find("form=horner") != std::string::npos);
+    CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
+    CheckEmittedBits({fit}, test::TempDir("fit_horner_cpp"));
+  }
+  SECTION("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops") {
+    // Its table's warp is linear: 9 operations before the fetch's memory reads. The Chebyshev form
+    // of the same degree spends more than that (6 per axis for the clamp, normalisation and
+    // s = 2 w - 1, then the recurrence and 2 per term).
+    REQUIRE(CatalogueTable(kHornerTable).axes[0].warp == Warp::Linear);
+    const FitResult& fit = HornerFit();
+    CHECK(fit.error.maxOffJump <= 1e-3);
+    CHECK(fit.form.OperationCount() < kFetchAddressOpsLinear1D);
+    FitForm chebyshev = fit.form;
+    chebyshev.basis = FitBasis::Chebyshev;
+    CHECK(chebyshev.OperationCount() > kFetchAddressOpsLinear1D);
+  }
+  SECTION("A Horner fit's GLSL and HLSL compile with glslangValidator") {
+    REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
+    const FitResult& fit = HornerFit();
+    const std::string dir = test::TempDir("fit_horner_shaders");
+    const std::string name = FitFunctionName(fit.form.table);
+    auto glslang = [&](const std::string& text, const std::string& ext, const std::string& flags) {
+      std::ofstream(dir + "/shader" + ext) << text;
+      const std::string cmd = "glslangValidator " + flags + " " + dir + "/shader" + ext + " > " +
+                              dir + "/glslang.log 2>&1";
+      const int status = std::system(cmd.c_str());
+      INFO(test::ReadFile(dir + "/glslang.log"));
+      CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    };
+    const std::string glslMain =
+        "\nin float p; out vec4 color;\nvoid main() { color = vec4(" + name + "(p)); }\n";
+    glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain, ".frag",
+            "-S frag");
+    glslang("#version 330\n" + FitGlsl(fit, "test") + glslMain, ".frag", "-S frag");
+    const std::string hlslMain =
+        "\nfloat4 main(float p : TEXCOORD0) : SV_Target { return float4(" + name + "(p).xxxx); }\n";
+    glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
+            "-D -V -e main -S frag -o " + dir + "/shader.spv");
+  }
 }
