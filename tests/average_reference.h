@@ -18,11 +18,11 @@ namespace kiln::test {
 
 /// The share of an average's tolerance given to its inner E(mu): an error of at most d in every
 /// E(mu) moves E_avg by at most d (2 mu dmu integrates to 1 over [0, 1]), the outer quadrature
-/// over mu takes the rest. 0.8 costs least of 0.5 to 0.9 over the sheen, diffuse, Ward, Unity and
-/// microfacet averages the tests take, whose E(mu) adaptive quadrature meets far inside its
-/// tolerance. Not for a model whose E only just meets it (kajiya-kay at r = 0): the outer
-/// quadrature, at a quarter of the inner tolerance, then chases the inner one's noise (minutes
-/// where AverageAlbedo takes a fraction of a second).
+/// over mu takes the rest. 0.8 costs least of 0.5 to 0.9 over the sheen, diffuse, Ward and Unity
+/// averages the tests take, whose E(mu) adaptive quadrature meets far inside its tolerance. Not
+/// for a model whose E only just meets it (kajiya-kay at r = 0, at 0.8 and at 0.5): the outer
+/// quadrature, at or below the inner tolerance, then chases the inner one's noise (minutes where
+/// AverageAlbedo, E at a tenth of the tolerance, takes a fraction of a second).
 constexpr double kAverageInnerTolShare = 0.8;
 
 /// kAverageInnerTolShare for a specular model (E by half-vector quadrature): 0.5 costs least of
