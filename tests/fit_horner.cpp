@@ -47,34 +47,33 @@ std::vector<float> AxisPoints(double lo, double hi) {
   return xs;
 }
 
-/// Checks that the emitted C++ of `fit` gives EvaluateFit's bits at AxisPoints.
-void CheckEmittedBits(const FitResult& fit, const std::string& dir) {
-  const FitForm& f = fit.form;
-  const std::vector<float> xs = AxisPoints(f.axes[0].lo, f.axes[0].hi);
-  const std::vector<float> emitted =
-      test::RunEmittedFit(FitCppHeader(fit, "test"), FitFunctionName(f.table), 1, xs, dir);
-  for (size_t i = 0; i < xs.size(); ++i) {
-    float own[4];
-    EvaluateFit(f, &xs[i], own);
-    for (size_t c = 0; c < f.channels.size(); ++c) {
-      INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " at " << xs[i] << " channel "
-                   << c);
-      CHECK(emitted[4 * i + c] == own[c]);
+/// Checks that the emitted C++ of each of `fits` (forms of one table) gives EvaluateFit's bits at
+/// AxisPoints, the forms compiled into one program (test::RunEmittedFits).
+void CheckEmittedBits(const std::vector<FitResult>& fits, const std::string& dir) {
+  REQUIRE(!fits.empty());
+  const FitForm& first = fits[0].form;
+  const std::vector<float> xs = AxisPoints(first.axes[0].lo, first.axes[0].hi);
+  std::vector<std::string> headers;
+  for (const FitResult& fit : fits) {
+    REQUIRE(fit.form.table == first.table);  // one function name
+    headers.push_back(FitCppHeader(fit, "test"));
+  }
+  const std::vector<std::vector<float>> emitted =
+      test::RunEmittedFits(headers, FitFunctionName(first.table), 1, xs, dir);
+  for (size_t k = 0; k < fits.size(); ++k) {
+    const FitForm& f = fits[k].form;
+    for (size_t i = 0; i < xs.size(); ++i) {
+      float own[4];
+      EvaluateFit(f, &xs[i], own);
+      for (size_t c = 0; c < f.channels.size(); ++c) {
+        INFO(f.table << " warp " << FitWarpName(f.axes[0].warp) << " lo " << f.axes[0].lo << " at "
+                     << xs[i] << " channel " << c);
+        CHECK(emitted[k][4 * i + c] == own[c]);
+      }
     }
   }
 }
 }  // namespace
-
-TEST_CASE("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives kiln's bits",
-          "[fit][horner]") {
-  const FitResult& fit = HornerFit();
-  REQUIRE(fit.form.basis == FitBasis::Power);
-  CHECK(fit.error.max <= 1e-3);
-  const std::string header = FitCppHeader(fit, "test");
-  CHECK(header.find("form=horner") != std::string::npos);
-  CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
-  CheckEmittedBits(fit, test::TempDir("fit_horner_cpp"));
-}
 
 TEST_CASE(
     "The emitted Horner C++ gives kiln's bits for a domain not starting at 0, the sqrt and "
@@ -94,14 +93,14 @@ TEST_CASE(
   fit.form.axes = {axis};
   fit.form.coefficients = {0.9f, -0.31f, 0.27f, -0.11f, 0.013f, 0.1f, 0.21f, -0.3f, 0.05f, 0.7f};
   fit.error.where = {0.5};
-  const std::string dir = test::TempDir("fit_horner_warps");
-  for (FitWarp warp : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4}) {
-    fit.form.axes[0].warp = warp;
-    fit.form.axes[0].lo = 0.045;
-    CheckEmittedBits(fit, dir);
-    fit.form.axes[0].lo = 0;
-    CheckEmittedBits(fit, dir);
-  }
+  std::vector<FitResult> forms;  // one compile for the six
+  for (FitWarp warp : {FitWarp::Linear, FitWarp::Sqrt, FitWarp::Root4})
+    for (double lo : {0.045, 0.0}) {
+      fit.form.axes[0].warp = warp;
+      fit.form.axes[0].lo = lo;
+      forms.push_back(fit);
+    }
+  CheckEmittedBits(forms, test::TempDir("fit_horner_warps"));
   // The count: the clamp, v - lo (a warped axis not starting at 0), the warp's sqrt, a
   // multiply and an add per degree and channel. A linear axis's t is v: its shift is folded in.
   fit.form.axes[0].lo = 0.045;
@@ -110,20 +109,6 @@ TEST_CASE(
   fit.form.axes[0].warp = FitWarp::Linear;
   CHECK(fit.form.OperationCount() == 2 + 2 * 2 * 4);
   CHECK(FitCppHeader(fit, "test").find("float t = v;") != std::string::npos);
-}
-
-TEST_CASE("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops",
-          "[fit][horner]") {
-  // Its table's warp is linear: 9 operations before the fetch's memory reads. The Chebyshev form
-  // of the same degree spends more than that (6 per axis for the clamp, normalisation and
-  // s = 2 w - 1, then the recurrence and 2 per term).
-  REQUIRE(CatalogueTable(kHornerTable).axes[0].warp == Warp::Linear);
-  const FitResult& fit = HornerFit();
-  CHECK(fit.error.maxOffJump <= 1e-3);
-  CHECK(fit.form.OperationCount() < kFetchAddressOpsLinear1D);
-  FitForm chebyshev = fit.form;
-  chebyshev.basis = FitBasis::Chebyshev;
-  CHECK(chebyshev.OperationCount() > kFetchAddressOpsLinear1D);
 }
 
 TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficient was raised 1 %",
@@ -165,26 +150,54 @@ TEST_CASE("kiln verify re-measures a Horner header and fails one whose coefficie
   CHECK(r.err.find("exceeds the stated") != std::string::npos);
 }
 
-TEST_CASE("A Horner fit's GLSL and HLSL compile with glslangValidator", "[fit][horner][shaders]") {
-  REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
-  const FitResult& fit = HornerFit();
-  const std::string dir = test::TempDir("fit_horner_shaders");
-  const std::string name = FitFunctionName(fit.form.table);
-  auto glslang = [&](const std::string& text, const std::string& ext, const std::string& flags) {
-    std::ofstream(dir + "/shader" + ext) << text;
-    const std::string cmd = "glslangValidator " + flags + " " + dir + "/shader" + ext + " > " +
-                            dir + "/glslang.log 2>&1";
-    const int status = std::system(cmd.c_str());
-    INFO(test::ReadFile(dir + "/glslang.log"));
-    CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
-  };
-  const std::string glslMain =
-      "\nin float p; out vec4 color;\nvoid main() { color = vec4(" + name + "(p)); }\n";
-  glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain, ".frag",
-          "-S frag");
-  glslang("#version 330\n" + FitGlsl(fit, "test") + glslMain, ".frag", "-S frag");
-  const std::string hlslMain =
-      "\nfloat4 main(float p : TEXCOORD0) : SV_Target { return float4(" + name + "(p).xxxx); }\n";
-  glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
-          "-D -V -e main -S frag -o " + dir + "/shader.spv");
+// One test for the three claims on one fit (HornerFit, ~1 s of CPU that each CTest process would
+// spend again): what the form is and its emitted C++ computes, its operation count, its shaders.
+TEST_CASE(
+    "A one-axis fit within 1e-3 is a Horner form: its emitted C++ gives kiln's bits, it is under "
+    "a bilinear fetch's address ops, its GLSL and HLSL compile with glslangValidator",
+    "[fit][horner][shaders]") {
+  SECTION("A one-axis fit within 1e-3 is a Horner form whose emitted C++ gives kiln's bits") {
+    const FitResult& fit = HornerFit();
+    REQUIRE(fit.form.basis == FitBasis::Power);
+    CHECK(fit.error.max <= 1e-3);
+    const std::string header = FitCppHeader(fit, "test");
+    CHECK(header.find("form=horner") != std::string::npos);
+    CHECK(header.find("out[0] = c[0] + t * (c[1] + t * c[2]);") != std::string::npos);
+    CheckEmittedBits({fit}, test::TempDir("fit_horner_cpp"));
+  }
+  SECTION("A Horner fit of fujii-normalized-albedo-avg is under a bilinear fetch's address ops") {
+    // Its table's warp is linear: 9 operations before the fetch's memory reads. The Chebyshev form
+    // of the same degree spends more than that (6 per axis for the clamp, normalisation and
+    // s = 2 w - 1, then the recurrence and 2 per term).
+    REQUIRE(CatalogueTable(kHornerTable).axes[0].warp == Warp::Linear);
+    const FitResult& fit = HornerFit();
+    CHECK(fit.error.maxOffJump <= 1e-3);
+    CHECK(fit.form.OperationCount() < kFetchAddressOpsLinear1D);
+    FitForm chebyshev = fit.form;
+    chebyshev.basis = FitBasis::Chebyshev;
+    CHECK(chebyshev.OperationCount() > kFetchAddressOpsLinear1D);
+  }
+  SECTION("A Horner fit's GLSL and HLSL compile with glslangValidator") {
+    REQUIRE(std::system("command -v glslangValidator >/dev/null") == 0);
+    const FitResult& fit = HornerFit();
+    const std::string dir = test::TempDir("fit_horner_shaders");
+    const std::string name = FitFunctionName(fit.form.table);
+    auto glslang = [&](const std::string& text, const std::string& ext, const std::string& flags) {
+      std::ofstream(dir + "/shader" + ext) << text;
+      const std::string cmd = "glslangValidator " + flags + " " + dir + "/shader" + ext + " > " +
+                              dir + "/glslang.log 2>&1";
+      const int status = std::system(cmd.c_str());
+      INFO(test::ReadFile(dir + "/glslang.log"));
+      CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+    };
+    const std::string glslMain =
+        "\nin float p; out vec4 color;\nvoid main() { color = vec4(" + name + "(p)); }\n";
+    glslang("#version 300 es\nprecision highp float;\n" + FitGlsl(fit, "test") + glslMain, ".frag",
+            "-S frag");
+    glslang("#version 330\n" + FitGlsl(fit, "test") + glslMain, ".frag", "-S frag");
+    const std::string hlslMain =
+        "\nfloat4 main(float p : TEXCOORD0) : SV_Target { return float4(" + name + "(p).xxxx); }\n";
+    glslang(FitHlsl(fit, "test") + hlslMain, ".hlsl",
+            "-D -V -e main -S frag -o " + dir + "/shader.spv");
+  }
 }

@@ -16,6 +16,7 @@
 #include "baker/tables/catalogue.h"
 #include "baker/tables/spec.h"
 #include "average_albedo_checks.h"
+#include "average_reference.h"
 
 using namespace kiln;
 
@@ -103,18 +104,17 @@ TEST_CASE("charlie-smith takes its own rule, charlie and the velvet keep the sha
 namespace {
 
 /// The Charlie pair's average table of `model` at roughness r: the fixed rule within 1e-6 of
-/// the adaptive average (1e-9), and its own error estimate below 1e-6.
+/// the adaptive average (1e-9, test::AdaptiveAverageAlbedo), and its own error estimate below
+/// 1e-6.
 void CheckCharlieAverage(const char* model, double r) {
   TableSpec spec = CatalogueTable(std::string(model) + "-albedo-avg");
   REQUIRE(UsesFixedRule(spec));
   double x[1] = {r};
-  IntegrationStats fixed, exact;
+  IntegrationStats fixed;
   double got = EvaluateSpec(spec, x, fixed)[0];
   ModelParams p;
   p.roughness = r;
-  IntegrationOptions opt;
-  opt.tol = 1e-9;
-  const RhoParts avg = AverageAlbedo(MakeModel(model, p), opt, exact);
+  const RhoParts avg = test::AdaptiveAverageAlbedo(MakeModel(model, p), 1e-9);
   const double want = avg.lin;
   WARN(model << "-albedo-avg at r = " << r << ": |fixed - adaptive| = " << std::abs(got - want));
   CHECK(std::abs(got - want) < 1e-6);

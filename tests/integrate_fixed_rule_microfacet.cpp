@@ -143,42 +143,80 @@ TEST_CASE(
   }
 }
 
-TEST_CASE(
-    "The exact-Fresnel GGX albedo's fixed rule is within 1e-7 of adaptive quadrature at 1e-10 "
-    "over (mu, alpha, eta), eta near 1 included",
-    "[integrate][fixed-rule][fixed-rule-microfacet]") {
-  const double etas[] = {1.0 + 1e-7, 1.0 + 1e-5, 1.0003, 1.003, 1.02, 1.07,
-                         1.2,        1.45,       1.8,    2.4,   3.0};
-  const double mus[] = {0.0, 1e-7, 1e-4, 1e-3, 0.006, 0.025, 0.08, 0.2, 0.45, 0.75, 1.0};
-  const double rs[] = {0.0, 1e-3, 0.02, 0.08, 0.17, 0.3, 0.45, 0.62, 0.8, 1.0};
+namespace {
+
+/// ggx-fresnel-albedo's grid: eta near 1 (the layer F ~ (eta - 1)^2) to 3, the views and
+/// roughnesses of the layer mu ~ alpha.
+const double kFresnelEtas[] = {1.0 + 1e-7, 1.0 + 1e-5, 1.0003, 1.003, 1.02, 1.07,
+                               1.2,        1.45,       1.8,    2.4,   3.0};
+const double kFresnelMus[] = {0.0, 1e-7, 1e-4, 1e-3, 0.006, 0.025, 0.08, 0.2, 0.45, 0.75, 1.0};
+const double kFresnelRs[] = {0.0, 1e-3, 0.02, 0.08, 0.17, 0.3, 0.45, 0.62, 0.8, 1.0};
+
+/// Where the rule errs most inside the dense grid (the [long] test below; its largest, 1.9e-8 at
+/// mu = 0, r = 0, eta = 1 + 1e-5, lies on an edge): 8.1e-9 at mu = 1e-4, r = 0.17 and 5.6e-9 at
+/// mu = 1e-4, r = 0.3 at every eta, 9.3e-9 at mu = 1e-7, r = 0.02, eta = 1 + 1e-7, as (mu, r)
+/// index pairs visited at every eta.
+const std::vector<test::GridIndex> kFresnelAlbedoWorst = {{2, 4}, {2, 5}, {1, 2}};
+
+/// The (mu, r) points at eta = kFresnelEtas[k]: the grid's edges (mu = 0, 1, r = 0, 1) whole,
+/// one point of each 3 x 3 block of the interior at the two etas nearest 1 and at 3, of each
+/// 4 x 4 block at the etas between (seeded by k), and the worst points at every eta. block 0:
+/// the dense grid.
+std::vector<test::GridIndex> FresnelAlbedoPoints(size_t k, size_t block) {
+  const size_t nMu = std::size(kFresnelMus), nR = std::size(kFresnelRs);
+  if (block == 0) return test::StratifiedGrid(nMu, nR, 1, 0);
+  const bool end = k < 2 || k + 1 == std::size(kFresnelEtas);
+  return test::StratifiedGrid(nMu, nR, end ? block : block + 1, 0xFA1B + k, {}, {},
+                              kFresnelAlbedoWorst);
+}
+
+/// The exact-Fresnel GGX albedo's rule within kTarget of adaptive quadrature at 1e-10 at every
+/// eta's FresnelAlbedoPoints(k, block).
+void CheckFresnelAlbedoGrid(size_t block) {
   double worst = 0;
   std::string where;
   long long evals = 0;
   int points = 0;
-  for (double eta : etas)
-    for (double r : rs)
-      for (double mu : mus) {
-        AnyModel m = ModelAtR("ggx", r);
-        SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
-        IntegrationOptions opt;
-        opt.tol = 1e-10;
-        IntegrationStats st;
-        double ref = DirectionalAlbedo(m, mu, opt, st).lin;
-        double got = FixedRuleGGXFresnelAlbedo(mu, AlphaOf(r), eta, &evals);
-        ++points;
-        if (std::abs(got - ref) > worst) {
-          worst = std::abs(got - ref);
-          where = "eta=" + std::to_string(eta) + " mu=" + std::to_string(mu) +
-                  " r=" + std::to_string(r);
-        }
+  for (size_t k = 0; k < std::size(kFresnelEtas); ++k)
+    for (const test::GridIndex& p : FresnelAlbedoPoints(k, block)) {
+      const double eta = kFresnelEtas[k], mu = kFresnelMus[p.i], r = kFresnelRs[p.j];
+      AnyModel m = ModelAtR("ggx", r);
+      SetFresnel(m, Fresnel{Fresnel::Kind::Dielectric, 0, eta, 0});
+      IntegrationOptions opt;
+      opt.tol = 1e-10;
+      IntegrationStats st;
+      const double ref = DirectionalAlbedo(m, mu, opt, st).lin;
+      const double got = FixedRuleGGXFresnelAlbedo(mu, AlphaOf(r), eta, &evals);
+      ++points;
+      if (std::abs(got - ref) > worst) {
+        worst = std::abs(got - ref);
+        where =
+            "eta=" + std::to_string(eta) + " mu=" + std::to_string(mu) + " r=" + std::to_string(r);
       }
+    }
   std::printf(
       "ggx-fresnel-albedo fixed rule vs adaptive 1e-10 at %d points: worst %.3g at %s; "
       "%.0f evals/pt\n",
       points, worst, where.c_str(), double(evals) / points);
   INFO("worst " << worst << " at " << where);
   CHECK(worst <= kTarget);
+}
+
+}  // namespace
+
+TEST_CASE(
+    "The exact-Fresnel GGX albedo's fixed rule is within 1e-7 of adaptive quadrature at 1e-10 "
+    "over (mu, alpha, eta), eta near 1 included",
+    "[integrate][fixed-rule][fixed-rule-microfacet]") {
+  CheckFresnelAlbedoGrid(3);
   CHECK(FixedRuleGGXFresnelAlbedo(0.3, 0.2, 1.0) == 0);  // F = 0 at eta = 1
+}
+
+TEST_CASE(
+    "Dense grid: the exact-Fresnel GGX albedo's fixed rule is within 1e-7 of adaptive quadrature "
+    "at 1e-10 over all of (mu, alpha, eta) (long: run by hand)",
+    "[integrate][fixed-rule][fixed-rule-microfacet][long]") {
+  CheckFresnelAlbedoGrid(0);
 }
 
 TEST_CASE("The microfacet fixed rules are deterministic and cost a fixed, bounded evaluation count",

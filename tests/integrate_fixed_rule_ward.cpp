@@ -9,6 +9,7 @@
 #include "baker/integrate/quantities.h"
 #include "baker/models/registry.h"
 #include "average_albedo_checks.h"
+#include "average_reference.h"
 
 namespace kiln {
 namespace {
@@ -76,16 +77,13 @@ TEST_CASE("ward albedo rule: at r = 0 the mirror's limit, approached continuousl
 
 namespace {
 
-/// Variant v's E_avg rule within kWardRuleBound of the adaptive average (1e-9) at the
-/// roughnesses rs.
+/// Variant v's E_avg rule within kWardRuleBound of the adaptive average (1e-9,
+/// test::AdaptiveAverageAlbedo) at the roughnesses rs.
 void CheckWardAverage(const Variant& v, std::initializer_list<double> rs) {
   for (double r : rs) {
     ModelParams p;
     p.roughness = r;
-    IntegrationOptions opt;
-    opt.tol = 1e-9;
-    IntegrationStats stats;
-    const RhoParts avg = AverageAlbedo(MakeModel(v.id, p), opt, stats);
+    const RhoParts avg = test::AdaptiveAverageAlbedo(MakeModel(v.id, p), 1e-9);
     const double ref = avg.lin;
     INFO(v.id << " r " << r);
     CHECK(FixedRuleWardAlbedoAvg(v.norm, r * r) == Approx(ref).margin(kWardRuleBound));
