@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "baker/integrate/hemisphere.h"
+#include "baker/tables/prepared_reference.h"
 
 namespace kiln {
 namespace {
@@ -30,6 +31,8 @@ constexpr double kProbeShare = 0.6;
 /// reference: each point of an average is a whole mu integral) have every other cell's centre
 /// evaluated too, outside the budget, and the worst of those probed in full (MeasureLookupError).
 constexpr size_t kCentreSweepCells = 1024;
+/// Channels a point's lookup keeps on the stack (more take the heap).
+constexpr size_t kStackChannels = 16;
 
 /// One measured point: the error, with the cubic filter, and whether it lies in the path-
 /// dependent corner (first cell of axis 1 of a table over mu).
@@ -204,6 +207,7 @@ class LookupSearch {
   /// view_ prepared once: its sampleDouble is view_.sample, bit for bit, without preparing the
   /// axes again at every point.
   LutSampler sampler_;
+  PreparedReference reference_;  ///< SearchReference and EvaluateSpec of spec_, resolved once
   const LookupSearchOptions& opt_;
   size_t dims_;
   int n_[3] = {1, 1, 1}, nc_[3] = {1, 1, 1};
@@ -211,6 +215,11 @@ class LookupSearch {
   int D_ = 0;
   size_t allCells_ = 0;
   int first_ = 0;  ///< the first integral channel (QuantityInfo::firstIntegralChannel)
+  /// Resolved once: the kind's verification reference (with opt.verifyReference), whether the
+  /// table is over mu and more (Sample::inCorner) and its axis 1.
+  decltype(QuantityInfo::verifyReference) verifyReference_ = nullptr;
+  bool overMu_ = false;
+  Axis axis1_{};
   std::vector<size_t> order_, fullOrder_;
   std::vector<std::array<double, 3>> probes_;
   long long P_ = 0, C_ = 0;
@@ -230,6 +239,7 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
     : spec_(spec),
       view_(view),
       sampler_(view),
+      reference_(spec),
       opt_(opt),
       dims_(spec.axes.size()),
       arena_(ThreadsOf(opt)) {
@@ -242,6 +252,9 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
   allCells_ = static_cast<size_t>(nc_[0]) * nc_[1] * nc_[2];
   // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
   first_ = Describe(spec.quantity).firstIntegralChannel;
+  if (opt.verifyReference) verifyReference_ = Describe(spec.quantity).verifyReference;
+  overMu_ = dims_ >= 2 && spec.axes[0].name == "mu";
+  if (dims_ >= 2) axis1_ = spec.axes[1].ToAxis();
   probes_ = ProbePoints(D_);
   P_ = static_cast<long long>(probes_.size());
   C_ = kSweeps * D_ * (kGoldenIterations + 3);  // at most
@@ -312,25 +325,29 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   std::vector<double> exact;
   Sample s;
   s.reused = DefaultReference() && opt_.reuse && opt_.reuse(x, exact, st);
-  const auto own = opt_.verifyReference ? Describe(spec_.quantity).verifyReference : nullptr;
   if (!s.reused)
-    exact = opt_.refTol > 0
-                ? (own ? own(spec_, x, opt_.refTol, st) : EvaluateSpec(spec_, x, opt_.refTol, st))
-            : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
-                            : SearchReference(spec_, x, st);
+    exact = opt_.refTol > 0 ? (verifyReference_ ? verifyReference_(spec_, x, opt_.refTol, st)
+                                                : EvaluateSpec(spec_, x, opt_.refTol, st))
+            : opt_.bakeRule ? reference_.Bake(x, st)
+                            : reference_.Search(x, st);
   if (opt_.bakeRule) st.errorEstimate = 0;  // the bake's own rule
   // One float per channel of the table, and at least one per exact value (a table with fewer
-  // channels than its quantity then compares the missing ones against 0).
-  std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);
-  sampler_.sampleDouble(x, got.data(), opt_.filter);
+  // channels than its quantity then compares the missing ones against 0): on the stack for
+  // up to kStackChannels of them.
+  const size_t nGot = std::max<size_t>(static_cast<size_t>(view_.channels), exact.size());
+  float stackGot[kStackChannels];
+  std::vector<float> heapGot(nGot > kStackChannels ? nGot : 0);
+  float* got = nGot > kStackChannels ? heapGot.data() : stackGot;
+  std::fill(got, got + nGot, 0.0f);
+  sampler_.sampleDouble(x, got, opt_.filter);
   for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
     s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
   if (opt_.alsoCubic) {
-    sampler_.sampleDouble(x, got.data(), Filter::Cubic);
+    sampler_.sampleDouble(x, got, Filter::Cubic);
     for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
       s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
   }
-  s.inCorner = dims_ >= 2 && spec_.axes[0].name == "mu" && spec_.axes[1].ToAxis().texel(x[1]) < 1;
+  s.inCorner = overMu_ && axis1_.texel(x[1]) < 1;
   s.integrand = st.evals;
   s.refError = opt_.refTol > 0 ? 0.0 : st.errorEstimate;
   std::copy(x, x + 3, s.x);
@@ -347,6 +364,8 @@ bool LookupSearch::Spent(double share) const {
 void LookupSearch::Probe() {
   const long long allProbes = static_cast<long long>(order_.size()) * P_;
   const double probeShare = allProbes <= callBudget_ * kProbeShare || C_ == 0 ? 1.0 : kProbeShare;
+  // The probes' samples in one block (growing it chunk by chunk moved them all, again and again).
+  probeSamples_.reserve(static_cast<size_t>(std::min(allProbes, callBudget_)));
   while (calls_ < allProbes && !Spent(probeShare)) {
     long long chunk =
         std::min({std::max({8LL, P_, calls_ / 8}), allProbes - calls_, callBudget_ - calls_});
