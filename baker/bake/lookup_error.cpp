@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <thread>
 
 #include "baker/integrate/hemisphere.h"
@@ -200,7 +202,9 @@ class LookupSearch {
   bool DefaultReference() const { return opt_.refTol <= 0 && !opt_.bakeRule; }
   void EvaluateAll(std::vector<Sample>& out, size_t base,
                    const std::vector<std::pair<size_t, size_t>>& what);
-  Climb ClimbCell(size_t slot) const;
+  /// The climb in the cell at `slot` of order_; `speculate`: evaluate a point ahead on a
+  /// second thread (the same climb, sooner when it has a thread to itself).
+  Climb ClimbCell(size_t slot, bool speculate) const;
 
   const TableSpec& spec_;
   const LutView& view_;
@@ -478,15 +482,59 @@ void LookupSearch::RandomPoints() {
   probeSamples_.insert(probeSamples_.end(), sweepSamples_.begin(), sweepSamples_.end());
 }
 
-Climb LookupSearch::ClimbCell(size_t slot) const {
+namespace {
+
+/// One golden-section bracket [lo, hi] of the climb along one axis, with its two inner points
+/// and their errors.
+struct Bracket {
+  double lo = 0, hi = 1, x1 = 0, x2 = 0, f1 = 0, f2 = 0;
+  bool newIsX1 = false;  ///< which inner point Advance placed last
+};
+
+/// The golden ratio's conjugate, 0.618: the bracket shrinks by it per iteration.
+const double kGolden = 0.5 * (std::sqrt(5.0) - 1.0);
+
+/// One golden-section iteration: keeps the inner point that erred more (x1 on a tie goes) and
+/// returns the new inner point, whose error Settle then records.
+double Advance(Bracket& b) {
+  b.newIsX1 = b.f1 > b.f2;
+  if (b.newIsX1) {
+    b.hi = b.x2;
+    b.x2 = b.x1;
+    b.f2 = b.f1;
+    b.x1 = b.hi - kGolden * (b.hi - b.lo);
+    return b.x1;
+  }
+  b.lo = b.x1;
+  b.x1 = b.x2;
+  b.f1 = b.f2;
+  b.x2 = b.lo + kGolden * (b.hi - b.lo);
+  return b.x2;
+}
+
+/// The error f of the point Advance placed last.
+void Settle(Bracket& b, double f) { (b.newIsX1 ? b.f1 : b.f2) = f; }
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+Climb LookupSearch::ClimbCell(size_t slot, bool speculate) const {
   size_t cell = order_[slot];
   Climb cl;
   cl.u = probes_[cellBestProbe_[slot]];
   cl.best = probeSamples_[slot * P_ + cellBestProbe_[slot]];
-  auto f = [&](int axis, double v) {
+  // Along axis `axis` the points differ in u[axis] only (cl.u moves along it alone): a point is
+  // evaluated (eval, thread-safe) and then used (use: in the serial order, the only one that
+  // counts it, keeps the best and records it), so that a point evaluated ahead gives the same
+  // climb.
+  int axis = 0;
+  auto eval = [&](double v) {
     std::array<double, 3> u = cl.u;
     u[axis] = v;
-    Sample s = Evaluate(cell, u);
+    return Evaluate(cell, u);
+  };
+  auto use = [&](double v, Sample s) {
     ++cl.evals;
     cl.reused += s.reused;
     cl.integrand += s.integrand;
@@ -494,37 +542,81 @@ Climb LookupSearch::ClimbCell(size_t slot) const {
     const double err = s.err;
     if (s.err > cl.best.err) {
       cl.best = s;
-      cl.u = u;
+      cl.u[axis] = v;
     }
     if (opt_.record && DefaultReference()) cl.visited.push_back(std::move(s));
     return err;
   };
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
+  // With `speculate` (a climb alone on more than one thread), the point after the next one is
+  // evaluated beside it, as if the next one erred more than the point it is compared with; it
+  // is used when the climb goes there (half the time), else dropped (never counted).
+  bool haveAhead = false;
+  double aheadAt = 0;
+  Sample ahead;
+  // On the last iteration the point ahead is the bracket's end on the cell's face, when the
+  // climb evaluates it (below).
+  auto next = [&](const Bracket& b, double v, bool last) {
+    if (haveAhead && SameBits(aheadAt, v)) {
+      haveAhead = false;
+      return use(v, std::move(ahead));
+    }
+    haveAhead = false;
+    Sample s;
+    double w = 0;
+    if (last) {
+      haveAhead = b.lo == 0.0 || b.hi == 1.0;
+      w = b.lo == 0.0 ? 0.0 : 1.0;
+    } else {
+      Bracket guess = b;
+      Settle(guess, std::numeric_limits<double>::infinity());
+      w = Advance(guess);
+      haveAhead = true;
+    }
+    if (speculate && haveAhead) {
+      tbb::parallel_invoke([&] { s = eval(v); }, [&] { ahead = eval(w); });
+      aheadAt = w;
+    } else {
+      haveAhead = false;
+      s = eval(v);
+    }
+    return use(v, std::move(s));
+  };
+  // The bracket's end at v, evaluated ahead or now.
+  auto end = [&](double v) {
+    if (haveAhead && SameBits(aheadAt, v)) {
+      haveAhead = false;
+      use(v, std::move(ahead));
+    } else {
+      use(v, eval(v));
+    }
+  };
   for (int sweep = 0; sweep < kSweeps; ++sweep)
-    for (int a = 0; a < D_; ++a) {
-      double centre = cl.u[a], w = kSweepHalfWidth[sweep];
-      double lo = std::max(0.0, centre - w), hi = std::min(1.0, centre + w);
-      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-      double f1 = f(a, x1), f2 = f(a, x2);
+    for (axis = 0; axis < D_; ++axis) {
+      const double centre = cl.u[axis], w = kSweepHalfWidth[sweep];
+      Bracket b;
+      b.lo = std::max(0.0, centre - w);
+      b.hi = std::min(1.0, centre + w);
+      b.x1 = b.hi - kGolden * (b.hi - b.lo);
+      b.x2 = b.lo + kGolden * (b.hi - b.lo);
+      if (speculate) {
+        Sample s1, s2;
+        tbb::parallel_invoke([&] { s1 = eval(b.x1); }, [&] { s2 = eval(b.x2); });
+        b.f1 = use(b.x1, std::move(s1));
+        b.f2 = use(b.x2, std::move(s2));
+      } else {
+        b.f1 = use(b.x1, eval(b.x1));
+        b.f2 = use(b.x2, eval(b.x2));
+      }
+      haveAhead = false;
       for (int it = 0; it < kGoldenIterations; ++it) {
-        if (f1 > f2) {
-          hi = x2;
-          x2 = x1;
-          f2 = f1;
-          x1 = hi - g * (hi - lo);
-          f1 = f(a, x1);
-        } else {
-          lo = x1;
-          x1 = x2;
-          f1 = f2;
-          x2 = lo + g * (hi - lo);
-          f2 = f(a, x2);
-        }
+        const double v = Advance(b);
+        Settle(b, next(b, v, it + 1 == kGoldenIterations));
       }
       // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
       // golden section never evaluates its bracket's ends.
-      if (lo == 0.0) f(a, 0.0);
-      if (hi == 1.0) f(a, 1.0);
+      if (b.lo == 0.0) end(0.0);
+      if (b.hi == 1.0) end(1.0);
+      haveAhead = false;
     }
   return cl;
 }
@@ -551,11 +643,13 @@ void LookupSearch::Climbs() {
                 : std::min<size_t>(chunk, static_cast<size_t>((callBudget_ - calls_) / C_));
     size_t base = climbed_.size();
     climbed_.resize(base + chunk);
+    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell).
+    const bool speculate = chunk < static_cast<size_t>(arena_.max_concurrency());
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t j = r.begin(); j != r.end(); ++j)
-                            climbed_[j] = ClimbCell(rank[j]);
+                            climbed_[j] = ClimbCell(rank[j], speculate);
                         });
     });
     for (size_t j = base; j < climbed_.size(); ++j) {
