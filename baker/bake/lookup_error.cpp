@@ -110,48 +110,54 @@ std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel) {
   int nc[3];
   for (int d = 0; d < 3; ++d) nc[d] = std::max(1, n[d] - 1);
   // Per axis, per node: max over channels of |second difference| along that axis; an end node
-  // takes its neighbour's (the one stencil that reaches it).
-  size_t nodes = static_cast<size_t>(n[0]) * n[1] * n[2];
+  // takes its neighbour's (the one stencil that reaches it). Each node and each cell on its own
+  // (in parallel, the same values for any thread count).
+  const size_t nodes = static_cast<size_t>(n[0]) * n[1] * n[2];
   std::vector<double> sd[3];
   for (int d = 0; d < dims; ++d) {
     sd[d].assign(nodes, 0.0);
     if (n[d] < 3) continue;
-    for (int i2 = 0; i2 < n[2]; ++i2)
-      for (int i1 = 0; i1 < n[1]; ++i1)
-        for (int i0 = 0; i0 < n[0]; ++i0) {
-          int i[3] = {i0, i1, i2};
-          int j = std::min(std::max(i[d], 1), n[d] - 2);  // stencil centre
-          int lo[3] = {i0, i1, i2}, mid[3] = {i0, i1, i2}, hi[3] = {i0, i1, i2};
-          lo[d] = j - 1;
-          mid[d] = j;
-          hi[d] = j + 1;
-          double m = 0;
-          for (int c = firstChannel; c < view.channels; ++c) {
-            double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
-                   f2 = view.at(hi[0], hi[1], hi[2], c);
-            m = std::max(m, std::abs(f0 - 2 * f1 + f2));
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, nodes, 4096), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t k = r.begin(); k != r.end(); ++k) {
+            int i[3] = {static_cast<int>(k % n[0]), static_cast<int>(k / n[0] % n[1]),
+                        static_cast<int>(k / n[0] / n[1])};
+            int j = std::min(std::max(i[d], 1), n[d] - 2);  // stencil centre
+            int lo[3] = {i[0], i[1], i[2]}, mid[3] = {i[0], i[1], i[2]}, hi[3] = {i[0], i[1], i[2]};
+            lo[d] = j - 1;
+            mid[d] = j;
+            hi[d] = j + 1;
+            double m = 0;
+            for (int c = firstChannel; c < view.channels; ++c) {
+              double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
+                     f2 = view.at(hi[0], hi[1], hi[2], c);
+              m = std::max(m, std::abs(f0 - 2 * f1 + f2));
+            }
+            sd[d][k] = m;
           }
-          sd[d][i0 + static_cast<size_t>(n[0]) * (i1 + static_cast<size_t>(n[1]) * i2)] = m;
-        }
+        });
   }
-  size_t cells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
+  const size_t cells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
   std::vector<double> est(cells, 0.0);
-  for (size_t k = 0; k < cells; ++k) {
-    int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
-                static_cast<int>(k / nc[0] / nc[1])};
-    double e = 0;
-    for (int d = 0; d < dims; ++d) {
-      double m = 0;
-      for (int corner = 0; corner < 8; ++corner) {
-        int i[3];
-        for (int a = 0; a < 3; ++a) i[a] = std::min(c[a] + ((corner >> a) & 1), n[a] - 1);
-        m = std::max(
-            m, sd[d][i[0] + static_cast<size_t>(n[0]) * (i[1] + static_cast<size_t>(n[1]) * i[2])]);
-      }
-      e += m / 8;  // h^2 f'' / 8 with h = 1 node spacing
-    }
-    est[k] = e;
-  }
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, cells, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+          int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
+                      static_cast<int>(k / nc[0] / nc[1])};
+          double e = 0;
+          for (int d = 0; d < dims; ++d) {
+            double m = 0;
+            for (int corner = 0; corner < 8; ++corner) {
+              int i[3];
+              for (int a = 0; a < 3; ++a) i[a] = std::min(c[a] + ((corner >> a) & 1), n[a] - 1);
+              m = std::max(m, sd[d][i[0] + static_cast<size_t>(n[0]) *
+                                               (i[1] + static_cast<size_t>(n[1]) * i[2])]);
+            }
+            e += m / 8;  // h^2 f'' / 8 with h = 1 node spacing
+          }
+          est[k] = e;
+        }
+      });
   return est;
 }
 
@@ -271,7 +277,8 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
 }
 
 void LookupSearch::OrderCells() {
-  std::vector<double> est = CellErrorEstimates(view_, first_);
+  std::vector<double> est;
+  arena_.execute([&] { est = CellErrorEstimates(view_, first_); });
   est.resize(allCells_, 0.0);
   std::vector<size_t> corners, edges, others;
   for (size_t k = 0; k < allCells_; ++k) {
@@ -289,15 +296,27 @@ void LookupSearch::OrderCells() {
   auto byEstimate = [&](size_t a, size_t b) {
     return est[a] > est[b] || (est[a] == est[b] && a < b);
   };
-  std::sort(edges.begin(), edges.end(), byEstimate);
-  std::sort(others.begin(), others.end(), byEstimate);
+  // The probes reach at most the first ceil(budget / P) cells (each chunk stays within the
+  // budget), and only a table of at most kCentreSweepCells cells reads the rest (SweepCentres):
+  // a larger one orders only those (a total order, index on ties: the same first cells).
+  size_t wanted = corners.size() + edges.size() + others.size();
+  if (allCells_ > kCentreSweepCells && P_ > 0)
+    wanted = std::min(wanted, static_cast<size_t>((callBudget_ + P_ - 1) / P_));
+  if (opt_.maxCells > 0) wanted = std::min(wanted, static_cast<size_t>(opt_.maxCells));
+  auto sortFront = [&](std::vector<size_t>& v) {
+    const size_t front = std::min(v.size(), wanted);
+    std::partial_sort(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(front), v.end(),
+                      byEstimate);
+    v.resize(front);
+  };
+  sortFront(edges);
+  sortFront(others);
   order_ = corners;
   for (size_t i = 0; i < std::max(edges.size(), others.size()); ++i) {
     if (i < edges.size()) order_.push_back(edges[i]);
     if (i < others.size()) order_.push_back(others[i]);
   }
-  if (opt_.maxCells > 0 && order_.size() > static_cast<size_t>(opt_.maxCells))
-    order_.resize(static_cast<size_t>(opt_.maxCells));
+  if (order_.size() > wanted) order_.resize(wanted);
 }
 
 void LookupSearch::PointIn(size_t cell, const std::array<double, 3>& u, double* x) const {
