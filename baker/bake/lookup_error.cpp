@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -10,9 +11,11 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <thread>
 
 #include "baker/integrate/hemisphere.h"
+#include "baker/tables/prepared_reference.h"
 
 namespace kiln {
 namespace {
@@ -30,6 +33,8 @@ constexpr double kProbeShare = 0.6;
 /// reference: each point of an average is a whole mu integral) have every other cell's centre
 /// evaluated too, outside the budget, and the worst of those probed in full (MeasureLookupError).
 constexpr size_t kCentreSweepCells = 1024;
+/// Channels a point's lookup keeps on the stack (more take the heap).
+constexpr size_t kStackChannels = 16;
 
 /// One measured point: the error, with the cubic filter, and whether it lies in the path-
 /// dependent corner (first cell of axis 1 of a table over mu).
@@ -105,48 +110,54 @@ std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel) {
   int nc[3];
   for (int d = 0; d < 3; ++d) nc[d] = std::max(1, n[d] - 1);
   // Per axis, per node: max over channels of |second difference| along that axis; an end node
-  // takes its neighbour's (the one stencil that reaches it).
-  size_t nodes = static_cast<size_t>(n[0]) * n[1] * n[2];
+  // takes its neighbour's (the one stencil that reaches it). Each node and each cell on its own
+  // (in parallel, the same values for any thread count).
+  const size_t nodes = static_cast<size_t>(n[0]) * n[1] * n[2];
   std::vector<double> sd[3];
   for (int d = 0; d < dims; ++d) {
     sd[d].assign(nodes, 0.0);
     if (n[d] < 3) continue;
-    for (int i2 = 0; i2 < n[2]; ++i2)
-      for (int i1 = 0; i1 < n[1]; ++i1)
-        for (int i0 = 0; i0 < n[0]; ++i0) {
-          int i[3] = {i0, i1, i2};
-          int j = std::min(std::max(i[d], 1), n[d] - 2);  // stencil centre
-          int lo[3] = {i0, i1, i2}, mid[3] = {i0, i1, i2}, hi[3] = {i0, i1, i2};
-          lo[d] = j - 1;
-          mid[d] = j;
-          hi[d] = j + 1;
-          double m = 0;
-          for (int c = firstChannel; c < view.channels; ++c) {
-            double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
-                   f2 = view.at(hi[0], hi[1], hi[2], c);
-            m = std::max(m, std::abs(f0 - 2 * f1 + f2));
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, nodes, 4096), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t k = r.begin(); k != r.end(); ++k) {
+            int i[3] = {static_cast<int>(k % n[0]), static_cast<int>(k / n[0] % n[1]),
+                        static_cast<int>(k / n[0] / n[1])};
+            int j = std::min(std::max(i[d], 1), n[d] - 2);  // stencil centre
+            int lo[3] = {i[0], i[1], i[2]}, mid[3] = {i[0], i[1], i[2]}, hi[3] = {i[0], i[1], i[2]};
+            lo[d] = j - 1;
+            mid[d] = j;
+            hi[d] = j + 1;
+            double m = 0;
+            for (int c = firstChannel; c < view.channels; ++c) {
+              double f0 = view.at(lo[0], lo[1], lo[2], c), f1 = view.at(mid[0], mid[1], mid[2], c),
+                     f2 = view.at(hi[0], hi[1], hi[2], c);
+              m = std::max(m, std::abs(f0 - 2 * f1 + f2));
+            }
+            sd[d][k] = m;
           }
-          sd[d][i0 + static_cast<size_t>(n[0]) * (i1 + static_cast<size_t>(n[1]) * i2)] = m;
-        }
+        });
   }
-  size_t cells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
+  const size_t cells = static_cast<size_t>(nc[0]) * nc[1] * nc[2];
   std::vector<double> est(cells, 0.0);
-  for (size_t k = 0; k < cells; ++k) {
-    int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
-                static_cast<int>(k / nc[0] / nc[1])};
-    double e = 0;
-    for (int d = 0; d < dims; ++d) {
-      double m = 0;
-      for (int corner = 0; corner < 8; ++corner) {
-        int i[3];
-        for (int a = 0; a < 3; ++a) i[a] = std::min(c[a] + ((corner >> a) & 1), n[a] - 1);
-        m = std::max(
-            m, sd[d][i[0] + static_cast<size_t>(n[0]) * (i[1] + static_cast<size_t>(n[1]) * i[2])]);
-      }
-      e += m / 8;  // h^2 f'' / 8 with h = 1 node spacing
-    }
-    est[k] = e;
-  }
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, cells, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k != r.end(); ++k) {
+          int c[3] = {static_cast<int>(k % nc[0]), static_cast<int>(k / nc[0] % nc[1]),
+                      static_cast<int>(k / nc[0] / nc[1])};
+          double e = 0;
+          for (int d = 0; d < dims; ++d) {
+            double m = 0;
+            for (int corner = 0; corner < 8; ++corner) {
+              int i[3];
+              for (int a = 0; a < 3; ++a) i[a] = std::min(c[a] + ((corner >> a) & 1), n[a] - 1);
+              m = std::max(m, sd[d][i[0] + static_cast<size_t>(n[0]) *
+                                               (i[1] + static_cast<size_t>(n[1]) * i[2])]);
+            }
+            e += m / 8;  // h^2 f'' / 8 with h = 1 node spacing
+          }
+          est[k] = e;
+        }
+      });
   return est;
 }
 
@@ -197,13 +208,16 @@ class LookupSearch {
   bool DefaultReference() const { return opt_.refTol <= 0 && !opt_.bakeRule; }
   void EvaluateAll(std::vector<Sample>& out, size_t base,
                    const std::vector<std::pair<size_t, size_t>>& what);
-  Climb ClimbCell(size_t slot) const;
+  /// The climb in the cell at `slot` of order_; `speculate`: evaluate a point ahead on a
+  /// second thread (the same climb, sooner when it has a thread to itself).
+  Climb ClimbCell(size_t slot, bool speculate) const;
 
   const TableSpec& spec_;
   const LutView& view_;
   /// view_ prepared once: its sampleDouble is view_.sample, bit for bit, without preparing the
   /// axes again at every point.
   LutSampler sampler_;
+  PreparedReference reference_;  ///< SearchReference and EvaluateSpec of spec_, resolved once
   const LookupSearchOptions& opt_;
   size_t dims_;
   int n_[3] = {1, 1, 1}, nc_[3] = {1, 1, 1};
@@ -211,6 +225,11 @@ class LookupSearch {
   int D_ = 0;
   size_t allCells_ = 0;
   int first_ = 0;  ///< the first integral channel (QuantityInfo::firstIntegralChannel)
+  /// Resolved once: the kind's verification reference (with opt.verifyReference), whether the
+  /// table is over mu and more (Sample::inCorner) and its axis 1.
+  decltype(QuantityInfo::verifyReference) verifyReference_ = nullptr;
+  bool overMu_ = false;
+  Axis axis1_{};
   std::vector<size_t> order_, fullOrder_;
   std::vector<std::array<double, 3>> probes_;
   long long P_ = 0, C_ = 0;
@@ -230,6 +249,7 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
     : spec_(spec),
       view_(view),
       sampler_(view),
+      reference_(spec),
       opt_(opt),
       dims_(spec.axes.size()),
       arena_(ThreadsOf(opt)) {
@@ -242,6 +262,9 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
   allCells_ = static_cast<size_t>(nc_[0]) * nc_[1] * nc_[2];
   // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
   first_ = Describe(spec.quantity).firstIntegralChannel;
+  if (opt.verifyReference) verifyReference_ = Describe(spec.quantity).verifyReference;
+  overMu_ = dims_ >= 2 && spec.axes[0].name == "mu";
+  if (dims_ >= 2) axis1_ = spec.axes[1].ToAxis();
   probes_ = ProbePoints(D_);
   P_ = static_cast<long long>(probes_.size());
   C_ = kSweeps * D_ * (kGoldenIterations + 3);  // at most
@@ -254,7 +277,8 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
 }
 
 void LookupSearch::OrderCells() {
-  std::vector<double> est = CellErrorEstimates(view_, first_);
+  std::vector<double> est;
+  arena_.execute([&] { est = CellErrorEstimates(view_, first_); });
   est.resize(allCells_, 0.0);
   std::vector<size_t> corners, edges, others;
   for (size_t k = 0; k < allCells_; ++k) {
@@ -272,15 +296,27 @@ void LookupSearch::OrderCells() {
   auto byEstimate = [&](size_t a, size_t b) {
     return est[a] > est[b] || (est[a] == est[b] && a < b);
   };
-  std::sort(edges.begin(), edges.end(), byEstimate);
-  std::sort(others.begin(), others.end(), byEstimate);
+  // The probes reach at most the first ceil(budget / P) cells (each chunk stays within the
+  // budget), and only a table of at most kCentreSweepCells cells reads the rest (SweepCentres):
+  // a larger one orders only those (a total order, index on ties: the same first cells).
+  size_t wanted = corners.size() + edges.size() + others.size();
+  if (allCells_ > kCentreSweepCells && P_ > 0)
+    wanted = std::min(wanted, static_cast<size_t>((callBudget_ + P_ - 1) / P_));
+  if (opt_.maxCells > 0) wanted = std::min(wanted, static_cast<size_t>(opt_.maxCells));
+  auto sortFront = [&](std::vector<size_t>& v) {
+    const size_t front = std::min(v.size(), wanted);
+    std::partial_sort(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(front), v.end(),
+                      byEstimate);
+    v.resize(front);
+  };
+  sortFront(edges);
+  sortFront(others);
   order_ = corners;
   for (size_t i = 0; i < std::max(edges.size(), others.size()); ++i) {
     if (i < edges.size()) order_.push_back(edges[i]);
     if (i < others.size()) order_.push_back(others[i]);
   }
-  if (opt_.maxCells > 0 && order_.size() > static_cast<size_t>(opt_.maxCells))
-    order_.resize(static_cast<size_t>(opt_.maxCells));
+  if (order_.size() > wanted) order_.resize(wanted);
 }
 
 void LookupSearch::PointIn(size_t cell, const std::array<double, 3>& u, double* x) const {
@@ -312,25 +348,29 @@ Sample LookupSearch::Evaluate(size_t cell, const std::array<double, 3>& u) const
   std::vector<double> exact;
   Sample s;
   s.reused = DefaultReference() && opt_.reuse && opt_.reuse(x, exact, st);
-  const auto own = opt_.verifyReference ? Describe(spec_.quantity).verifyReference : nullptr;
   if (!s.reused)
-    exact = opt_.refTol > 0
-                ? (own ? own(spec_, x, opt_.refTol, st) : EvaluateSpec(spec_, x, opt_.refTol, st))
-            : opt_.bakeRule ? EvaluateSpec(spec_, x, st)
-                            : SearchReference(spec_, x, st);
+    exact = opt_.refTol > 0 ? (verifyReference_ ? verifyReference_(spec_, x, opt_.refTol, st)
+                                                : EvaluateSpec(spec_, x, opt_.refTol, st))
+            : opt_.bakeRule ? reference_.Bake(x, st)
+                            : reference_.Search(x, st);
   if (opt_.bakeRule) st.errorEstimate = 0;  // the bake's own rule
   // One float per channel of the table, and at least one per exact value (a table with fewer
-  // channels than its quantity then compares the missing ones against 0).
-  std::vector<float> got(std::max<size_t>(view_.channels, exact.size()), 0.0f);
-  sampler_.sampleDouble(x, got.data(), opt_.filter);
+  // channels than its quantity then compares the missing ones against 0): on the stack for
+  // up to kStackChannels of them.
+  const size_t nGot = std::max<size_t>(static_cast<size_t>(view_.channels), exact.size());
+  float stackGot[kStackChannels];
+  std::vector<float> heapGot(nGot > kStackChannels ? nGot : 0);
+  float* got = nGot > kStackChannels ? heapGot.data() : stackGot;
+  std::fill(got, got + nGot, 0.0f);
+  sampler_.sampleDouble(x, got, opt_.filter);
   for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
     s.err = std::max(s.err, std::abs(got[ch] - exact[ch]));
   if (opt_.alsoCubic) {
-    sampler_.sampleDouble(x, got.data(), Filter::Cubic);
+    sampler_.sampleDouble(x, got, Filter::Cubic);
     for (size_t ch = static_cast<size_t>(first_); ch < exact.size(); ++ch)
       s.cubic = std::max(s.cubic, std::abs(got[ch] - exact[ch]));
   }
-  s.inCorner = dims_ >= 2 && spec_.axes[0].name == "mu" && spec_.axes[1].ToAxis().texel(x[1]) < 1;
+  s.inCorner = overMu_ && axis1_.texel(x[1]) < 1;
   s.integrand = st.evals;
   s.refError = opt_.refTol > 0 ? 0.0 : st.errorEstimate;
   std::copy(x, x + 3, s.x);
@@ -347,6 +387,8 @@ bool LookupSearch::Spent(double share) const {
 void LookupSearch::Probe() {
   const long long allProbes = static_cast<long long>(order_.size()) * P_;
   const double probeShare = allProbes <= callBudget_ * kProbeShare || C_ == 0 ? 1.0 : kProbeShare;
+  // The probes' samples in one block (growing it chunk by chunk moved them all, again and again).
+  probeSamples_.reserve(static_cast<size_t>(std::min(allProbes, callBudget_)));
   while (calls_ < allProbes && !Spent(probeShare)) {
     long long chunk =
         std::min({std::max({8LL, P_, calls_ / 8}), allProbes - calls_, callBudget_ - calls_});
@@ -459,15 +501,59 @@ void LookupSearch::RandomPoints() {
   probeSamples_.insert(probeSamples_.end(), sweepSamples_.begin(), sweepSamples_.end());
 }
 
-Climb LookupSearch::ClimbCell(size_t slot) const {
+namespace {
+
+/// One golden-section bracket [lo, hi] of the climb along one axis, with its two inner points
+/// and their errors.
+struct Bracket {
+  double lo = 0, hi = 1, x1 = 0, x2 = 0, f1 = 0, f2 = 0;
+  bool newIsX1 = false;  ///< which inner point Advance placed last
+};
+
+/// The golden ratio's conjugate, 0.618: the bracket shrinks by it per iteration.
+const double kGolden = 0.5 * (std::sqrt(5.0) - 1.0);
+
+/// One golden-section iteration: keeps the inner point that erred more (x1 on a tie goes) and
+/// returns the new inner point, whose error Settle then records.
+double Advance(Bracket& b) {
+  b.newIsX1 = b.f1 > b.f2;
+  if (b.newIsX1) {
+    b.hi = b.x2;
+    b.x2 = b.x1;
+    b.f2 = b.f1;
+    b.x1 = b.hi - kGolden * (b.hi - b.lo);
+    return b.x1;
+  }
+  b.lo = b.x1;
+  b.x1 = b.x2;
+  b.f1 = b.f2;
+  b.x2 = b.lo + kGolden * (b.hi - b.lo);
+  return b.x2;
+}
+
+/// The error f of the point Advance placed last.
+void Settle(Bracket& b, double f) { (b.newIsX1 ? b.f1 : b.f2) = f; }
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+}  // namespace
+
+Climb LookupSearch::ClimbCell(size_t slot, bool speculate) const {
   size_t cell = order_[slot];
   Climb cl;
   cl.u = probes_[cellBestProbe_[slot]];
   cl.best = probeSamples_[slot * P_ + cellBestProbe_[slot]];
-  auto f = [&](int axis, double v) {
+  // Along axis `axis` the points differ in u[axis] only (cl.u moves along it alone): a point is
+  // evaluated (eval, thread-safe) and then used (use: in the serial order, the only one that
+  // counts it, keeps the best and records it), so that a point evaluated ahead gives the same
+  // climb.
+  int axis = 0;
+  auto eval = [&](double v) {
     std::array<double, 3> u = cl.u;
     u[axis] = v;
-    Sample s = Evaluate(cell, u);
+    return Evaluate(cell, u);
+  };
+  auto use = [&](double v, Sample s) {
     ++cl.evals;
     cl.reused += s.reused;
     cl.integrand += s.integrand;
@@ -475,37 +561,81 @@ Climb LookupSearch::ClimbCell(size_t slot) const {
     const double err = s.err;
     if (s.err > cl.best.err) {
       cl.best = s;
-      cl.u = u;
+      cl.u[axis] = v;
     }
     if (opt_.record && DefaultReference()) cl.visited.push_back(std::move(s));
     return err;
   };
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);  // 0.618
+  // With `speculate` (a climb alone on more than one thread), the point after the next one is
+  // evaluated beside it, as if the next one erred more than the point it is compared with; it
+  // is used when the climb goes there (half the time), else dropped (never counted).
+  bool haveAhead = false;
+  double aheadAt = 0;
+  Sample ahead;
+  // On the last iteration the point ahead is the bracket's end on the cell's face, when the
+  // climb evaluates it (below).
+  auto next = [&](const Bracket& b, double v, bool last) {
+    if (haveAhead && SameBits(aheadAt, v)) {
+      haveAhead = false;
+      return use(v, std::move(ahead));
+    }
+    haveAhead = false;
+    Sample s;
+    double w = 0;
+    if (last) {
+      haveAhead = b.lo == 0.0 || b.hi == 1.0;
+      w = b.lo == 0.0 ? 0.0 : 1.0;
+    } else {
+      Bracket guess = b;
+      Settle(guess, std::numeric_limits<double>::infinity());
+      w = Advance(guess);
+      haveAhead = true;
+    }
+    if (speculate && haveAhead) {
+      tbb::parallel_invoke([&] { s = eval(v); }, [&] { ahead = eval(w); });
+      aheadAt = w;
+    } else {
+      haveAhead = false;
+      s = eval(v);
+    }
+    return use(v, std::move(s));
+  };
+  // The bracket's end at v, evaluated ahead or now.
+  auto end = [&](double v) {
+    if (haveAhead && SameBits(aheadAt, v)) {
+      haveAhead = false;
+      use(v, std::move(ahead));
+    } else {
+      use(v, eval(v));
+    }
+  };
   for (int sweep = 0; sweep < kSweeps; ++sweep)
-    for (int a = 0; a < D_; ++a) {
-      double centre = cl.u[a], w = kSweepHalfWidth[sweep];
-      double lo = std::max(0.0, centre - w), hi = std::min(1.0, centre + w);
-      double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-      double f1 = f(a, x1), f2 = f(a, x2);
+    for (axis = 0; axis < D_; ++axis) {
+      const double centre = cl.u[axis], w = kSweepHalfWidth[sweep];
+      Bracket b;
+      b.lo = std::max(0.0, centre - w);
+      b.hi = std::min(1.0, centre + w);
+      b.x1 = b.hi - kGolden * (b.hi - b.lo);
+      b.x2 = b.lo + kGolden * (b.hi - b.lo);
+      if (speculate) {
+        Sample s1, s2;
+        tbb::parallel_invoke([&] { s1 = eval(b.x1); }, [&] { s2 = eval(b.x2); });
+        b.f1 = use(b.x1, std::move(s1));
+        b.f2 = use(b.x2, std::move(s2));
+      } else {
+        b.f1 = use(b.x1, eval(b.x1));
+        b.f2 = use(b.x2, eval(b.x2));
+      }
+      haveAhead = false;
       for (int it = 0; it < kGoldenIterations; ++it) {
-        if (f1 > f2) {
-          hi = x2;
-          x2 = x1;
-          f2 = f1;
-          x1 = hi - g * (hi - lo);
-          f1 = f(a, x1);
-        } else {
-          lo = x1;
-          x1 = x2;
-          f1 = f2;
-          x2 = lo + g * (hi - lo);
-          f2 = f(a, x2);
-        }
+        const double v = Advance(b);
+        Settle(b, next(b, v, it + 1 == kGoldenIterations));
       }
       // A maximum on the cell's face (a layer along a node line, the domain's boundary): the
       // golden section never evaluates its bracket's ends.
-      if (lo == 0.0) f(a, 0.0);
-      if (hi == 1.0) f(a, 1.0);
+      if (b.lo == 0.0) end(0.0);
+      if (b.hi == 1.0) end(1.0);
+      haveAhead = false;
     }
   return cl;
 }
@@ -532,11 +662,13 @@ void LookupSearch::Climbs() {
                 : std::min<size_t>(chunk, static_cast<size_t>((callBudget_ - calls_) / C_));
     size_t base = climbed_.size();
     climbed_.resize(base + chunk);
+    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell).
+    const bool speculate = chunk < static_cast<size_t>(arena_.max_concurrency());
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
                           for (size_t j = r.begin(); j != r.end(); ++j)
-                            climbed_[j] = ClimbCell(rank[j]);
+                            climbed_[j] = ClimbCell(rank[j], speculate);
                         });
     });
     for (size_t j = base; j < climbed_.size(); ++j) {

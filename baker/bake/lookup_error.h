@@ -111,7 +111,8 @@ constexpr long long kLookupBudgetIntegrand = 20000000;
 /// |f(i-1) - 2 f(i) + f(i+1)| / 8 in warped coordinates at both nodes of the cell along that axis
 /// (so a kink, whose second difference jumps, shows in the cells on either side), the max over
 /// the cell's corners and the channels, summed over the axes.
-/// Channels before `firstChannel` are left out (a fitted table's coefficients).
+/// Channels before `firstChannel` are left out (a fitted table's coefficients). Runs on the
+/// calling thread's oneTBB arena; the same values for any thread count.
 std::vector<double> CellErrorEstimates(const LutView& view, int firstChannel = 0);
 
 /// Searches the table for its largest |view.sample(x, filter) - reference(x)| (max over

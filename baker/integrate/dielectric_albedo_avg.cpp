@@ -159,11 +159,23 @@ AveragePointMemo& PointMemo() {
 
 }  // namespace
 
-void PrepareDielectricAverageColumn(double alpha, const double* etas, int n) {
+int PrepareDielectricAverageColumn(double alpha, const double* etas, int n) {
+  // Only the etas the memo does not hold yet (a column gives each eta the bits and evaluations
+  // it gets alone, whatever else the column holds): the search of t-avg after r-avg's reads
+  // the points they share.
+  if (n < 1 || n > kMaxDielectricColumn)
+    throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
+  double todo[kMaxDielectricColumn];
+  int m = 0;
+  AveragePointMemo::Value held;
+  for (int e = 0; e < n; ++e)
+    if (!PointMemo().Find(alpha, etas[e], held)) todo[m++] = etas[e];
+  if (m == 0) return 0;
   std::array<double, 2> out[kMaxDielectricColumn];
   long long evals = 0;
-  FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, kDielectricAverageNodes, out, &evals);
-  for (int e = 0; e < n; ++e) PointMemo().Keep(alpha, etas[e], {out[e], evals});
+  FixedRuleDielectricAlbedoAverageColumn(alpha, todo, m, kDielectricAverageNodes, out, &evals);
+  for (int e = 0; e < m; ++e) PointMemo().Keep(alpha, todo[e], {out[e], evals});
+  return m;
 }
 
 std::array<double, 2> SmoothDielectricAlbedoAverage(double eta) {

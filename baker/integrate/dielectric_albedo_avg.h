@@ -47,8 +47,9 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 /// FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, evals) read first: the
 /// same bits and evaluations as the point alone (a column gives each eta a column of one's bits),
 /// one walk for the n points (the lookup-error searches' points of one roughness,
-/// QuantityInfo::prepareSearch). Thread-safe.
-void PrepareDielectricAverageColumn(double alpha, const double* etas, int n);
+/// QuantityInfo::prepareSearch). Points the memo holds already (another search's: t-avg after
+/// r-avg) are not integrated again. Returns how many etas it integrated. Thread-safe.
+int PrepareDielectricAverageColumn(double alpha, const double* etas, int n);
 
 /// The exit side (1 / eta >= kDielectricTableEtaMin): E_avg_R by the mu rule of E_R alone
 /// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures; the bake

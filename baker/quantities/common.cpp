@@ -17,6 +17,7 @@
 #include "baker/integrate/fixed_rule_diffuse.h"
 #include "baker/models/model_names.h"
 #include "baker/models/specular.h"
+#include "baker/tables/prepared_reference.h"
 
 namespace kiln::quantity_detail {
 
@@ -391,10 +392,11 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
     if (albedo.axes[i].name == "eta") layer = std::min(layer, std::sqrt(std::abs(x[i] - 1)));
   }
   const bool fixed = UsesFixedRule(albedo);
+  const PreparedReference reference(albedo);
   auto e = [&](double mu) {
     x[0] = mu;
     IntegrationStats st;
-    std::vector<double> v = search ? SearchReference(albedo, x, st) : EvaluateSpec(albedo, x, st);
+    std::vector<double> v = search ? reference.Search(x, st) : reference.Bake(x, st);
     // The search's form takes kSearchAverageNodes per panel: each inner evaluation is charged
     // for the kCosineAverageNodes / kSearchAverageNodes the bake's rule takes in its place.
     stats.evals += search ? std::llround(static_cast<double>(st.evals) * kCosineAverageNodes /

@@ -6,6 +6,7 @@
 
 #include "baker/models/registry.h"
 #include "baker/tables/engine_layout.h"
+#include "baker/tables/prepared_reference.h"
 
 namespace kiln {
 namespace {
@@ -33,9 +34,13 @@ bool SmoothLimitApplies(const TableSpec& spec) {
 /// Where a sheen spec is evaluated: x with its roughness raised to params[sheen_roughness_min]
 /// (the engine grid's shader clamp, engine_layout.h) copied into `buf`; x itself for any other
 /// spec (a FilamentCloth ggx table clamps only its cloth channel, in the dfg kind).
+/// Whether SheenClampedPoint moves the points of `spec`.
+bool SheenClampApplies(const TableSpec& spec) {
+  return spec.params.count(kSheenRoughnessMinParam) && IsSheen(spec.model) && spec.axes.size() <= 3;
+}
+
 const double* SheenClampedPoint(const TableSpec& spec, const double* x, double* buf) {
-  if (!spec.params.count(kSheenRoughnessMinParam) || !IsSheen(spec.model) || spec.axes.size() > 3)
-    return x;
+  if (!SheenClampApplies(spec)) return x;
   for (size_t d = 0; d < spec.axes.size(); ++d)
     buf[d] = spec.axes[d].name == "roughness" ? SheenRoughnessFor(spec, x[d]) : x[d];
   return buf;
@@ -261,6 +266,32 @@ std::vector<double> EvaluateSpec(const TableSpec& spec, const double* xIn, doubl
   std::vector<double> smooth;
   if (q.smoothLimit && q.smoothLimit(spec, x, smooth)) return smooth;
   return q.evaluate(spec, x, tol, stats);
+}
+
+PreparedReference::PreparedReference(const TableSpec& spec)
+    : spec_(spec),
+      q_(Describe(spec.quantity)),
+      clamp_(SheenClampApplies(spec)),
+      fixed_(UsesFixedRule(spec)) {}
+
+std::vector<double> PreparedReference::Search(const double* x, IntegrationStats& stats) const {
+  if (clamp_) return SearchReference(spec_, x, stats);
+  // SearchReference with x unclamped: the smooth limit, the search rule, else EvaluateSpec
+  // (whose own smooth-limit check at the same x has already failed).
+  std::vector<double> smooth;
+  if (q_.smoothLimit && q_.smoothLimit(spec_, x, smooth)) return smooth;
+  if (q_.searchRule && fixed_) return q_.searchRule(spec_, x, stats);
+  std::vector<double> v =
+      fixed_ ? q_.fixedRule(spec_, x, stats) : q_.evaluate(spec_, x, spec_.tol, stats);
+  stats.errorEstimate = 0;
+  return v;
+}
+
+std::vector<double> PreparedReference::Bake(const double* x, IntegrationStats& stats) const {
+  if (clamp_) return EvaluateSpec(spec_, x, stats);
+  std::vector<double> smooth;
+  if (q_.smoothLimit && q_.smoothLimit(spec_, x, smooth)) return smooth;
+  return fixed_ ? q_.fixedRule(spec_, x, stats) : q_.evaluate(spec_, x, spec_.tol, stats);
 }
 
 }  // namespace kiln
