@@ -86,9 +86,10 @@ size_t ShardRotation(const std::vector<TableSpec>& specs, size_t k) {
 /// a sixtieth of the smallest declared bake error (5.96e-8), so the reference's own error moves no
 /// verdict (a texel off by 2e-6 stays more than 1e-6 from it).
 constexpr double kTexelRefTol = 1e-9;
-/// An average's nested adaptive reference (an integral over mu of E by adaptive quadrature: the
-/// glass averages take ~1e7 integrand evaluations a texel), at its corners and worst-departing
-/// texels; a sixtieth of the averages' smallest declared bake error (5.7e-7).
+/// An average's nested adaptive reference (an integral over mu of E by adaptive quadrature: a
+/// glass average takes 3e6 to 2e7 integrand evaluations a point, once for its r and t kinds,
+/// test::GlassAverageReference), at its corners and worst-departing texels; a sixtieth of the
+/// averages' smallest declared bake error (5.7e-7).
 constexpr double kNestedRefTol = 1e-8;
 
 /// A table of at most this many texels has every texel checked (every kind at size 5 but the
