@@ -294,9 +294,18 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
 
 std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double tol,
                                               IntegrationStats& stats) {
+  NestedAverageTolerance split;
+  split.outer = tol / 2;
+  split.inner = tol / 10;
+  return DielectricAlbedoAverage(alpha, eta, split, stats);
+}
+
+std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
+                                              const NestedAverageTolerance& tol,
+                                              IntegrationStats& stats) {
   const std::vector<Panel> panels = Panels(alpha, eta);
   IntegrationOptions opt;
-  opt.tol = tol / 10;
+  opt.tol = tol.inner;
   opt.maxPanels = 2000;
   // x in [i, i + 1] is panel i at t = x - i.
   auto f = [&](double x) -> Channels<2> {
@@ -304,7 +313,10 @@ std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double t
     double dmu;
     const double mu = PanelPoint(panels[i], x - i, &dmu);
     IntegrationStats s;
-    const std::array<double, 2> e = DielectricAlbedo(mu, alpha, eta, opt, s);
+    IntegrationOptions at = opt;
+    // An error d(mu) in E moves E_avg by int 2 mu d(mu) dmu: tol.inner / (2 mu) in all of it.
+    if (tol.gradedByWeight) at.tol = std::min(tol.inner / (2 * mu), kMaxGradedInnerTol);
+    const std::array<double, 2> e = DielectricAlbedo(mu, alpha, eta, at, s);
     stats.evals += s.evals;
     return {2 * dmu * mu * e[0], 2 * dmu * mu * e[1]};
   };
@@ -312,7 +324,7 @@ std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double t
   for (size_t i = 0; i < xs.size(); ++i) xs[i] = static_cast<double>(i);
   double err = 0;
   Channels<2> r =
-      IntegrateAdaptive<2>(f, xs.data(), static_cast<int>(xs.size()), tol / 2, 400, &err);
+      IntegrateAdaptive<2>(f, xs.data(), static_cast<int>(xs.size()), tol.outer, 400, &err);
   stats.errorEstimate = err;
   return {r[0], r[1]};
 }

@@ -70,6 +70,23 @@ double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
 std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double tol,
                                               IntegrationStats& stats);
 
+/// How DielectricAlbedoAverage splits its tolerance: the quadrature over mu to `outer`, E(mu) to
+/// `inner` (absolute); gradedByWeight: E(mu) to inner / (2 mu) instead (at most
+/// kMaxGradedInnerTol), whose error moves E_avg = int 2 mu E dmu by at most `inner` all the same.
+struct NestedAverageTolerance {
+  double outer = 0, inner = 0;
+  bool gradedByWeight = false;
+};
+
+/// The cap of a graded inner tolerance (NestedAverageTolerance::gradedByWeight) near mu = 0.
+constexpr double kMaxGradedInnerTol = 1e-6;
+
+/// DielectricAlbedoAverage with its tolerance split as `tol` says; the form above is
+/// {tol / 2, tol / 10, false}, bit for bit.
+std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
+                                              const NestedAverageTolerance& tol,
+                                              IntegrationStats& stats);
+
 /// The smooth interface (alpha = 0): {F_avg(eta), 1 - F_avg(eta)}, F_avg = 2 int F mu dmu; for
 /// eta < 1 from the entering side by reciprocity, 1 - F_avg(eta) = eta^2 (1 - F_avg(1 / eta)).
 std::array<double, 2> SmoothDielectricAlbedoAverage(double eta);
