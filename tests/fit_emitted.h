@@ -14,48 +14,11 @@
 
 namespace kiln::test {
 
-/// Compiles `header`, whose function `function` takes `dims` axis values (at most 4), into `dir`
-/// with -std=c++17 -O2 -Wall -Wextra -Werror, runs it on `points` (dims floats per point, in
-/// order) and returns the 4 output slots per point (the channels first, zeros after them).
-inline std::vector<float> RunEmittedFit(const std::string& header, const std::string& function,
-                                        int dims, const std::vector<float>& points,
-                                        const std::string& dir) {
-  std::ofstream(dir + "/fit.h") << header;
-  std::ofstream(dir + "/main.cpp")
-      << "#include \"fit.h\"\n#include <cstdio>\nint main() {\n"
-         "  float x[4] = {0, 0, 0, 0}, out[4] = {0, 0, 0, 0};\n"
-         "  for (;;) {\n    for (int i = 0; i < "
-      << dims << "; ++i)\n      if (std::scanf(\"%a\", &x[i]) != 1) return 0;\n    " << function
-      << "(x, out);\n    std::printf(\"%a %a %a %a\\n\", out[0], out[1], out[2], out[3]);\n"
-         "  }\n}\n";
-  const std::string cmd = "c++ -std=c++17 -O2 -Wall -Wextra -Werror -o " + dir + "/prog " + dir +
-                          "/main.cpp > " + dir + "/cc.log 2>&1";
-  const int status = std::system(cmd.c_str());
-  INFO(ReadFile(dir + "/cc.log"));
-  REQUIRE(status == 0);
-  {
-    std::ofstream in(dir + "/points.txt");
-    for (float x : points) {
-      char b[40];
-      std::snprintf(b, sizeof b, "%a\n", x);
-      in << b;
-    }
-  }
-  REQUIRE(std::system((dir + "/prog < " + dir + "/points.txt > " + dir + "/out.txt").c_str()) == 0);
-  std::istringstream out(ReadFile(dir + "/out.txt"));
-  std::vector<float> values;
-  for (size_t i = 0; i < 4 * (points.size() / dims); ++i) {
-    std::string v;
-    REQUIRE(static_cast<bool>(out >> v));
-    values.push_back(std::strtof(v.c_str(), nullptr));
-  }
-  return values;
-}
-
-/// RunEmittedFit for several headers whose functions share the name `function` (forms of one
-/// table) in one compile: each header's body inside a namespace of its own (its own #includes,
-/// <algorithm> and <cmath>, come first at global scope, so their guards keep them there), one
-/// program run per header. Returns the 4 output slots per point of each header, in order.
+/// Compiles several headers whose functions share the name `function` (forms of one table) in
+/// one program, with -std=c++17 -O2 -Wall -Wextra -Werror, and runs it on `points`: each header's
+/// body inside a namespace of its own (its own #includes, <algorithm> and <cmath>, come first at
+/// global scope, so their guards keep them there), one program run per header. Returns the 4 output
+/// slots per point of each header, in order.
 inline std::vector<std::vector<float>> RunEmittedFits(const std::vector<std::string>& headers,
                                                       const std::string& function, int dims,
                                                       const std::vector<float>& points,
@@ -103,6 +66,15 @@ inline std::vector<std::vector<float>> RunEmittedFits(const std::vector<std::str
     all.push_back(values);
   }
   return all;
+}
+
+/// Compiles `header`, whose function `function` takes `dims` axis values (at most 4), into `dir`
+/// with -std=c++17 -O2 -Wall -Wextra -Werror, runs it on `points` (dims floats per point, in
+/// order) and returns the 4 output slots per point (the channels first, zeros after them).
+inline std::vector<float> RunEmittedFit(const std::string& header, const std::string& function,
+                                        int dims, const std::vector<float>& points,
+                                        const std::string& dir) {
+  return RunEmittedFits({header}, function, dims, points, dir)[0];
 }
 
 }  // namespace kiln::test
