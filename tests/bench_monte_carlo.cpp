@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "builtin_models.h"
 #include "baker/bench/estimate_table.h"
 #include "baker/integrate/quantities.h"
 #include "baker/tables/catalogue.h"
@@ -148,7 +149,7 @@ TEST_CASE("cosine-weighted Monte Carlo diffuse albedo converges to kiln's", "[be
 TEST_CASE("no diffuse sample lies on the horizon: estimates stay finite at grazing views",
           "[bench]") {
   PointSet points = HammersleyPoints(256);
-  for (const ModelInfo& info : AllModels()) {
+  for (const ModelInfo& info : test::BuiltInModels()) {
     if (info.specular()) continue;
     for (double r : {0.0, 0.5, 1.0}) {
       ModelParams p;

@@ -195,6 +195,7 @@ TEST_CASE("a lobe's NaN, infinite or negative value is named with its directions
                               "if (wi[2] > 0.99 && r < 0.05) return INFINITY;\n"
                               "return 0.3;");
   LoadModelSource(src, CustomCache());
+  const UnregisterAtExit unload{"bad-values"};
   CHECK_THROWS_WITH(DirectionalAlbedoOf("bad-values", 0.5, 0.3),
                     Contains("model 'bad-values'") && Contains("f = nan at wo = (") &&
                         Contains("wi = (") && Contains("bad_values.cpp"));

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "baker/custom/loader.h"
+#include "baker/models/registry.h"
 
 namespace kiln::test {
 
@@ -44,6 +45,13 @@ inline std::string WriteLobe(const std::string& name, const std::string& id, boo
       << eval << "\n}\n";
   return path;
 }
+
+/// Removes the model `id` from the registry when it goes out of scope: a lobe built to fail (NaN,
+/// negative values) must not reach the later tests of the process that walk every model.
+struct UnregisterAtExit {
+  std::string id;
+  ~UnregisterAtExit() { UnregisterModel(id); }
+};
 
 /// An example lobe of examples/models, loaded (compiled once per process).
 inline const ModelInfo& ExampleLobe(const std::string& file) {

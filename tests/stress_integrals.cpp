@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "builtin_models.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/sheen.h"
 #include "baker/tables/catalogue.h"
@@ -106,7 +107,7 @@ SpecularFamily FamilyOf(const ModelInfo& m) {
 
 void SweepSpecularFamily(SpecularFamily family) {
   int swept = 0;
-  for (const ModelInfo& m : AllModels())
+  for (const ModelInfo& m : test::BuiltInModels())
     if (m.specular() && FamilyOf(m) == family) {
       SweepAlbedo(m, FastVariants(m), {0.0, 1e-12, 1e-6, 0.5, 1.0});
       ++swept;
@@ -141,13 +142,13 @@ TEST_CASE(
     "Directional albedo at every edge: finite, non-negative where flagged, at most 1 for the "
     "energy-conserving models (diffuse and sheen models)",
     "[stress][integrals]") {
-  for (const ModelInfo& m : AllModels())
+  for (const ModelInfo& m : test::BuiltInModels())
     if (!m.specular()) SweepAlbedo(m, FastVariants(m), {0.0, 1e-12, 1e-6, 0.5, 1.0});
 }
 
 TEST_CASE("Directional albedo at every edge of every variant (eta = 1 + 1e-9, exponents 1e7)",
           "[stress][integrals][long]") {
-  for (const ModelInfo& m : AllModels())
+  for (const ModelInfo& m : test::BuiltInModels())
     SweepAlbedo(m, EdgeVariants(m), {0.0, 1e-12, 1e-9, 1e-6, 1e-3, 0.1, 0.5, 0.9, 1.0});
 }
 
@@ -155,7 +156,7 @@ TEST_CASE(
     "Directional albedo is continuous at the edges: E(1e-12) = E(0), and roughness 1e-12 "
     "gives the albedo of roughness 0",
     "[stress][integrals]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     std::vector<double> rs = EdgeRoughness(m);
     if (rs.empty()) rs = {-1};
     double worstMu = 0, worstR = 0;
@@ -185,7 +186,7 @@ TEST_CASE(
 
 TEST_CASE("Split-sum DFG at the edges: finite, A and B non-negative, A + B = E, at most 1",
           "[stress][integrals][dfg]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (!m.specular()) {
       IntegrationStats st;
       CHECK_THROWS_WITH(SplitSumDFG(MakeModel(m.id, {}), 0.5, Options(), st),
@@ -224,7 +225,7 @@ bool AveragedElsewhere(const std::string& id, double r) {
 /// The average albedo of every model with specular() == `specular` at the ends of its roughness
 /// range: finite, non-negative where flagged, at most 1 + 1e-6 where energy conserving.
 void CheckAverageEdges(bool specular) {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (m.specular() != specular) continue;
     std::vector<double> rs = {-1};
     if (const ParamInfo* r = RoughnessParam(m)) rs = {r->lo, r->hi};
@@ -327,7 +328,7 @@ TEST_CASE("Random points of the albedo per model: finite, bounded where flagged"
           "[stress][integrals][long]") {
   const int kPoints = 300;
   uint64_t seed = 0xA1BED0;
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     test::Rng rng(++seed);
     const ParamInfo* rough = RoughnessParam(m);
     double lowest = INFINITY, highest = -INFINITY;
@@ -365,7 +366,7 @@ TEST_CASE("Microfacet albedos near grazing meet their tolerance and stay at most
     CHECK(std::abs(ggx - exact) <= 10 * kTol);
     CHECK(std::abs(sep - exactSep) <= 10 * kTol);
   }
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (!m.specular()) continue;
     for (double r : {0.1, 0.5, 1.0}) {
       AnyModel model = MakeModel(m.id, WithRoughness(m, {}, r));

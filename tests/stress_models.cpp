@@ -36,6 +36,7 @@
 #include <cstdio>
 #include <set>
 
+#include "builtin_models.h"
 #include "baker/models/fresnel.h"
 #include "stress_util.h"
 #include "test_util.h"
@@ -100,7 +101,7 @@ TEST_CASE(
     "Every BRDF value at every edge of every model is finite, nonNegative models never go "
     "below 0 (for any rho), and the others do somewhere",
     "[stress][models]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     double lowest = INFINITY;
     long long points = 0, bad = 0;
     std::string firstBad;
@@ -129,7 +130,7 @@ TEST_CASE(
 
 TEST_CASE("BRDF values are continuous at mu = 0: the value at mu = 1e-12 is the value at 0",
           "[stress][models]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (m.specular()) continue;  // the horizon convention: next test
     double worst = 0, worstCorner = 0;
     std::string where;
@@ -169,7 +170,7 @@ TEST_CASE("BRDF values are continuous at mu = 0: the value at mu = 1e-12 is the 
 
 TEST_CASE("Specular lobes are exactly 0 on the horizon, and their one-sided limit exists",
           "[stress][models]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (!m.specular()) continue;
     double worst = 0, onHorizon = 0;
     std::string where;
@@ -208,7 +209,7 @@ TEST_CASE(
     "others stay bounded",
     "[stress][models]") {
   // max over phi of |f| with both directions at mu, at a mid roughness (hi for Oren-Nayar).
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     ModelParams p;
     if (const ParamInfo* r = RoughnessParam(m)) p.roughness = std::min(0.5, r->hi);
     AnyModel model = MakeModel(m.id, p);
@@ -232,7 +233,7 @@ TEST_CASE(
 
 TEST_CASE("BRDF values are continuous in roughness at 0: roughness 1e-12 gives the value of 0",
           "[stress][models]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (!RoughnessParam(m) || RoughnessParam(m)->lo > 0) continue;  // Charlie: from 0.045
     double worst = 0;
     std::string where;
@@ -297,7 +298,7 @@ TEST_CASE("Fresnel terms stay in [0, 1] at every edge and are continuous in eta 
 // f(rho) = rho lin + rho^2 quad >= 0 for every rho in [0, 1] iff lin >= 0 and lin + quad >= 0.
 TEST_CASE("nonNegative models stay non-negative for every rho in [0, 1], not only at rho = 1",
           "[stress][models]") {
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     if (!m.nonNegative) continue;
     double lowest = INFINITY;
     std::string where;
@@ -322,7 +323,7 @@ TEST_CASE("A million random points per model: finite, non-negative (for every rh
           "[stress][models][long]") {
   const int kPoints = 1000000;
   uint64_t seed = 0x5EED0000;
-  for (const ModelInfo& m : AllModels()) {
+  for (const ModelInfo& m : test::BuiltInModels()) {
     test::Rng rng(++seed);
     std::vector<Variant> variants = EdgeVariants(m);
     const ParamInfo* rough = RoughnessParam(m);
