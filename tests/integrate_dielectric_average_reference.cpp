@@ -15,9 +15,10 @@ namespace {
 /// The tolerance the texel check holds the glass averages' nested reference to.
 constexpr double kTol = 1e-8;
 
-/// At (r, eta) of the r kind `rName` and the t kind `tName` (one side of the interface): the
-/// reference is EvaluateSpec's to within the two tolerances, costs fewer evaluations, and the t
-/// kind after the r kind costs none.
+/// At (r, eta) of the r kind `rName` and the t kind `tName` (one side of the interface; a point
+/// off the size-5 tables' nodes, whose references the texel check of the same process may have
+/// put in the memo): the reference is EvaluateSpec's to within the two tolerances, costs fewer
+/// evaluations, and the t kind after the r kind costs none.
 void CheckAgainstEvaluateSpec(const char* rName, const char* tName, double r, double eta) {
   CatalogueOptions copt;
   copt.size = 5;
@@ -43,11 +44,12 @@ void CheckAgainstEvaluateSpec(const char* rName, const char* tName, double r, do
 TEST_CASE("A glass average's nested reference is EvaluateSpec's, one integration for r and t",
           "[dielectric][avg]") {
   SECTION("entering") {
-    CheckAgainstEvaluateSpec("ggx-dielectric-albedo-r-avg", "ggx-dielectric-albedo-t-avg", 1, 3);
+    CheckAgainstEvaluateSpec("ggx-dielectric-albedo-r-avg", "ggx-dielectric-albedo-t-avg", 0.99,
+                             2.95);
   }
   SECTION("exit") {
     CheckAgainstEvaluateSpec("ggx-dielectric-albedo-r-exit-avg", "ggx-dielectric-albedo-t-exit-avg",
-                             1, 1 / 3.0);
+                             0.99, 0.34);
   }
 }
 
