@@ -90,19 +90,12 @@ inline double MuLambdaGGX(double mu, double sin, double a) {
   return den > 0 ? a2s2 / den : 0;
 }
 
-/// mu Lambda(mu) of Beckmann, sin = sqrt(1 - mu^2) given (models/beckmann_lambda.h: one exp,
-/// no erfc, for x = mu / (alpha sin) <= 6; alpha / (2 sqrt(pi)) at mu = 0).
-inline double MuLambdaBeckmann(double mu, double sin, double a) {
-  return BeckmannMuLambda(mu, sin, a);
-}
-
 /// What one evaluation needs: the view, the model, the Fresnel index.
 struct Context {
   FixedRuleModel model;
   double mu, st, a, oxs, ozs;
   double gNum;            ///< mu + mu Lambda_ggx(o)
   double gDenO;           ///< mu + mu Lambda(o) (the model's)
-  double gRatio;          ///< gNum / gDenO
   BeckmannNodeView view;  ///< the same for AddBeckmannNodes (Beckmann, Blinn-Phong)
   double blinnK;          ///< 1 / alpha^2 - 1 (Blinn-Phong)
   double tCap;            ///< t beyond which r < 1e-16 (1: none)
@@ -631,8 +624,7 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   k.oxs = k.a * k.st / L;
   k.gNum = k.mu + MuLambdaGGX(k.mu, k.st, k.a);
   k.gDenO = k.mu + (model.ndf == FixedRuleNdf::GGX ? MuLambdaGGX(k.mu, k.st, k.a)
-                                                   : MuLambdaBeckmann(k.mu, k.st, k.a));
-  k.gRatio = k.gNum / k.gDenO;
+                                                   : BeckmannMuLambda(k.mu, k.st, k.a));
   k.blinnK = 1 / (k.a * k.a) - 1;
   k.view = {k.a,
             k.mu,
@@ -641,7 +633,7 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
             k.ozs,
             k.gNum,
             k.gDenO,
-            k.gRatio,
+            k.gNum / k.gDenO,
             k.blinnK,
             model.ndf == FixedRuleNdf::BlinnPhong,
             model.separable};
