@@ -13,8 +13,10 @@
 
 using namespace kiln;
 
-TEST_CASE("The automatic search spends at most 80,000 points and 8e6 integrand evaluations",
-          "[lookup][search][budget]") {
+TEST_CASE(
+    "The automatic budget is 80,000 points and 8e6 integrand evaluations: a closed form spends the "
+    "points",
+    "[lookup][search][budget]") {
   CHECK(kLookupBudgetCalls == 80000);
   CHECK(kLookupBudgetIntegrand == 8000000);
   // A closed form (about 1 us a point) reaches the call budget; a chunk never overruns it.
