@@ -51,8 +51,8 @@ TEST_CASE("A glass average's search reports the same after another search kept i
           "[lookup][search][glass-memo]") {
   // 7 x 7 nodes, a grid no other test searches: the t-avg search first integrates its points
   // itself, then runs again after the r-avg search of the same grid prepared theirs. A budget of
-  // 120 (152 points searched, a third of the 400 it once took): the same points in both
-  // searches, each one a column the memo holds.
+  // 120 (152 points searched): the same points in both searches, each one a column the memo
+  // holds.
   const TableSpec r = test::SmallSpec(Quantity::DielectricAlbedoRAvg, "ggx-dielectric", 7);
   const TableSpec t = test::SmallSpec(Quantity::DielectricAlbedoTAvg, "ggx-dielectric", 7);
   BakeOptions texelsOnly;
