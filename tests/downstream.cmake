@@ -35,7 +35,10 @@ set(table "${KILN_SOURCE_DIR}/luts/ggx-dfg.exr")
 # kiln's own compiler launcher (-DKILN_CXX_LAUNCHER, CTest passes CMAKE_CXX_COMPILER_LAUNCHER):
 # the downstream builds compile through it too; ccache keeps the cache kiln's build uses (read
 # before XDG_CACHE_HOME moves), so a run after the first finds the runtime's objects there. The
-# claims are about what the builds do, not how long they compile.
+# work folder's name is new each run and the package's include folder is in it: ccache's base
+# dir set to the build folder makes those paths relative, the same every run (a CCACHE_DIR set
+# here also moves ccache's config file, and a base dir set there with it). The claims are about
+# what the builds do, not how long they compile.
 set(launcher "")
 if(KILN_CXX_LAUNCHER)
   set(launcher -DCMAKE_CXX_COMPILER_LAUNCHER=${KILN_CXX_LAUNCHER})
@@ -43,6 +46,9 @@ if(KILN_CXX_LAUNCHER)
                   OUTPUT_VARIABLE dir OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
   if(rc EQUAL 0 AND dir AND NOT DEFINED ENV{CCACHE_DIR})
     set(ENV{CCACHE_DIR} "${dir}")
+  endif()
+  if(NOT DEFINED ENV{CCACHE_BASEDIR})
+    set(ENV{CCACHE_BASEDIR} "${KILN_BUILD_DIR}")
   endif()
 endif()
 # A lobe that kiln_bake(MODEL_SOURCE) compiles goes into this run's own cache.

@@ -31,10 +31,13 @@ Table TinyExit(const std::string& quantity, const std::string& channel, float va
 }
 
 /// The average dielectricExitClosedForm takes (before GGX's grazing dip), by a fine midpoint
-/// rule over the slope's cumulative v in (-1, 1) mapped by v = -cos(phi).
+/// rule over the slope's cumulative v in (-1, 1) mapped by v = -cos(phi). 40,000 points: on the
+/// grid below within 7.2e-7 of the 200,000-point rule (5.5e-6 at 20,000 points, 2.7e-5 at 5,000:
+/// the kinks, the horizon's max(cos, 0) and total internal reflection, slow it), under 1 % of
+/// the 2e-4 the 12-node rule is held to; the rule's worst is 9.5e-5 against either.
 double FineAverage(double mu, double r, double eta) {
   const double alpha = r * r, thetaO = std::acos(mu);
-  const int n = 200000;
+  const int n = 40000;
   double sum = 0;
   for (int i = 0; i < n; ++i) {
     const double phi = M_PI * (i + 0.5) / n, v = -std::cos(phi);

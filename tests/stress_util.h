@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -110,6 +111,18 @@ inline std::vector<Variant> EdgeVariants(const ModelInfo& m) {
 inline ModelParams WithRoughness(const ModelInfo& m, ModelParams params, double r) {
   if (RoughnessParam(m)) params.roughness = r;
   return params;
+}
+
+/// Whether `model` holds the same bytes as one of `seen` (then appended to it when not): the same
+/// parameters after the model's own clamping, as roughness 0 and 1e-6 are for a microfacet lobe
+/// (alpha = max(r^2, 1e-12)) and for Unity's a = max(r^2, 0.002), so each of its integrals is
+/// the earlier one's, bit for bit, and a sweep computes it once. Conservative: padding or a
+/// pointer that differs only makes two models count as different.
+inline bool SeenModel(const AnyModel& model, std::vector<AnyModel>& seen) {
+  for (const AnyModel& s : seen)
+    if (std::memcmp(&s, &model, sizeof(AnyModel)) == 0) return true;
+  seen.push_back(model);
+  return false;
 }
 
 /// |a - b| relative to max(1, |a|, |b|): absolute for values below 1, relative above.

@@ -53,6 +53,9 @@ struct Plan {
   int batches = 0;
   double runtimeTableTol = 1e-4;  ///< tolerance of the 1D tables the runtime section looks up
   std::vector<int> runtime1DSize;
+  /// Coefficients per channel of the ggx-dfg fit the runtime section times (docs/fits.md): the
+  /// fit's least squares are most of a Tiny run, whose form only has to be timed.
+  int fitTerms = 144;
 };
 
 Plan MakePlan(BenchScale scale) {
@@ -105,6 +108,7 @@ Plan MakePlan(BenchScale scale) {
     p.integrateCalls = 1;
     p.batches = 3;
     p.runtime1DSize = {8};
+    p.fitTerms = 12;
   }
   return p;
 }
@@ -555,12 +559,11 @@ class Bench {
                   "lookup_table_read_2D)");
   }
 
-  /// The ggx-dfg closed form of `kiln fit --terms kBenchFitTerms` (docs/fits.md) against the
+  /// The ggx-dfg closed form of `kiln fit --terms N` (Plan::fitTerms; docs/fits.md) against the
   /// lookups: ns per evaluation, and its error against the exact integrals in the note.
   void FitEvaluation() {
-    constexpr int kBenchFitTerms = 144;
     FitOptions opt;
-    opt.terms = kBenchFitTerms;
+    opt.terms = plan_.fitTerms;
     opt.threads = threads_;
     const FitResult fit = FitTable(CatalogueTable("ggx-dfg"), opt);
     const CallTiming timing = TimeFit(fit.form, plan_.lookupCalls, plan_.batches);
