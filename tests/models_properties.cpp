@@ -141,7 +141,7 @@ TEST_CASE(
     "[models]") {
   for (const ModelInfo& m : test::BuiltInModels()) {
     double highest = 0;
-    for (double r : {0.0, 0.25, 0.5, 0.75, 1.0})
+    for (double r : {0.0, 0.25, 0.5, 0.75, 1.0}) {
       // mu = 1e-3: Ward's and Dür's normalisations exceed 1 only that close to grazing.
       for (double mu : {0.0, 1e-3, 0.02, 0.1, 0.3, 0.6, 1.0}) {
         IntegrationOptions opt;
@@ -149,8 +149,9 @@ TEST_CASE(
         IntegrationStats stats;
         RhoParts e = DirectionalAlbedo(At(m, r), mu, opt, stats);
         highest = std::max(highest, e.lin + e.quad);
-        if (!TakesRoughness(m)) break;
       }
+      if (!TakesRoughness(m)) break;  // one roughness, every mu
+    }
     INFO(m.id << " highest albedo " << highest);
     if (m.energyConserving)
       CHECK(highest <= 1 + 1e-7);
