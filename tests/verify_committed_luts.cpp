@@ -230,11 +230,11 @@ TEST_CASE("The verify shards take every committed table once, the costly ones ap
 TEST_CASE("A committed table with one texel raised past its declared bound fails the shards' check",
           "[luts][verify]") {
   // fresnel-dielectric (2D) and fresnel-conductor (3D), copied with one texel raised: by 1.3x
-  // the declared bound at the inner node of a corner cell (its probes, at 0.2 / 0.8 of the cell,
-  // see at most 0.8^d of it: the climb to the node finds it), by 10x at the middle node (a 2D
-  // table's search ranks its cells worst by their node values; a 3D table's 8 cells are its
-  // corners, and the bake-error check's worst-departing nodes take it). Each fails the shards'
-  // options (VerifyFlags: the climbs in half the cells); the unchanged copies pass them.
+  // the declared bound at the inner node of a corner cell (a cell every search takes), by 10x at
+  // the middle node (a 2D table's search ranks its cells worst by their node values; a 3D
+  // table's 8 cells are its corners, and the bake-error check's worst-departing nodes take it).
+  // Each fails the shards' options (VerifyFlags: every cell probed, the climbs in half of them);
+  // the unchanged copies pass them.
   const std::string dir = kiln::test::TempDir("verify_committed_raised");
   for (const char* name : {"fresnel-dielectric", "fresnel-conductor"}) {
     const std::vector<CommittedTable> all = CommittedTables();
