@@ -10,6 +10,7 @@
 #include "baker/tables/catalogue.h"
 #include "baker/verify/bake_error.h"
 #include "cli_util.h"
+#include "glass_albedo_reference.h"
 #include "glass_average_reference.h"
 #include "test_bake_cache.h"
 #include "test_util.h"
@@ -56,27 +57,28 @@ namespace {
 /// The shards of the check below: CTest runs each as a test of its own (in parallel with -j).
 constexpr int kTexelCheckShards = 8;
 
-/// The texels of shard `shard` of a table of n texels: the j-th for (j + rotation) %
+/// The texels of shard `shard` among `texels` (texel indices): texel i for (i + rotation) %
 /// kTexelCheckShards == shard. Each kind rotates by its own index, so that the costly texels of
 /// the small tables (the averages) spread over all shards; the shards together take every texel
-/// once.
-std::vector<size_t> ShardTexels(size_t n, int shard, size_t rotation) {
+/// once, and a texel two kinds both check lies in one shard for both when they rotate alike.
+std::vector<size_t> ShardTexels(const std::vector<size_t>& texels, int shard, size_t rotation) {
   std::vector<size_t> out;
-  for (size_t i = 0, j = rotation; i < n; ++i, ++j)
-    if (j % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
+  for (size_t i : texels)
+    if ((i + rotation) % kTexelCheckShards == static_cast<size_t>(shard)) out.push_back(i);
   return out;
 }
 
-/// The rotation ShardTexels deals kind k of `specs` by: its index, but a glass average's t kind
-/// takes its r kind's (ggx-dielectric-albedo-t-avg that of -r-avg, -t-exit-avg that of
-/// -r-exit-avg), so that one shard holds both at a texel and their nested references share one
-/// integration (test::NestedGlassAverage).
+/// The rotation ShardTexels deals kind k of `specs` by: its index, but a glass kind's t side
+/// takes its r side's (ggx-dielectric-albedo-t that of -r, -t-exit that of -r-exit, the averages
+/// alike), so that one shard holds both at a texel and their references share one integration
+/// (test::SharedGlassAlbedo, test::NestedGlassAverage).
 size_t ShardRotation(const std::vector<TableSpec>& specs, size_t k) {
-  if (!test::IsGlassAverage(specs[k].quantity)) return k;
+  if (!test::IsGlassAverage(specs[k].quantity) && !test::IsGlassAlbedo(specs[k].quantity)) return k;
   std::string partner = specs[k].name;
-  const size_t at = partner.find("-albedo-t-");
+  const std::string side = "-albedo-t";
+  const size_t at = partner.find(side);
   if (at == std::string::npos) return k;
-  partner.replace(at, 10, "-albedo-r-");
+  partner.replace(at, side.size(), "-albedo-r");
   for (size_t j = 0; j < specs.size(); ++j)
     if (specs[j].name == partner) return j;
   return k;
@@ -129,8 +131,11 @@ double TexelError(const TableSpec& spec, const Table& t, size_t i, bool nested) 
   IntegrationStats st;
   const auto outer = Describe(spec.quantity).verifyReference;
   std::vector<std::vector<double>> refs;
+  // A glass E kind's: E_R and E_T from one integration (test::GlassAlbedoReference).
   refs.push_back(outer ? outer(spec, x, kTexelRefTol, st)
-                       : EvaluateSpec(spec, x, kTexelRefTol, st));
+                 : test::IsGlassAlbedo(spec.quantity)
+                     ? test::GlassAlbedoReference(spec, x, kTexelRefTol)
+                     : EvaluateSpec(spec, x, kTexelRefTol, st));
   // A glass average's: E_avg_R and E_avg_T from one integration (test::GlassAverageReference).
   if (nested)
     refs.push_back(test::IsGlassAverage(spec.quantity)
@@ -168,8 +173,7 @@ void CheckTexelsAgainstExact(int shard) {
     if (HasOuterReference(spec)) nested = verify::BakeCheckNodes(spec, t, 0, 0);
     const std::vector<size_t> checked = CheckedTexels(spec, t);
     double worst = 0;
-    for (size_t j : ShardTexels(checked.size(), shard, ShardRotation(specs, k))) {
-      const size_t i = checked[j];
+    for (size_t i : ShardTexels(checked, shard, ShardRotation(specs, k))) {
       const bool both = std::find(nested.begin(), nested.end(), i) != nested.end();
       worst = std::max(worst, TexelError(spec, t, i, both));
     }
@@ -185,9 +189,11 @@ void CheckTexelsAgainstExact(int shard) {
 TEST_CASE("The texel check's shards take every texel once", "[bake]") {
   for (size_t n : {1, 5, 25, 60, 61, 125, 1000})
     for (size_t rotation : {0, 3, 17}) {
+      std::vector<size_t> texels(n);
+      for (size_t i = 0; i < n; ++i) texels[i] = 3 * i + i % 2;  // a sparse, uneven selection
       std::vector<int> taken(n, 0);
       for (int shard = 0; shard < kTexelCheckShards; ++shard)
-        for (size_t i : ShardTexels(n, shard, rotation)) ++taken[i];
+        for (size_t t : ShardTexels(texels, shard, rotation)) ++taken[(t - t % 3) / 3];
       for (size_t i = 0; i < n; ++i) {
         INFO("n " << n << " rotation " << rotation << " texel " << i);
         CHECK(taken[i] == 1);
@@ -212,13 +218,32 @@ TEST_CASE("A texel off by 2e-6 fails the texel check wherever it lies", "[bake]"
     for (size_t i = 0; i < spec.TexelCount(); ++i) {
       int shards = 0;
       for (int shard = 0; shard < kTexelCheckShards; ++shard)
-        for (size_t j : ShardTexels(checked.size(), shard, ShardRotation(specs, k)))
-          shards += checked[j] == i;
+        for (size_t j : ShardTexels(checked, shard, ShardRotation(specs, k))) shards += j == i;
       Table wrong = baked;
       wrong.data[i * nc + first] += i % 2 ? -2e-6f : 2e-6f;
       INFO(name << " texel " << i);
       CHECK(shards == 1);
       CHECK(TexelError(spec, wrong, i, false) > 1e-6);
+    }
+  }
+}
+
+TEST_CASE("The glass E kinds' shared reference is EvaluateSpec's, one integration for r and t",
+          "[bake]") {
+  // At texels of each glass E kind at size 5 (by a corner, the middle, by the far corner), at a
+  // tolerance the check's 1e-9 shares the code path with: the same bits as EvaluateSpec, the t
+  // side's from the r side's integration.
+  for (const TableSpec& spec : OneOfEachKind(5)) {
+    if (!test::IsGlassAlbedo(spec.quantity)) continue;
+    for (size_t i : {size_t(1), spec.TexelCount() / 2, spec.TexelCount() - 2}) {
+      double x[3];
+      NodeEvaluationPoint(spec, i, x);
+      IntegrationStats st;
+      const std::vector<double> own = EvaluateSpec(spec, x, 1e-6, st);
+      const std::vector<double> shared = test::GlassAlbedoReference(spec, x, 1e-6);
+      INFO(spec.name << " texel " << i << " mu " << x[0] << " r " << x[1] << " eta " << x[2]);
+      REQUIRE(shared.size() == own.size());
+      CHECK(shared[0] == own[0]);
     }
   }
 }

@@ -1,6 +1,7 @@
 // Every committed table in luts/ passes `kiln verify`: its declared lookup error against adaptive
-// quadrature (independent of the fixed rules the tables were baked with) at its corner cells, the
-// cells its node values predict worst, seeded random points and the point it declares as its
+// quadrature (independent of the fixed rules the tables were baked with) at its corner cells and
+// the cells its node values predict worst (each probed, a climb to the local maximum in the half
+// whose probes erred most: SearchBudget), seeded random points and the point it declares as its
 // worst, and its declared bake error at the corners and the worst-departing nodes. An average
 // (an integral over mu of E) takes, at its search's cells and random points, the reference its
 // bake-error check takes (adaptive quadrature over mu of E by its 3D table's rule): nested
@@ -10,11 +11,14 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "baker/io/exr_writer.h"
+#include "baker/io/texture_readers.h"
 #include "baker/tables/quantity.h"
 #include "cli_util.h"
 #include "committed_luts.h"
@@ -25,7 +29,7 @@ using kiln::test::LutsDir;
 namespace {
 
 /// The shards of the verify check: CTest runs each as a test of its own (in parallel with -j).
-/// 12: about 11 cost units (~5 s of one core, VerifyCost) each.
+/// 12: about 10 cost units (~4 s of one core, VerifyCost) each.
 constexpr int kVerifyShards = 12;
 
 /// ggx-fresnel-albedo-avg's outer reference integrates an E that is itself adaptive (its 3D
@@ -33,11 +37,13 @@ constexpr int kVerifyShards = 12;
 constexpr const char* kNestedAverage = "ggx-fresnel-albedo-avg";
 
 /// One committed table: its name, its first file (a table in parts: part 1, whose loading
-/// reads the others) and whether its search takes the outer reference (kAverageFlags: a kind
-/// with a verification reference of its own, QuantityInfo::verifyReference, an average).
+/// reads the others), its axes and whether its search takes the outer reference
+/// (kAverageFlags: a kind with a verification reference of its own,
+/// QuantityInfo::verifyReference, an average).
 struct CommittedTable {
   std::string name, file;
   bool outer = false;
+  int dims = 0;
 };
 
 std::vector<CommittedTable> CommittedTables() {
@@ -47,40 +53,36 @@ std::vector<CommittedTable> CommittedTables() {
     const kiln::QuantityInfo* q = kiln::FindQuantity(t["quantity"].get<std::string>());
     const std::string name = t["name"].get<std::string>();
     out.push_back({name, t["file"].get<std::string>(),
-                   q != nullptr && q->verifyReference != nullptr && name != kNestedAverage});
+                   q != nullptr && q->verifyReference != nullptr && name != kNestedAverage,
+                   static_cast<int>(t["axes"].size())});
   }
   std::sort(out.begin(), out.end(),
             [](const CommittedTable& a, const CommittedTable& b) { return a.name < b.name; });
   return out;
 }
 
-/// The cost of verifying table `name` in units of about half a second of one core, measured
-/// (`kiln verify` with the shards' options, --json "seconds", on a loaded machine scaled by its
-/// CPU time); 1 for the tables not listed (most take well under that).
+/// The cost of verifying table `name` in units of about 0.4 s of one core, measured (`kiln
+/// verify` with the shards' options, VerifyFlags, -j 1, user time on a loaded machine); 1 for the
+/// tables not listed (most take well under that).
 int VerifyCost(const std::string& name) {
   static const std::map<std::string, int> measured = {
+      {"ggx-dielectric-albedo-t-exit-avg", 9},
+      {"ggx-fresnel-albedo-avg", 9},
       {"ggx-dielectric-albedo-r-exit-avg", 8},
-      {"ggx-dielectric-albedo-t-exit-avg", 7},
-      {"ggx-dielectric-albedo-r", 6},
-      {"ggx-dielectric-albedo-t-avg", 6},
-      {"charlie-smith-albedo-avg", 5},
-      {"ggx-fresnel-albedo-avg", 5},
-      {"gotanda-ggx-albedo-avg", 4},
-      {"oren-nayar-qualitative-ir-albedo-avg", 4},
-      {"blinn-phong-albedo", 3},
-      {"blinn-phong-dfg", 3},
-      {"ggx-dielectric-albedo-r-avg", 3},
-      {"ggx-dielectric-albedo-r-exit", 3},
-      {"oren-nayar-qualitative-albedo-avg", 3},
-      {"beckmann-dfg", 2},
-      {"blinn-phong-albedo-avg", 2},
+      {"ggx-dielectric-albedo-r", 5},
+      {"ggx-dielectric-albedo-t-avg", 5},
+      {"blinn-phong-albedo", 4},
+      {"blinn-phong-dfg", 4},
+      {"ggx-dielectric-albedo-r-avg", 4},
+      {"charlie-smith-albedo-avg", 3},
+      {"ggx-dielectric-albedo-t", 3},
+      {"ggx-dielectric-albedo-t-exit", 3},
       {"charlie-albedo", 2},
-      {"charlie-albedo-avg", 2},
       {"charlie-dfg", 2},
-      {"ggx-dfg", 2},
-      {"ggx-dielectric-albedo-t", 2},
+      {"ggx-albedo", 2},
+      {"ggx-dielectric-albedo-r-exit", 2},
       {"ggx-fresnel-albedo", 2},
-      {"oren-nayar-albedo-avg", 2},
+      {"ggx-separable-albedo", 2},
   };
   auto it = measured.find(name);
   return it == measured.end() ? 1 : it->second;
@@ -114,11 +116,60 @@ std::vector<CommittedTable> VerifyShardTables(const std::vector<CommittedTable>&
 /// and the worst-departing nodes only (--bake-nodes 0; the sampled nodes: `kiln verify luts`).
 constexpr const char* kVerifyFlags = " --points 4 --cells 8 --tol 1e-6 --bake-nodes 0 -j 2";
 /// The averages' search besides: the outer reference at its cells and random points (the
-/// declared worst point keeps nested adaptive quadrature) and a budget of 220 reference
-/// evaluations, which probes all 8 cells and climbs in every one of a 1D table's (5 + 22 a
-/// cell), in 3 of a 2D table's (9 + 44): by the automatic budget of 2e7 integrand evaluations
-/// the glass averages' nested reference reached one cell and one climb.
-constexpr const char* kAverageFlags = " --outer-reference --budget 220";
+/// declared worst point keeps nested adaptive quadrature).
+constexpr const char* kAverageFlags = " --outer-reference";
+
+/// The search's reference evaluations in one cell of a table of `dims` axes: its probes (the
+/// centre, the 2^d points at 0.2 / 0.8, the 2d points at 0.05 / 0.95 on one axis) and one climb
+/// (coordinate-wise golden section from the worst probe, 22 points an axis).
+constexpr long long kProbes[4] = {0, 5, 9, 15};
+constexpr long long kClimb[4] = {0, 22, 44, 66};
+/// The search's cells (--cells) and the cells of those it climbs in: the cells whose probes
+/// erred most, worst first (the search climbs in that order). Every cell is probed; a climb
+/// starts from its cell's worst probe, so the cells whose probes erred least, where no climb
+/// rose above the bound on any committed table at 8 climbs (the same max, measured), are the
+/// ones left unclimbed.
+constexpr long long kSearchCells = 8;
+constexpr long long kClimbedCells = 4;
+/// A glass average's search budget: all 8 cells probed, climbs in 3 (9 + 44 points each): by
+/// the automatic budget of 2e7 integrand evaluations its nested reference reached one cell and
+/// one climb, and its outer reference (a mu integral of the glass E rule a point) is the
+/// costliest of the catalogue.
+constexpr long long kGlassAverageBudget = 220;
+
+/// The tables whose automatic budget (2e7 integrand evaluations: a costly reference) stops the
+/// search before kClimbedCells climbs: they keep it (an explicit budget would add points).
+bool ReferenceLimited(const std::string& name) {
+  static const char* const limited[] = {"ggx-albedo",
+                                        "ggx-separable-albedo",
+                                        "ggx-dielectric-albedo-r",
+                                        "ggx-dielectric-albedo-t",
+                                        "ggx-dielectric-albedo-r-exit",
+                                        "ggx-dielectric-albedo-t-exit",
+                                        "ggx-fresnel-albedo-avg",
+                                        "blinn-phong-albedo",
+                                        "blinn-phong-dfg"};
+  for (const char* n : limited)
+    if (name == n) return true;
+  return false;
+}
+
+/// The search budget of table `t` (--budget; 0: the automatic one): every cell probed, climbs
+/// in the kClimbedCells cells whose probes erred most (a glass average: kGlassAverageBudget).
+/// The random points and the declared worst point come on top.
+long long SearchBudget(const CommittedTable& t) {
+  if (ReferenceLimited(t.name) || t.dims < 1 || t.dims > 3) return 0;
+  if (t.outer && t.name.rfind("ggx-dielectric-albedo", 0) == 0) return kGlassAverageBudget;
+  return kSearchCells * kProbes[t.dims] + kClimbedCells * kClimb[t.dims];
+}
+
+/// The options of table `t`'s check (kVerifyFlags, kAverageFlags, SearchBudget).
+std::string VerifyFlags(const CommittedTable& t) {
+  std::string flags = kVerifyFlags;
+  if (t.outer) flags += kAverageFlags;
+  if (const long long budget = SearchBudget(t)) flags += " --budget " + std::to_string(budget);
+  return flags;
+}
 
 /// `kiln verify` on `tables` with `flags`: passes, and says so for every table.
 void VerifyTables(const std::vector<CommittedTable>& tables, const std::string& flags) {
@@ -132,15 +183,14 @@ void VerifyTables(const std::vector<CommittedTable>& tables, const std::string& 
         std::string::npos);
 }
 
-/// `kiln verify` on one shard's tables: the averages in one run (kAverageFlags), the others in
-/// another.
+/// `kiln verify` on one shard's tables: one run for the tables of the same options
+/// (VerifyFlags).
 void VerifyShard(int shard) {
   const std::vector<CommittedTable> tables = VerifyShardTables(CommittedTables(), shard);
   REQUIRE(!tables.empty());
-  std::vector<CommittedTable> averages, others;
-  for (const CommittedTable& t : tables) (t.outer ? averages : others).push_back(t);
-  VerifyTables(averages, std::string(kVerifyFlags) + kAverageFlags);
-  VerifyTables(others, kVerifyFlags);
+  std::map<std::string, std::vector<CommittedTable>> byFlags;
+  for (const CommittedTable& t : tables) byFlags[VerifyFlags(t)].push_back(t);
+  for (const auto& [flags, group] : byFlags) VerifyTables(group, flags);
 }
 
 }  // namespace
@@ -172,9 +222,51 @@ TEST_CASE("The verify shards take every committed table once, the costly ones ap
   for (const CommittedTable& t : tables) names.push_back(t.name);
   CHECK(dealt == names);  // each table once
   // Balanced: no shard costs more than the larger of the costliest table and the mean by more
-  // than a middling table (cost 2); dealt by name, round robin, they would cost 4 to 21.
+  // than a middling table (cost 2); dealt by name, round robin, they would cost 7 to 16.
   const int mean = (total + kVerifyShards - 1) / kVerifyShards;
   CHECK(costliest <= std::max(maxTable, mean) + 2);
+}
+
+TEST_CASE("A committed table with one texel raised past its declared bound fails the shards' check",
+          "[luts][verify]") {
+  // fresnel-dielectric (2D) and fresnel-conductor (3D), copied with one texel raised: by 1.3x
+  // the declared bound at the inner node of a corner cell (a cell every search takes), by 10x at
+  // the middle node (a 2D table's search ranks its cells worst by their node values; a 3D
+  // table's 8 cells are its corners, and the bake-error check's worst-departing nodes take it).
+  // Each fails the shards' options (VerifyFlags: every cell probed, the climbs in half of them);
+  // the unchanged copies pass them.
+  const std::string dir = kiln::test::TempDir("verify_committed_raised");
+  for (const char* name : {"fresnel-dielectric", "fresnel-conductor"}) {
+    const std::vector<CommittedTable> all = CommittedTables();
+    auto it = std::find_if(all.begin(), all.end(),
+                           [&](const CommittedTable& t) { return t.name == name; });
+    REQUIRE(it != all.end());
+    const CommittedTable& entry = *it;
+    const kiln::Table clean = kiln::LoadAnyTable(LutsDir() + "/" + entry.file);
+    REQUIRE(clean.lookupError.max > 0);
+    const std::string file = dir + "/" + entry.file;
+    kiln::writeTable(file, clean, false);
+    auto r = kiln::test::RunKiln("verify " + file + VerifyFlags(entry));
+    INFO(name << " unchanged\n" << r.out << r.err);
+    CHECK(r.exitCode == 0);
+    size_t stride = 1, inner = 0, middle = 0;  // node (1, 1, ...) and (n/2, n/2, ...)
+    for (const kiln::TableAxis& a : clean.axes) {
+      inner += stride;
+      middle += stride * static_cast<size_t>(a.axis.size / 2);
+      stride *= static_cast<size_t>(a.axis.size);
+    }
+    for (const auto& [node, factor] : {std::pair<size_t, double>{inner, 1.3}, {middle, 10.0}}) {
+      kiln::Table bad = clean;
+      bad.data[node * bad.channels.size()] += static_cast<float>(factor * clean.lookupError.max);
+      kiln::writeTable(file, bad, false);
+      r = kiln::test::RunKiln("verify " + file + VerifyFlags(entry));
+      INFO(name << " texel " << node << " raised by " << factor << " x its bound\n"
+                << r.out << r.err);
+      CHECK(r.exitCode == 1);
+      if (node == inner) CHECK(r.out.find("EXCEEDS BOUND") != std::string::npos);
+    }
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("Every committed table passes kiln verify, shard 1 of 12", "[luts][verify]") {
