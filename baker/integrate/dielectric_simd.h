@@ -1,10 +1,12 @@
 // Eight doubles per instruction for the glass rules' fixed walks (integrate/dielectric_albedo.cpp:
 // the E tables' eta columns and the exit side's per-point walk), where the CPU has AVX-512F
-// (checked at run time; the portable code of dielectric_albedo.cpp runs elsewhere). Every lane
-// does the portable code's IEEE operations (add, mul, div, sqrt correctly rounded; min, max and
-// the branches as selects with the same operand order; no fused multiply-add: the functions are
-// compiled for AVX-512F without FMA) in the same order, and the caller sums the lanes' terms in
-// the walk's order: the same bits on either path (tests/integrate_dielectric_simd.cpp).
+// (checked at run time; the portable code of dielectric_albedo.cpp runs elsewhere). The column
+// paths (dielectric_simd.cpp) do the portable code's IEEE operations lane by lane (add, mul, div,
+// sqrt correctly rounded; min, max and the branches as selects with the same operand order; no
+// fused multiply-add) in the same order, and the caller sums the lanes' terms in the walk's
+// order: the same bits on either path. The exit walk's ring (FastRingSums,
+// dielectric_simd_exit.cpp) fuses multiply-adds and sums in lanes: within 1e-14 relative of the
+// portable walk (tests/integrate_dielectric_simd.cpp).
 #pragma once
 
 namespace kiln {
@@ -27,28 +29,21 @@ struct RingBuffer {
   double wR[kMaxRingNodes], wb[kMaxRingNodes], cc[kMaxRingNodes], tR[kMaxRingNodes],
       tT[kMaxRingNodes];
   unsigned char valid[kMaxRingNodes];
-  /// The exit walk's nodes by panel (FastRingWeighted): the panel [a, b] and the Gauss node t
-  /// and weight gw on [0, 1] of each node.
-  double a[kMaxRingNodes], b[kMaxRingNodes], t[kMaxRingNodes], gw[kMaxRingNodes];
 };
 
 /// One ring of the exit side's per-point walk (dielectric_albedo.cpp, FastView): the view's and
-/// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m.
+/// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m; cosM > 0.
 struct FastRing {
   double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
   bool reflectOnly;
 };
 
-/// FastView::Integrand {R, T} at the J azimuths phi[0 .. J-1] of ring r (cos phi by
-/// dielectric_walk::CosHalfTurn), into outR, outT. Needs Enabled().
-void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR, double* outT);
-
-/// The same ring's weighted terms from its nodes as the walk makes them
-/// (dielectric_walk::WalkNodes, Smooth): node j at phi = a + (b - a) t^2 (3 - 2 t) with weight
-/// w = gw (b - a) 6 t (1 - t) (a = buf.a[j], b = buf.b[j], t = buf.t[j], gw = buf.gw[j]), into
-/// buf.tR[j] = w R(phi), buf.tT[j] = w T(phi); R = T = 0 where !visible (a ring with cos_m <= 0).
-/// Every operation in Smooth's order: the portable walk's products. Needs Enabled().
-void FastRingWeighted(const FastRing& r, bool visible, RingBuffer& buf);
+/// The ring's sums of FastView::Integrand's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
+/// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
+/// eight lanes of partial sums: within 1e-14 relative of the portable walk's ring, not its bits
+/// (dielectric_simd_exit.cpp). Deterministic (one fixed order). Needs Enabled().
+void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                  double* sumT);
 
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).
