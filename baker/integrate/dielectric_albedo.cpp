@@ -90,6 +90,7 @@
 #include <vector>
 
 #include "baker/integrate/dielectric_column_memo.h"
+#include "baker/integrate/dielectric_exit_breaks.h"
 #include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
@@ -276,8 +277,9 @@ int PhiBreaks(const View& v, PolarParam h, double* phis) {
   return n;
 }
 
-/// Outer panel boundaries in theta_m over [0, pi/2].
-int ThetaBreaks(const View& v, double* thetas) {
+/// Outer panel boundaries in theta_m over [0, pi/2]. fast: the refracted horizon's by
+/// dielectric_exit_breaks.h (the AVX-512F exit walk's), else by the scan and bisection below.
+int ThetaBreaks(const View& v, double* thetas, bool fast = false) {
   int n = 0;
   const double to = v.thetaO, end = Pi / 2;
   auto add = [&](double t) {
@@ -306,7 +308,8 @@ int ThetaBreaks(const View& v, double* thetas) {
   if (v.eta < 1 && v.mu < v.cCrit && !v.reflectOnly) add(std::acos(v.mu / v.cCrit));
   // The refracted horizon meets phi = 0 or pi: sign changes of mu_t along theta_m, by a scan and
   // bisection (a fixed number of steps: deterministic).
-  if (v.eta < 1 && !v.reflectOnly) {
+  if (v.eta < 1 && !v.reflectOnly && fast) dielectric_exit_breaks::RefractedHorizonBreaks(v, add);
+  if (v.eta < 1 && !v.reflectOnly && !fast) {
     for (int side = 0; side < 2; ++side) {
       auto muT = [&](double t, bool* ok) {
         double c = std::cos(side == 0 ? t - to : t + to);
@@ -554,14 +557,27 @@ const SmoothNodes& SmoothNodesOf(int n) {
   return all[n];
 }
 
+/// The AVX-512F exit walk's problem: a FastView with the breaks of dielectric_exit_breaks.h.
+struct ExitView : FastView {
+  dielectric_exit_breaks::ExitBreakConsts k;
+  int ThetaBreaks(double* thetas) const { return kiln::ThetaBreaks(*this, thetas, true); }
+  int PhiBreaks(PolarParam h, double* phis) const {
+    return dielectric_exit_breaks::PhiBreaks(*this, k, h, phis);
+  }
+};
+
 /// dielectric_walk::FixedWalk of a FastView (the exit side's per-point walk), by
-/// dielectric_simd's eight nodes at a time where it runs: a ring's panels (dielectric_walk::
-/// WalkPanels) become its nodes (SmoothNodes: two operations a node), then FastRingSums sums
-/// the ring's terms eight lanes at a time with fused multiply-adds: within 1e-14 relative of
-/// FixedWalk's result (its bits are not kept), the same panels, nodes and evaluation count.
+/// dielectric_simd's eight nodes at a time where it runs: the panels of ExitView's breaks (the
+/// portable walk's, to within rounding), a ring's panels (dielectric_walk::WalkPanels) made its
+/// nodes (SmoothNodes: two operations a node), then FastRingSums sums the ring's terms eight
+/// lanes at a time with fused multiply-adds: within 1e-14 of FixedWalk's result relative to E_R
+/// + E_T (its bits are not kept), the same node count.
 Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule,
                      long long* evals) {
   if (!dielectric_simd::Enabled()) return dielectric_walk::FixedWalk(v, rule, evals);
+  ExitView ev;
+  static_cast<FastView&>(ev) = v;
+  ev.k = dielectric_exit_breaks::ConstsOf(ev);
   struct Sum {
     const FastView& v;
     dielectric_simd::RingBuffer& b;
@@ -602,7 +618,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   };
   dielectric_simd::RingBuffer buffer;
   Sum s{v, buffer};
-  const long long count = dielectric_walk::WalkPanels(v, rule, s);
+  const long long count = dielectric_walk::WalkPanels(ev, rule, s);
   if (evals) *evals += count;
   return s.sum;
 }
