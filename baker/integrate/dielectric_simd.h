@@ -45,11 +45,6 @@ struct FastRing {
 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
                   double* sumT);
 
-/// acos(x[i]) into out[i], i < n, eight lanes at a time (x clamped to [-1, 1]): within 5e-16 of
-/// libm's acos, not its bits (the exit walk's inner breaks, dielectric_exit_breaks.h). Needs
-/// Enabled().
-void AcosLanes(const double* x, int n, double* out);
-
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).
 struct ColumnRing {

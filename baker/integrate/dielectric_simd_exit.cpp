@@ -8,7 +8,6 @@
 // c / cos_m as c (1 / cos_m) and mu_t's division by eta as a product with 1 / eta.
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_simd_ops.h"
-#include "baker/math/constants.h"
 
 namespace kiln {
 namespace dielectric_simd {
@@ -124,68 +123,38 @@ KILN_AVX512 inline double LaneSum(V x) {
   return ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
 }
 
-/// asin(x) - x over x z, z = x^2: asin's Taylor coefficients (2n)! / (4^n (n!)^2 (2n + 1)),
-/// n = 1 .. 22, in z (for |x| <= 1/2 the terms left are below 5e-17 of asin).
-constexpr double kAsinSeries[] = {0.16666666666666666,   0.075,
-                                  0.044642857142857144,  0.030381944444444444,
-                                  0.022372159090909092,  0.017352764423076924,
-                                  0.01396484375,         0.011551800896139705,
-                                  0.009761609529194078,  0.008390335809616815,
-                                  0.0073125258735988454, 0.006447210311889649,
-                                  0.005740037670841924,  0.005153309682319905,
-                                  0.004660143486915096,  0.004240907093679363,
-                                  0.003880964558837669,  0.0035692053938259347,
-                                  0.003297059503473485,  0.0030578216492580306,
-                                  0.002846178401108942,  0.00265787063820729};
-
-/// acos x, lane by lane, x clamped to [-1, 1]: for |x| <= 1/2, pi/2 - asin x; above, 2 asin
-/// sqrt((1 - |x|) / 2) (exact argument), or pi minus it for x < 0; asin by kAsinSeries. Within
-/// 5e-16 of libm's acos (4.4e-16 over 200,000 points, a scratch check).
-KILN_AVX512 inline V Acos8(V x) {
-  const V one = Set(1), half = Set(0.5);
-  x = StdMin(StdMax(x, Set(-1)), one);
-  const V ax = _mm512_abs_pd(x);
-  const M big = Gt(ax, half);
-  const V z = _mm512_mask_blend_pd(big, Mul(x, x), Mul(Sub(one, ax), half));
-  const V s = _mm512_mask_blend_pd(big, ax, Sqrt(z));
-  constexpr int n = sizeof kAsinSeries / sizeof kAsinSeries[0];
-  V p = Set(kAsinSeries[n - 1]);
-  for (int i = n - 2; i >= 0; --i) p = Fma(p, z, Set(kAsinSeries[i]));
-  const V r = Fma(Mul(s, z), p, s);  // asin(s)
-  const M neg = Lt(x, _mm512_setzero_pd());
-  const V small = Sub(Set(Pi / 2), _mm512_mask_blend_pd(neg, r, Neg(r)));
-  const V twice = Add(r, r);
-  const V large = _mm512_mask_blend_pd(neg, twice, Sub(Set(Pi), twice));
-  return _mm512_mask_blend_pd(big, small, large);
+/// The nodes o .. o + 7 of J (phi, w) into *p, *wv, the lanes that hold one in *k (zeros in the
+/// others).
+KILN_AVX512 inline void LoadNodes(const double* phi, const double* w, int J, int o, V* p, V* wv,
+                                  M* k) {
+  const int left = J - o, m = left < 0 ? 0 : left < 8 ? left : 8;
+  *k = static_cast<M>((1u << m) - 1);
+  *p = _mm512_maskz_loadu_pd(*k, phi + o);
+  *wv = _mm512_maskz_loadu_pd(*k, w + o);
 }
 
 }  // namespace
 
-KILN_AVX512 void AcosLanes(const double* x, int n, double* out) {
-  for (int j = 0; j < n; j += 8) {
-    const int m = n - j < 8 ? n - j : 8;
-    const M k = static_cast<M>((1u << m) - 1);
-    _mm512_mask_storeu_pd(out + j, k, Acos8(_mm512_maskz_loadu_pd(k, x + j)));
-  }
-}
-
 KILN_AVX512 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J,
                               double* sumR, double* sumT) {
-  constexpr int U = 2;  // vectors per step: one vector's chain (cos, 3 roots, 3 divisions) is long
   const Consts q = ConstsOf(r);
-  V accR[U], accT[U];
-  for (int u = 0; u < U; ++u) accR[u] = accT[u] = _mm512_setzero_pd();
-  for (int j = 0; j < J; j += 8 * U) {
-    V p[U], wv[U];
-    M k[U];
-#pragma GCC unroll 4
-    for (int u = 0; u < U; ++u) {
-      const int left = J - j - 8 * u, m = left < 0 ? 0 : left < 8 ? left : 8;
-      k[u] = static_cast<M>((1u << m) - 1);
-      p[u] = _mm512_maskz_loadu_pd(k[u], phi + j + 8 * u);
-      wv[u] = _mm512_maskz_loadu_pd(k[u], w + j + 8 * u);
-    }
-    AddTerms<U>(q, r.reflectOnly, p, wv, k, accR, accT);
+  // Two vectors per step (one vector's chain of cos, 3 roots and 3 divisions is long), one for
+  // the last eight nodes or fewer.
+  V accR[2], accT[2];
+  for (int u = 0; u < 2; ++u) accR[u] = accT[u] = _mm512_setzero_pd();
+  int j = 0;
+  for (; J - j > 8; j += 16) {
+    V p[2], wv[2];
+    M k[2];
+    LoadNodes(phi, w, J, j, &p[0], &wv[0], &k[0]);
+    LoadNodes(phi, w, J, j + 8, &p[1], &wv[1], &k[1]);
+    AddTerms<2>(q, r.reflectOnly, p, wv, k, accR, accT);
+  }
+  if (j < J) {
+    V p, wv;
+    M k;
+    LoadNodes(phi, w, J, j, &p, &wv, &k);
+    AddTerms<1>(q, r.reflectOnly, &p, &wv, &k, accR, accT);
   }
   *sumR = LaneSum(Add(accR[0], accR[1]));
   *sumT = LaneSum(Add(accT[0], accT[1]));
@@ -194,7 +163,6 @@ KILN_AVX512 void FastRingSums(const FastRing& r, const double* phi, const double
 #else  // no AVX-512F path on this target: Enabled() is false, this is never called
 
 void FastRingSums(const FastRing&, const double*, const double*, int, double*, double*) {}
-void AcosLanes(const double*, int, double*) {}
 
 #endif
 
