@@ -66,17 +66,19 @@
 // Eight lanes (issue #15). Where the CPU has AVX-512F (dielectric_simd.h, checked at run time)
 // both walks keep each ring's nodes and evaluate them at the ring's end: the column walk's shared
 // part eight nodes at a time, its per-eta part eight etas at a time (columns of 8 or more: the
-// bake's) or eight nodes at a time (fewer etas: the search's points), the exit walk's integrand
-// eight nodes at a time; then every eta's terms are summed in the walk's order. Same operations
-// lane by lane, no fused multiply-add: the same bits as the portable path
-// (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass tables (docs/models.md
-// section 16, "The rule's cost").
+// bake's) or eight nodes at a time (fewer etas: the search's points); then every eta's terms are
+// summed in the walk's order. Same operations lane by lane, no fused multiply-add: the same bits
+// as the portable path (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass
+// tables (docs/design/glass-tables.md, "The rule's cost").
 // The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 12 / 4 / 2 outer nodes, and the
-// azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,124 evaluations per
-// texel of the exit E pair against 8,535. Its AVX-512F path keeps a ring's panels as they come
-// (dielectric_walk::WalkPanels) and makes the nodes, their weights and the weighted terms sixteen
-// at a time (dielectric_simd::FastRingWeighted), then sums them in the walk's order: the portable
-// walk's bits (docs/design/glass-tables.md, "The exit walk's own node classes").
+// azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
+// texel of the exit E pair against 8,535. Its AVX-512F path (FastWalk: the exit side, the entering
+// side below eta 1.1 and E_R alone) is not held to the portable walk's bits but to within 1e-14
+// of it, relative to E_R + E_T: its breaks by dielectric_exit_breaks.h (one division a ring, acos
+// by a polynomial, the refracted horizon by false position), a ring's nodes from precomputed
+// smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes
+// (dielectric_simd_exit.cpp); 0.66x the CPU time of the bits-exact path it replaced
+// (docs/design/glass-tables.md, "The exit walk by its own arithmetic").
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
