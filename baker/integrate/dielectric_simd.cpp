@@ -8,6 +8,8 @@
 #include "baker/integrate/dielectric_simd.h"
 
 #include <atomic>
+#include <cstdlib>
+#include <cstring>
 
 #include "baker/integrate/dielectric_simd_ops.h"
 
@@ -23,8 +25,15 @@ bool CpuHasAvx512() {
 #endif
 }
 
+/// The environment variable KILN_NO_AVX512 set to anything but "" or "0": the portable paths
+/// from the start (to check that a bake on a CPU without AVX-512F gives the same bytes).
+bool PortableRequested() {
+  const char* text = std::getenv("KILN_NO_AVX512");
+  return text && *text && std::strcmp(text, "0") != 0;
+}
+
 std::atomic<bool>& Switch() {
-  static std::atomic<bool> on{CpuHasAvx512()};
+  static std::atomic<bool> on{CpuHasAvx512() && !PortableRequested()};
   return on;
 }
 

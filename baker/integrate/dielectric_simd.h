@@ -12,7 +12,8 @@
 namespace kiln {
 namespace dielectric_simd {
 
-/// True where the AVX-512F paths run: the CPU has AVX-512F and SetEnabled(false) was not called.
+/// True where the AVX-512F paths run: the CPU has AVX-512F, the environment variable
+/// KILN_NO_AVX512 is unset, empty or "0" at the first call, and SetEnabled(false) was not called.
 bool Enabled();
 /// Turns the AVX-512F paths off (false) or back on where the CPU has them (tests compare the
 /// two paths' bits).
