@@ -568,21 +568,22 @@ struct ExitView : FastView {
   }
 };
 
-/// dielectric_walk::FixedWalk of a FastView (the exit side's per-point walk), by
-/// dielectric_simd's eight nodes at a time where it runs: the panels of ExitView's breaks (the
-/// portable walk's, to within rounding), a ring's panels (dielectric_walk::WalkPanels) made its
-/// nodes (SmoothNodes: two operations a node), then FastRingSums sums the ring's terms eight
-/// lanes at a time with fused multiply-adds: within 1e-14 of FixedWalk's result relative to E_R
-/// + E_T (its bits are not kept), the same node count.
+/// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
+/// FastView::Integrand's terms): the panels of ExitView's breaks, a ring's panels
+/// (dielectric_walk::WalkPanels) made its nodes (SmoothNodes: two operations a node), then the
+/// ring's terms summed in eight lanes with fused multiply-adds, by dielectric_simd's FastRingSums
+/// where the AVX-512F paths run, else by PortableRingSums (std::fma, the same lanes): the same
+/// bits on either path; within 1e-14 of FixedWalk's result relative to E_R + E_T.
 Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule,
                      long long* evals) {
-  if (!dielectric_simd::Enabled()) return dielectric_walk::FixedWalk(v, rule, evals);
+  const bool simd = dielectric_simd::Enabled();
   ExitView ev;
   static_cast<FastView&>(ev) = v;
   ev.k = dielectric_exit_breaks::ConstsOf(ev);
   struct Sum {
     const FastView& v;
     dielectric_simd::RingBuffer& b;
+    bool simd;  ///< FastRingSums, else PortableRingSums
     PolarParam ring{};
     Channels<2> sum{0, 0};
     void BeginRing(const PolarParam& h) {
@@ -614,12 +615,13 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
                                         v.gDen,
                                         v.reflectOnly};
       double c0, c1;
-      dielectric_simd::FastRingSums(r, b.phi, b.w, b.J, &c0, &c1);
+      (simd ? dielectric_simd::FastRingSums : dielectric_simd::PortableRingSums)(r, b.phi, b.w, b.J,
+                                                                                 &c0, &c1);
       sum += wo * Channels<2>{c0, c1};
     }
   };
   dielectric_simd::RingBuffer buffer;
-  Sum s{v, buffer};
+  Sum s{v, buffer, simd};
   const long long count = dielectric_walk::WalkPanels(ev, rule, s);
   if (evals) *evals += count;
   return s.sum;

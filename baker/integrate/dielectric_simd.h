@@ -46,6 +46,12 @@ struct FastRing {
 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
                   double* sumT);
 
+/// FastRingSums on any CPU: the same operations in the same order, one node at a time (std::fma
+/// where FastRingSums fuses; node j in lane j mod 8 of the same partial sums): its bits
+/// (dielectric_exit_ring.cpp). The exit walk's path where Enabled() is false.
+void PortableRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                      double* sumT);
+
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).
 struct ColumnRing {
