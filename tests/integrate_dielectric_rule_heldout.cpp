@@ -5,13 +5,13 @@
 // neighbours (the kink of total internal reflection), mu = eta (eta < 1: where the near-vertical
 // microfacets leave total internal reflection), GGX alpha from 1e-6 (roughness 1e-3) to 1. Against
 // the adaptive reference (at 1000x below the bound): within kDielectricRuleBound on both channels,
-// as the bake runs it and by the portable walk (where the CPU has AVX-512F the two differ by
-// rounding: tests/integrate_dielectric_simd.cpp), on the grid's edges and worst points and a seeded
-// stratified sample of the rest (the dense grid as a [long] test). And the identities: E_R + E_T <=
-// 1 (single scattering loses energy), with equality and E_R = F(mu) in the smooth limit (alpha ->
-// 0, the rule at alpha = 1e-6 within 1e-4 of it away from mu_c), and the loss 1 - E_R - E_T grows
-// with roughness (for mu >= 0.3: at grazing views the masking layer mu ~ alpha makes the smoothest
-// lobes lose the most).
+// as the bake runs it and by the portable walk (the path of a CPU without AVX-512F, checked here
+// on any CPU; tests/integrate_dielectric_simd.cpp holds the two to the same bits), on the grid's
+// edges and worst points and a seeded stratified sample of the rest (the dense grid as a [long]
+// test). And the identities: E_R + E_T <= 1 (single scattering loses energy), with equality and
+// E_R = F(mu) in the smooth limit (alpha -> 0, the rule at alpha = 1e-6 within 1e-4 of it away from
+// mu_c), and the loss 1 - E_R - E_T grows with roughness (for mu >= 0.3: at grazing views the
+// masking layer mu ~ alpha makes the smoothest lobes lose the most).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -92,8 +92,8 @@ std::vector<test::GridIndex> HeldOutPoints(const std::vector<Row>& rows, size_t 
                               kHeldOutWorst);
 }
 
-/// The tuned rule by the portable walk (the AVX-512F paths off): the reference the AVX-512F exit
-/// walk is held to (tests/integrate_dielectric_simd.cpp), so it is held to Adaptive here too.
+/// The tuned rule by the portable walk (the AVX-512F paths off): what a CPU without AVX-512F
+/// bakes, held to Adaptive here on any CPU.
 std::array<double, 2> PortableRule(double mu, double alpha, double eta) {
   dielectric_simd::SetEnabled(false);
   const std::array<double, 2> f =
