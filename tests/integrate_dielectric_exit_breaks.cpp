@@ -3,7 +3,7 @@
 // at both sides of its switch |x| = 1/2, next to -+1 and at a seeded sample of the rest; and its
 // false-position root finder lands on the root of a monotone function and of one with a kink,
 // to 1e-15. The breaks themselves are held through the walk they give
-// (tests/integrate_dielectric_simd.cpp: the fast walk within 1e-14 of the portable one).
+// (tests/integrate_dielectric_rule_heldout.cpp: within the rule's bound of adaptive quadrature).
 #include <catch2/catch.hpp>
 
 #include <cmath>

@@ -5,13 +5,15 @@
 // pair, the exit side's E pair and E_R alone, the averages), at the corners of the domain (mu 0
 // and 1, roughness near 0 and 1, eta at both ends of both sides) and at the exit side's thresholds
 // (mu_c and its neighbours, mu = eta). The exit walk fuses multiply-adds and sums in eight lanes
-// on both paths (std::fma on the portable one), so it too must match bit for bit.
+// on both paths (std::fma on the portable one, by the CPU's FMA instructions or by libm), so it too
+// must match bit for bit, all three ways.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <tuple>
 #include <vector>
 
 #include "baker/integrate/dielectric_albedo.h"
@@ -33,6 +35,19 @@ auto BothPaths(F&& f) {
   auto off = f();
   dielectric_simd::SetEnabled(true);
   return std::make_pair(on, off);
+}
+
+/// Runs f by the AVX-512F paths, by the portable exit ring with the CPU's FMA instructions and by
+/// it with libm's std::fma, and restores the defaults; returns the three results.
+template <class F>
+auto ExitPaths(F&& f) {
+  auto [avx, fmaInstr] = BothPaths(f);
+  dielectric_simd::SetEnabled(false);
+  dielectric_simd::SetPortableFmaInstructions(false);
+  auto libm = f();
+  dielectric_simd::SetPortableFmaInstructions(true);
+  dielectric_simd::SetEnabled(true);
+  return std::make_tuple(avx, fmaInstr, libm);
 }
 
 template <class T>
@@ -136,9 +151,9 @@ TEST_CASE("the AVX-512F exit walk gives the portable exit walk's bits",
           long long evals = 0;
           return std::make_pair(FixedRuleDielectricAlbedo(mu, alpha, eta, opt, &evals), evals);
         };
-        const auto [on, off] = BothPaths(pair);
+        const auto [on, off, libm] = ExitPaths(pair);
         auto reflect = [&] { return FixedRuleDielectricReflectance(mu, alpha, eta, opt); };
-        const auto [ron, roff] = BothPaths(reflect);
+        const auto [ron, roff, rlibm] = ExitPaths(reflect);
         INFO("eta " << eta << " mu " << mu << " r " << r << ": E_R " << on.first[0] << " "
                     << off.first[0] << ", E_T " << on.first[1] << " " << off.first[1]
                     << ", E_R alone " << ron << " " << roff);
@@ -146,6 +161,8 @@ TEST_CASE("the AVX-512F exit walk gives the portable exit walk's bits",
         CHECK(SameBits(on.first[0], off.first[0]));
         CHECK(SameBits(on.first[1], off.first[1]));
         CHECK(SameBits(ron, roff));
+        CHECK(SameBits(libm.first, off.first));
+        CHECK(SameBits(rlibm, roff));
         ++compared;
       }
   }

@@ -72,13 +72,14 @@
 // tables (docs/design/glass-tables.md, "The rule's cost").
 // The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 12 / 4 / 2 outer nodes, and the
 // azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
-// texel of the exit E pair against 8,535. Its AVX-512F path (FastWalk: the exit side, the entering
-// side below eta 1.1 and E_R alone) is not held to the portable walk's bits but to within 1e-14
-// of it, relative to E_R + E_T: its breaks by dielectric_exit_breaks.h (one division a ring, acos
+// texel of the exit E pair against 8,535. The walk (FastWalk: the exit side, the entering side
+// below eta 1.1 and E_R alone): its breaks by dielectric_exit_breaks.h (one division a ring, acos
 // by a polynomial, the refracted horizon by false position), a ring's nodes from precomputed
-// smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes
-// (dielectric_simd_exit.cpp); 0.66x the CPU time of the bits-exact path it replaced
-// (docs/design/glass-tables.md, "The exit walk by its own arithmetic").
+// smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes, by
+// AVX-512F where the CPU has it (dielectric_simd_exit.cpp), else the same operations one node at
+// a time with std::fma (dielectric_exit_ring.cpp): the same bits on either path, 0.66x the CPU
+// time of FixedWalk's operations on the AVX-512F path (docs/design/glass-tables.md, "The exit
+// walk by its own arithmetic").
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
@@ -280,7 +281,7 @@ int PhiBreaks(const View& v, PolarParam h, double* phis) {
 }
 
 /// Outer panel boundaries in theta_m over [0, pi/2]. fast: the refracted horizon's by
-/// dielectric_exit_breaks.h (the AVX-512F exit walk's), else by the scan and bisection below.
+/// dielectric_exit_breaks.h (the exit walk's, both paths), else by the scan and bisection below.
 int ThetaBreaks(const View& v, double* thetas, bool fast = false) {
   int n = 0;
   const double to = v.thetaO, end = Pi / 2;
@@ -559,7 +560,7 @@ const SmoothNodes& SmoothNodesOf(int n) {
   return all[n];
 }
 
-/// The AVX-512F exit walk's problem: a FastView with the breaks of dielectric_exit_breaks.h.
+/// The exit walk's problem (both paths): a FastView with the breaks of dielectric_exit_breaks.h.
 struct ExitView : FastView {
   dielectric_exit_breaks::ExitBreakConsts k;
   int ThetaBreaks(double* thetas) const { return kiln::ThetaBreaks(*this, thetas, true); }

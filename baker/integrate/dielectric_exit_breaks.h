@@ -1,5 +1,5 @@
-// The exit walk's panel breaks in fewer operations (dielectric_albedo.cpp, FastWalk's AVX-512F
-// path): the same outer (theta_m) and inner (phi_m) boundaries as ThetaBreaks and PhiBreaks of
+// The exit walk's panel breaks in fewer operations (dielectric_albedo.cpp, FastWalk, both
+// paths): the same outer (theta_m) and inner (phi_m) boundaries as ThetaBreaks and PhiBreaks of
 // dielectric_albedo.cpp (derivations there), to within rounding, from
 //  - per view: the masking layers' sequences m = scale / 4 by the ratio (ExitBreakConsts), and
 //    for the refracted ray's thresholds mu - m eta;
@@ -8,8 +8,7 @@
 //  - the refracted horizon's outer breaks: the scan's cosines from a table of the scan's angles
 //    (cos(t -+ theta_o) by the angle-sum formula), its critical points in closed form, and its
 //    roots by the Illinois variant of false position (to 1e-15 rad) instead of 60 bisections.
-// Only the AVX-512F path takes these (the portable walk keeps its own breaks, the reference it
-// is held to: tests/integrate_dielectric_simd.cpp).
+// Scalar code, the same on the AVX-512F and the portable path of the exit walk.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -80,8 +79,7 @@ ExitBreakConsts ConstsOf(const View& v) {
 }
 
 /// PhiBreaks of dielectric_albedo.cpp: the inner boundaries in phi over [0, phiMax] at polar
-/// angle h, sorted; returns their count (>= 2), or 0 when nothing is visible. Needs
-/// dielectric_simd::Enabled().
+/// angle h, sorted; returns their count (>= 2), or 0 when nothing is visible.
 template <class View>
 int PhiBreaks(const View& v, const ExitBreakConsts& k, PolarParam h, double* phis) {
   const double den = v.st * h.sinTheta, A = v.mu * h.cosTheta;

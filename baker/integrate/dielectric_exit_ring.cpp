@@ -5,6 +5,10 @@
 // (compiled with -ffp-contract=off: no product is fused unless written so); min and max as the
 // vector path's selects; node j goes to lane j mod 8 of partial sum (j mod 16) / 8 (a ring's last
 // eight nodes or fewer to the first), and the sums are reduced as FastRingSums reduces them.
+// The body is compiled twice on x86-64: for the baseline (std::fma a call into libm) and with
+// the FMA instructions (std::fma one instruction, where the CPU has them): the same bits, the
+// second about 3x faster.
+#include <atomic>
 #include <cmath>
 
 #include "baker/integrate/dielectric_simd.h"
@@ -13,12 +17,17 @@ namespace kiln {
 namespace dielectric_simd {
 namespace {
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#define KILN_RING_FMA_CLONE 1
+#endif
+#define KILN_RING_INLINE inline __attribute__((always_inline))
+
 /// The lanes of one vector of partial sums.
 constexpr int kLanes = 8;
 
 /// CosHalfTurnFused of dielectric_simd_exit.cpp: dielectric_walk::CosHalfTurn's series (cos phi
 /// = -sin(phi - pi/2) to x^21), its Horner steps fused.
-inline double CosHalfTurnFused(double phi) {
+KILN_RING_INLINE double CosHalfTurnFused(double phi) {
   const double x = phi - 1.5707963267948966, x2 = x * x;
   double p = 1.9572941063391263e-20;
   p = std::fma(p, x2, -8.2206352466243295e-18);
@@ -39,21 +48,21 @@ struct Consts {
   double A, B, cosM, invCosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, gDen;
 };
 
-Consts ConstsOf(const FastRing& r) {
+KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
   return {r.A,    r.B,        r.cosM,   1 / r.cosM,          r.mu, 1 / r.eta,
           r.eta2, r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1, r.a2, r.gDen};
 }
 
 /// std::max(0, x) as MAXPD(x, 0): (x > 0) ? x : 0.
-inline double MaxZero(double x) { return x > 0 ? x : 0.0; }
+KILN_RING_INLINE double MaxZero(double x) { return x > 0 ? x : 0.0; }
 /// std::min(c, 1) as MINPD(1, c): (1 < c) ? 1 : c.
-inline double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
+KILN_RING_INLINE double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
 /// std::min(1, x) as MINPD(x, 1): (x < 1) ? x : 1 (1 for a NaN x, as the vector path's).
-inline double MinWithOne(double x) { return x < 1 ? x : 1.0; }
+KILN_RING_INLINE double MinWithOne(double x) { return x < 1 ? x : 1.0; }
 
 /// Weigh of dielectric_simd_exit.cpp: wb f p / (gDen p + mu a2 s_i^2), p = 2 mu_i (sqrt(mu_i^2
 /// + a2 s_i^2) + mu_i), s_i^2 = max(0, 1 - mu_i^2).
-inline double Weigh(double wb, double mi, double f, const Consts& q) {
+KILN_RING_INLINE double Weigh(double wb, double mi, double f, const Consts& q) {
   const double a2s2 = q.a2 * MaxZero(std::fma(-mi, mi, 1.0));
   const double p = (mi + mi) * (std::sqrt(std::fma(mi, mi, a2s2)) + mi);
   return (wb * f) * p / std::fma(q.gDen, p, q.mu * a2s2);
@@ -61,8 +70,8 @@ inline double Weigh(double wb, double mi, double f, const Consts& q) {
 
 /// The weighted terms {R, T} of node (phi, w), added to *accR, *accT where they count (AddTerms
 /// of dielectric_simd_exit.cpp, one lane).
-inline void AddTerms(const Consts& q, bool reflectOnly, double phi, double w, double* accR,
-                     double* accT) {
+KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, double phi, double w,
+                               double* accR, double* accT) {
   const double c = std::fma(q.B, CosHalfTurnFused(phi), q.A);
   if (!(c > 0)) return;
   const double wb = w * (c * q.invCosM), cc = MinOneOf(c);
@@ -84,10 +93,9 @@ inline void AddTerms(const Consts& q, bool reflectOnly, double phi, double w, do
   if (F < 1 && muT > 0) *accT = *accT + Weigh(wb, muT, 1 - F, q);
 }
 
-}  // namespace
-
-void PortableRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
-                      double* sumT) {
+/// PortableRingSums' body (inlined into each of its compiled forms).
+KILN_RING_INLINE void RingSums(const FastRing& r, const double* phi, const double* w, int J,
+                               double* sumR, double* sumT) {
   const Consts q = ConstsOf(r);
   // Two vectors of partial sums, as FastRingSums keeps them.
   double accR[2][kLanes] = {}, accT[2][kLanes] = {};
@@ -107,6 +115,44 @@ void PortableRingSums(const FastRing& r, const double* phi, const double* w, int
   };
   *sumR = laneSum(accR);
   *sumT = laneSum(accT);
+}
+
+void RingSumsBaseline(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                      double* sumT) {
+  RingSums(r, phi, w, J, sumR, sumT);
+}
+
+#if defined(KILN_RING_FMA_CLONE)
+__attribute__((target("fma"))) void RingSumsFma(const FastRing& r, const double* phi,
+                                                const double* w, int J, double* sumR,
+                                                double* sumT) {
+  RingSums(r, phi, w, J, sumR, sumT);
+}
+#endif
+
+bool CpuHasFma() {
+#if defined(KILN_RING_FMA_CLONE)
+  return __builtin_cpu_supports("fma");
+#else
+  return false;
+#endif
+}
+
+std::atomic<bool>& FmaSwitch() {
+  static std::atomic<bool> on{CpuHasFma()};
+  return on;
+}
+
+}  // namespace
+
+void SetPortableFmaInstructions(bool on) { FmaSwitch().store(on && CpuHasFma()); }
+
+void PortableRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                      double* sumT) {
+#if defined(KILN_RING_FMA_CLONE)
+  if (FmaSwitch().load(std::memory_order_relaxed)) return RingSumsFma(r, phi, w, J, sumR, sumT);
+#endif
+  RingSumsBaseline(r, phi, w, J, sumR, sumT);
 }
 
 }  // namespace dielectric_simd

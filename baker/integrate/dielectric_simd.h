@@ -5,8 +5,9 @@
 // sqrt correctly rounded; min, max and the branches as selects with the same operand order; no
 // fused multiply-add) in the same order, and the caller sums the lanes' terms in the walk's
 // order: the same bits on either path. The exit walk's ring (FastRingSums,
-// dielectric_simd_exit.cpp) fuses multiply-adds and sums in lanes: within 1e-14 relative of the
-// portable walk (tests/integrate_dielectric_simd.cpp).
+// dielectric_simd_exit.cpp) fuses multiply-adds and sums in lanes, and its portable form
+// (PortableRingSums) does the same with std::fma: the same bits too
+// (tests/integrate_dielectric_simd.cpp).
 #pragma once
 
 namespace kiln {
@@ -41,8 +42,8 @@ struct FastRing {
 
 /// The ring's sums of FastView::Integrand's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
 /// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
-/// eight lanes of partial sums: within 1e-14 relative of the portable walk's ring, not its bits
-/// (dielectric_simd_exit.cpp). Deterministic (one fixed order). Needs Enabled().
+/// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums
+/// gives its bits. Needs Enabled().
 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
                   double* sumT);
 
@@ -51,6 +52,9 @@ void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, 
 /// (dielectric_exit_ring.cpp). The exit walk's path where Enabled() is false.
 void PortableRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
                       double* sumT);
+/// PortableRingSums by the CPU's FMA instructions where it has them (true, the default) or by
+/// libm's std::fma (false): the same bits either way (tests compare them).
+void SetPortableFmaInstructions(bool on);
 
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).

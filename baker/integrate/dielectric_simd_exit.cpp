@@ -1,8 +1,9 @@
 // The exit walk's AVX-512F path (dielectric_simd.h, FastRingSums): one ring of the glass E pair's
 // per-point walk (dielectric_albedo.cpp, FastView::Integrand and FastWalk), eight azimuth nodes
 // per instruction, with fused multiply-add (AVX-512F has it) and the ring's sums kept in vector
-// accumulators. So its bits are not the portable walk's: it is held to it within 1e-14 relative
-// (tests/integrate_dielectric_simd.cpp), and the portable walk to adaptive quadrature. The same
+// accumulators; PortableRingSums (dielectric_exit_ring.cpp) does these operations one node at a
+// time with std::fma and the same lanes, for the same bits (tests/integrate_dielectric_simd.cpp):
+// change one, change the other. The same
 // expressions as FastView::Integrand, rearranged where a fused form is shorter: c = A + B cos phi
 // and the x^2 Horner steps of CosHalfTurn as fused steps, 1 - mu_i^2 by one fused step,
 // c / cos_m as c (1 / cos_m) and mu_t's division by eta as a product with 1 / eta.
