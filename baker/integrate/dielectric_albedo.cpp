@@ -170,8 +170,9 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
   return out;
 }
 
-/// The bake rule's integrand off the columns (eta < kDielectricTableEtaMin: the exit side, and
-/// the entering side's first 10%): Integrand's values in fewer operations. F from g^2 = c^2 +
+/// The bake rule's problem off the columns (eta < kDielectricTableEtaMin: the exit side, and
+/// the entering side's first 10%), walked by FastWalk: Integrand's values in fewer operations,
+/// which dielectric_simd's ring sums compute (FastRingSums, PortableRingSums). F from g^2 = c^2 +
 /// eta^2 - 1 (total internal reflection where g^2 <= 0) by FrDielectric's cancellation-free forms
 /// over one denominator (a = c + g, b = eta^2 c + g, X = (eta^2 + 1) c^2 - 1):
 ///     F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4);
@@ -180,32 +181,6 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
 /// with the weight into one division.
 struct FastView : View {
   double a2 = 0, eta2 = 0;
-  Channels<2> Integrand(PolarParam h, double cp) const {
-    Channels<2> out{0, 0};
-    const double c = mu * h.cosTheta + st * h.sinTheta * cp;
-    if (!(c > 0) || !(h.cosTheta > 0)) return out;
-    const double base = c / h.cosTheta, cc = std::min(c, 1.0);
-    const double g2 = cc * cc + eta2m1;
-    double F = 1, g = 0;
-    if (g2 > 0) {
-      g = std::sqrt(g2);
-      const double aa = Sqr(cc + g), bb = Sqr(eta2 * cc + g), x = (eta2 + 1) * cc * cc - 1;
-      const double a4 = aa * aa, b4 = bb * bb;
-      F = std::min(1.0, Sqr(eta2m1) * (b4 + x * x * a4) / (2 * a4 * b4));
-    }
-    auto weigh = [&](double mi, double w) {
-      const double a2s2 = a2 * std::max(0.0, (1 - mi) * (1 + mi));
-      const double p = 2 * mi * (std::sqrt(mi * mi + a2s2) + mi);
-      return base * w * p / (gDen * p + mu * a2s2);
-    };
-    const double muR = 2 * c * h.cosTheta - mu;
-    if (muR > 0 && F > 0) out[0] = weigh(muR, F);
-    if (F < 1 && !reflectOnly) {
-      const double muT = (mu - (cc - g) * h.cosTheta) / eta;
-      if (muT > 0) out[1] = weigh(muT, 1 - F);
-    }
-    return out;
-  }
 };
 
 /// The view of the fixed rule with options `opt` (its panel sequences' ratios).
@@ -570,11 +545,11 @@ struct ExitView : FastView {
 };
 
 /// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
-/// FastView::Integrand's terms): the panels of ExitView's breaks, a ring's panels
+/// FastView's terms): the panels of ExitView's breaks, a ring's panels
 /// (dielectric_walk::WalkPanels) made its nodes (SmoothNodes: two operations a node), then the
 /// ring's terms summed in eight lanes with fused multiply-adds, by dielectric_simd's FastRingSums
 /// where the AVX-512F paths run, else by PortableRingSums (std::fma, the same lanes): the same
-/// bits on either path; within 1e-14 of FixedWalk's result relative to E_R + E_T.
+/// bits on either path; within 1e-14 of the FixedWalk it replaced, relative to E_R + E_T.
 Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule,
                      long long* evals) {
   const bool simd = dielectric_simd::Enabled();

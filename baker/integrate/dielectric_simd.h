@@ -40,7 +40,7 @@ struct FastRing {
   bool reflectOnly;
 };
 
-/// The ring's sums of FastView::Integrand's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
+/// The ring's sums of FastView's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
 /// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
 /// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums
 /// gives its bits. Needs Enabled().

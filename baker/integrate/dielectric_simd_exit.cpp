@@ -1,12 +1,11 @@
 // The exit walk's AVX-512F path (dielectric_simd.h, FastRingSums): one ring of the glass E pair's
-// per-point walk (dielectric_albedo.cpp, FastView::Integrand and FastWalk), eight azimuth nodes
-// per instruction, with fused multiply-add (AVX-512F has it) and the ring's sums kept in vector
-// accumulators; PortableRingSums (dielectric_exit_ring.cpp) does these operations one node at a
+// per-point walk (dielectric_albedo.cpp, FastView and FastWalk), eight azimuth nodes per
+// instruction, with fused multiply-add (AVX-512F has it) and the ring's sums kept in vector
+// accumulators. PortableRingSums (dielectric_exit_ring.cpp) does these operations one node at a
 // time with std::fma and the same lanes, for the same bits (tests/integrate_dielectric_simd.cpp):
-// change one, change the other. The same
-// expressions as FastView::Integrand, rearranged where a fused form is shorter: c = A + B cos phi
-// and the x^2 Horner steps of CosHalfTurn as fused steps, 1 - mu_i^2 by one fused step,
-// c / cos_m as c (1 / cos_m) and mu_t's division by eta as a product with 1 / eta.
+// change one, change the other. FastView's formulas, rearranged where a fused form is shorter:
+// c = A + B cos phi and the x^2 Horner steps of CosHalfTurn as fused steps, 1 - mu_i^2 by one
+// fused step, c / cos_m as c (1 / cos_m) and mu_t's division by eta as a product with 1 / eta.
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_simd_ops.h"
 
@@ -83,7 +82,7 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
     const V g2 = Fma(cc[u], cc[u], q.eta2m1);
     const M gok = Gt(g2, zero);
     g[u] = _mm512_mask_sqrt_pd(zero, gok, g2);
-    // F by FrDielectric's cancellation-free form over one denominator (FastView::Integrand).
+    // F by FrDielectric's cancellation-free form over one denominator (FastView).
     const V a = Add(cc[u], g[u]), b = Fma(q.eta2, cc[u], g[u]);
     const V aa = Mul(a, a), bb = Mul(b, b);
     const V x = Fms(Mul(q.eta2p1, cc[u]), cc[u], one);
