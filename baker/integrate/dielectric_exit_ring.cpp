@@ -29,17 +29,18 @@ constexpr int kLanes = 8;
 /// = -sin(phi - pi/2) to x^21), its Horner steps fused.
 KILN_RING_INLINE double CosHalfTurnFused(double phi) {
   const double x = phi - 1.5707963267948966, x2 = x * x;
-  double p = 1.9572941063391263e-20;
-  p = std::fma(p, x2, -8.2206352466243295e-18);
-  p = std::fma(p, x2, 2.8114572543455206e-15);
-  p = std::fma(p, x2, -7.6471637318198164e-13);
-  p = std::fma(p, x2, 1.6059043836821613e-10);
-  p = std::fma(p, x2, -2.505210838544172e-08);
-  p = std::fma(p, x2, 2.7557319223985893e-06);
-  p = std::fma(p, x2, -0.00019841269841269841);
-  p = std::fma(p, x2, 0.0083333333333333332);
-  p = std::fma(p, x2, -0.16666666666666666);
-  p = std::fma(p, x2, 1.0);
+  const double* k = kCosHalfTurnSeries;
+  double p = k[0];
+  p = std::fma(p, x2, k[1]);
+  p = std::fma(p, x2, k[2]);
+  p = std::fma(p, x2, k[3]);
+  p = std::fma(p, x2, k[4]);
+  p = std::fma(p, x2, k[5]);
+  p = std::fma(p, x2, k[6]);
+  p = std::fma(p, x2, k[7]);
+  p = std::fma(p, x2, k[8]);
+  p = std::fma(p, x2, k[9]);
+  p = std::fma(p, x2, k[10]);
   return -x * p;
 }
 

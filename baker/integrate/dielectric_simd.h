@@ -40,6 +40,20 @@ struct FastRing {
   bool reflectOnly;
 };
 
+/// dielectric_walk::CosHalfTurn's coefficients in its Horner order (x^20's first): the exit
+/// ring's fused forms of it (FastRingSums, PortableRingSums) read them here.
+constexpr double kCosHalfTurnSeries[11] = {1.9572941063391263e-20,
+                                           -8.2206352466243295e-18,
+                                           2.8114572543455206e-15,
+                                           -7.6471637318198164e-13,
+                                           1.6059043836821613e-10,
+                                           -2.505210838544172e-08,
+                                           2.7557319223985893e-06,
+                                           -0.00019841269841269841,
+                                           0.0083333333333333332,
+                                           -0.16666666666666666,
+                                           1};
+
 /// The ring's sums of FastView's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
 /// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
 /// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums

@@ -28,17 +28,18 @@ KILN_AVX512 inline V Fnma(V a, V b, V c) { return _mm512_fnmadd_pd(a, b, c); }
 /// fused.
 KILN_AVX512 inline V CosHalfTurnFused(V phi) {
   const V x = Sub(phi, Set(1.5707963267948966)), x2 = Mul(x, x);
-  V p = Set(1.9572941063391263e-20);
-  p = Fma(p, x2, Set(-8.2206352466243295e-18));
-  p = Fma(p, x2, Set(2.8114572543455206e-15));
-  p = Fma(p, x2, Set(-7.6471637318198164e-13));
-  p = Fma(p, x2, Set(1.6059043836821613e-10));
-  p = Fma(p, x2, Set(-2.505210838544172e-08));
-  p = Fma(p, x2, Set(2.7557319223985893e-06));
-  p = Fma(p, x2, Set(-0.00019841269841269841));
-  p = Fma(p, x2, Set(0.0083333333333333332));
-  p = Fma(p, x2, Set(-0.16666666666666666));
-  p = Fma(p, x2, Set(1));
+  const double* k = kCosHalfTurnSeries;
+  V p = Set(k[0]);
+  p = Fma(p, x2, Set(k[1]));
+  p = Fma(p, x2, Set(k[2]));
+  p = Fma(p, x2, Set(k[3]));
+  p = Fma(p, x2, Set(k[4]));
+  p = Fma(p, x2, Set(k[5]));
+  p = Fma(p, x2, Set(k[6]));
+  p = Fma(p, x2, Set(k[7]));
+  p = Fma(p, x2, Set(k[8]));
+  p = Fma(p, x2, Set(k[9]));
+  p = Fma(p, x2, Set(k[10]));
   return Mul(Neg(x), p);
 }
 
