@@ -1,13 +1,19 @@
-// The glass walks' AVX-512F paths (baker/integrate/dielectric_simd.*): where the CPU has
-// AVX-512F the fixed rule's eta columns and the exit side's per-point walk run eight lanes at a
-// time; the tables must not depend on it. Each path must give the portable path's bits, at the
-// points the bake and the lookup-error search evaluate (columns of 1 .. 40 etas of the E pair and
-// of the BTDF pair, the exit side's E pair and E_R alone, the averages) and at the corners of the
-// domain (mu 0 and 1, roughness near 0 and 1, eta at both ends of both sides).
+// The glass walks' AVX-512F paths (baker/integrate/dielectric_simd*): where the CPU has AVX-512F
+// the fixed rule's eta columns and the exit side's per-point walk run eight lanes at a time; the
+// tables must not depend on it. Each path must give the portable path's bits, at the points the
+// bake and the lookup-error search evaluate (columns of 1 .. 40 etas of the E pair and of the BTDF
+// pair, the exit side's E pair and E_R alone, the averages), at the corners of the domain (mu 0
+// and 1, roughness near 0 and 1, eta at both ends of both sides) and at the exit side's thresholds
+// (mu_c and its neighbours, mu = eta). The exit walk fuses multiply-adds and sums in eight lanes
+// on both paths (std::fma on the portable one, by the CPU's FMA instructions or by libm), so it too
+// must match bit for bit, all three ways.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
+#include <tuple>
 #include <vector>
 
 #include "baker/integrate/dielectric_albedo.h"
@@ -29,6 +35,19 @@ auto BothPaths(F&& f) {
   auto off = f();
   dielectric_simd::SetEnabled(true);
   return std::make_pair(on, off);
+}
+
+/// Runs f by the AVX-512F paths, by the portable exit ring with the CPU's FMA instructions and by
+/// it with libm's std::fma, and restores the defaults; returns the three results.
+template <class F>
+auto ExitPaths(F&& f) {
+  auto [avx, fmaInstr] = BothPaths(f);
+  dielectric_simd::SetEnabled(false);
+  dielectric_simd::SetPortableFmaInstructions(false);
+  auto libm = f();
+  dielectric_simd::SetPortableFmaInstructions(true);
+  dielectric_simd::SetEnabled(true);
+  return std::make_tuple(avx, fmaInstr, libm);
 }
 
 template <class T>
@@ -93,25 +112,6 @@ TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric
           ++compared;
         }
   }
-  SECTION("the exit side's E pair and E_R alone, and the entering side below 1.1") {
-    for (double eta : {1.0 / 3, 0.5, 0.62, 0.9, 1.0 / 1.1, 1.0001, 1.05})
-      for (double mu : kMus)
-        for (double r : kRoughness) {
-          const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
-          auto pair = [&] {
-            long long evals = 0;
-            return std::make_pair(FixedRuleDielectricAlbedo(mu, alpha, eta, opt, &evals), evals);
-          };
-          const auto [on, off] = BothPaths(pair);
-          INFO("eta " << eta << " mu " << mu << " r " << r);
-          CHECK(SameBits(on.first, off.first));
-          CHECK(on.second == off.second);
-          auto reflect = [&] { return FixedRuleDielectricReflectance(mu, alpha, eta, opt); };
-          const auto [ron, roff] = BothPaths(reflect);
-          CHECK(SameBits(ron, roff));
-          ++compared;
-        }
-  }
   SECTION("the averages, both sides") {
     for (double eta : {1.0 / 3, 0.75, 1.0 / 1.1, 1.1, 1.7, 3.0})
       for (double r : {0.05, 0.5, 1.0}) {
@@ -124,4 +124,47 @@ TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric
       }
   }
   CHECK(compared > 0);
+}
+
+TEST_CASE("the AVX-512F exit walk gives the portable exit walk's bits",
+          "[dielectric][glass-rule]") {
+  dielectric_simd::SetEnabled(true);
+  if (!dielectric_simd::Enabled())
+    WARN(
+        "no AVX-512F on this CPU: both runs take the portable path (the test compares it with "
+        "itself)");
+  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  int compared = 0;
+  // The exit side's E pair and E_R alone, and the entering side below 1.1 (the same walk), at the
+  // corners and at the exit side's thresholds: mu_c and its neighbours, mu = eta.
+  for (double eta : {1.0 / 3, 0.5, 0.62, 0.9, 1.0 / 1.1, 0.999, 1.0001, 1.05}) {
+    std::vector<double> mus(std::begin(kMus), std::end(kMus));
+    if (eta < 1) {
+      const double muC = std::sqrt((1 - eta) * (1 + eta));
+      for (double d : {0.0, -1e-4, 1e-4, 0.01}) mus.push_back(std::min(1.0, muC + d));
+      mus.push_back(eta);
+    }
+    for (double mu : mus)
+      for (double r : kRoughness) {
+        const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
+        auto pair = [&] {
+          long long evals = 0;
+          return std::make_pair(FixedRuleDielectricAlbedo(mu, alpha, eta, opt, &evals), evals);
+        };
+        const auto [on, off, libm] = ExitPaths(pair);
+        auto reflect = [&] { return FixedRuleDielectricReflectance(mu, alpha, eta, opt); };
+        const auto [ron, roff, rlibm] = ExitPaths(reflect);
+        INFO("eta " << eta << " mu " << mu << " r " << r << ": E_R " << on.first[0] << " "
+                    << off.first[0] << ", E_T " << on.first[1] << " " << off.first[1]
+                    << ", E_R alone " << ron << " " << roff);
+        CHECK(on.second == off.second);
+        CHECK(SameBits(on.first[0], off.first[0]));
+        CHECK(SameBits(on.first[1], off.first[1]));
+        CHECK(SameBits(ron, roff));
+        CHECK(SameBits(libm.first, off.first));
+        CHECK(SameBits(rlibm, roff));
+        ++compared;
+      }
+  }
+  CHECK(compared == 470);
 }

@@ -66,17 +66,20 @@
 // Eight lanes (issue #15). Where the CPU has AVX-512F (dielectric_simd.h, checked at run time)
 // both walks keep each ring's nodes and evaluate them at the ring's end: the column walk's shared
 // part eight nodes at a time, its per-eta part eight etas at a time (columns of 8 or more: the
-// bake's) or eight nodes at a time (fewer etas: the search's points), the exit walk's integrand
-// eight nodes at a time; then every eta's terms are summed in the walk's order. Same operations
-// lane by lane, no fused multiply-add: the same bits as the portable path
-// (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass tables (docs/models.md
-// section 16, "The rule's cost").
+// bake's) or eight nodes at a time (fewer etas: the search's points); then every eta's terms are
+// summed in the walk's order. Same operations lane by lane, no fused multiply-add: the same bits
+// as the portable path (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass
+// tables (docs/design/glass-tables.md, "The rule's cost").
 // The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 12 / 4 / 2 outer nodes, and the
-// azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,124 evaluations per
-// texel of the exit E pair against 8,535. Its AVX-512F path keeps a ring's panels as they come
-// (dielectric_walk::WalkPanels) and makes the nodes, their weights and the weighted terms sixteen
-// at a time (dielectric_simd::FastRingWeighted), then sums them in the walk's order: the portable
-// walk's bits (docs/design/glass-tables.md, "The exit walk's own node classes").
+// azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
+// texel of the exit E pair against 8,535. The walk (FastWalk: the exit side, the entering side
+// below eta 1.1 and E_R alone): its breaks by dielectric_exit_breaks.h (one division a ring, acos
+// by a polynomial, the refracted horizon by false position), a ring's nodes from precomputed
+// smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes, by
+// AVX-512F where the CPU has it (dielectric_simd_exit.cpp), else the same operations one node at
+// a time with std::fma (dielectric_exit_ring.cpp): the same bits on either path, 0.66x the CPU
+// time of FixedWalk's operations on the AVX-512F path (docs/design/glass-tables.md, "The exit
+// walk by its own arithmetic").
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
@@ -90,6 +93,7 @@
 #include <vector>
 
 #include "baker/integrate/dielectric_column_memo.h"
+#include "baker/integrate/dielectric_exit_breaks.h"
 #include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
@@ -166,8 +170,9 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
   return out;
 }
 
-/// The bake rule's integrand off the columns (eta < kDielectricTableEtaMin: the exit side, and
-/// the entering side's first 10%): Integrand's values in fewer operations. F from g^2 = c^2 +
+/// The bake rule's problem off the columns (eta < kDielectricTableEtaMin: the exit side, and
+/// the entering side's first 10%), walked by FastWalk: Integrand's values in fewer operations,
+/// which dielectric_simd's ring sums compute (FastRingSums, PortableRingSums). F from g^2 = c^2 +
 /// eta^2 - 1 (total internal reflection where g^2 <= 0) by FrDielectric's cancellation-free forms
 /// over one denominator (a = c + g, b = eta^2 c + g, X = (eta^2 + 1) c^2 - 1):
 ///     F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4);
@@ -176,32 +181,6 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
 /// with the weight into one division.
 struct FastView : View {
   double a2 = 0, eta2 = 0;
-  Channels<2> Integrand(PolarParam h, double cp) const {
-    Channels<2> out{0, 0};
-    const double c = mu * h.cosTheta + st * h.sinTheta * cp;
-    if (!(c > 0) || !(h.cosTheta > 0)) return out;
-    const double base = c / h.cosTheta, cc = std::min(c, 1.0);
-    const double g2 = cc * cc + eta2m1;
-    double F = 1, g = 0;
-    if (g2 > 0) {
-      g = std::sqrt(g2);
-      const double aa = Sqr(cc + g), bb = Sqr(eta2 * cc + g), x = (eta2 + 1) * cc * cc - 1;
-      const double a4 = aa * aa, b4 = bb * bb;
-      F = std::min(1.0, Sqr(eta2m1) * (b4 + x * x * a4) / (2 * a4 * b4));
-    }
-    auto weigh = [&](double mi, double w) {
-      const double a2s2 = a2 * std::max(0.0, (1 - mi) * (1 + mi));
-      const double p = 2 * mi * (std::sqrt(mi * mi + a2s2) + mi);
-      return base * w * p / (gDen * p + mu * a2s2);
-    };
-    const double muR = 2 * c * h.cosTheta - mu;
-    if (muR > 0 && F > 0) out[0] = weigh(muR, F);
-    if (F < 1 && !reflectOnly) {
-      const double muT = (mu - (cc - g) * h.cosTheta) / eta;
-      if (muT > 0) out[1] = weigh(muT, 1 - F);
-    }
-    return out;
-  }
 };
 
 /// The view of the fixed rule with options `opt` (its panel sequences' ratios).
@@ -276,8 +255,9 @@ int PhiBreaks(const View& v, PolarParam h, double* phis) {
   return n;
 }
 
-/// Outer panel boundaries in theta_m over [0, pi/2].
-int ThetaBreaks(const View& v, double* thetas) {
+/// Outer panel boundaries in theta_m over [0, pi/2]. fast: the refracted horizon's by
+/// dielectric_exit_breaks.h (the exit walk's, both paths), else by the scan and bisection below.
+int ThetaBreaks(const View& v, double* thetas, bool fast = false) {
   int n = 0;
   const double to = v.thetaO, end = Pi / 2;
   auto add = [&](double t) {
@@ -306,7 +286,8 @@ int ThetaBreaks(const View& v, double* thetas) {
   if (v.eta < 1 && v.mu < v.cCrit && !v.reflectOnly) add(std::acos(v.mu / v.cCrit));
   // The refracted horizon meets phi = 0 or pi: sign changes of mu_t along theta_m, by a scan and
   // bisection (a fixed number of steps: deterministic).
-  if (v.eta < 1 && !v.reflectOnly) {
+  if (v.eta < 1 && !v.reflectOnly && fast) dielectric_exit_breaks::RefractedHorizonBreaks(v, add);
+  if (v.eta < 1 && !v.reflectOnly && !fast) {
     for (int side = 0; side < 2; ++side) {
       auto muT = [&](double t, bool* ok) {
         double c = std::cos(side == 0 ? t - to : t + to);
@@ -531,17 +512,54 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
   if (evals) *evals += count;
 }
 
-/// dielectric_walk::FixedWalk of a FastView (the exit side's per-point walk), by
-/// dielectric_simd's eight nodes at a time where it runs: a ring's panels are kept as they come
-/// (dielectric_walk::WalkPanels), then its nodes, weights and weighted terms eight at a time
-/// (FastRingWeighted: Smooth's and the integrand's operations lane by lane) and summed in the
-/// walk's order (the bits FixedWalk gives).
+/// The smoothstep's share of a panel's Gauss nodes, per node count n: node j of the n-point rule
+/// on panel [a, a + d] is at a + d s[j] with weight d ws[j] (s = t^2 (3 - 2 t), ws = gw 6 t
+/// (1 - t): dielectric_walk::Smooth with the panel's width factored out).
+struct SmoothNodes {
+  double s[kMaxCachedGaussNodes], ws[kMaxCachedGaussNodes];
+};
+
+const SmoothNodes& SmoothNodesOf(int n) {
+  static const std::vector<SmoothNodes> all = [] {
+    std::vector<SmoothNodes> r(kMaxCachedGaussNodes + 1);
+    for (int k = 1; k <= kMaxCachedGaussNodes; ++k) {
+      const GaussRule01& g = CachedGaussLegendre01(k);
+      for (int j = 0; j < k; ++j) {
+        const double t = g.x[j];
+        r[k].s[j] = t * t * (3 - 2 * t);
+        r[k].ws[j] = g.w[j] * 6 * t * (1 - t);
+      }
+    }
+    return r;
+  }();
+  return all[n];
+}
+
+/// The exit walk's problem (both paths): a FastView with the breaks of dielectric_exit_breaks.h.
+struct ExitView : FastView {
+  dielectric_exit_breaks::ExitBreakConsts k;
+  int ThetaBreaks(double* thetas) const { return kiln::ThetaBreaks(*this, thetas, true); }
+  int PhiBreaks(PolarParam h, double* phis) const {
+    return dielectric_exit_breaks::PhiBreaks(*this, k, h, phis);
+  }
+};
+
+/// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
+/// FastView's terms): the panels of ExitView's breaks, a ring's panels
+/// (dielectric_walk::WalkPanels) made its nodes (SmoothNodes: two operations a node), then the
+/// ring's terms summed in eight lanes with fused multiply-adds, by dielectric_simd's FastRingSums
+/// where the AVX-512F paths run, else by PortableRingSums (std::fma, the same lanes): the same
+/// bits on either path; within 1e-14 of the FixedWalk it replaced, relative to E_R + E_T.
 Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule,
                      long long* evals) {
-  if (!dielectric_simd::Enabled()) return dielectric_walk::FixedWalk(v, rule, evals);
+  const bool simd = dielectric_simd::Enabled();
+  ExitView ev;
+  static_cast<FastView&>(ev) = v;
+  ev.k = dielectric_exit_breaks::ConstsOf(ev);
   struct Sum {
     const FastView& v;
     dielectric_simd::RingBuffer& b;
+    bool simd;  ///< FastRingSums, else PortableRingSums
     PolarParam ring{};
     Channels<2> sum{0, 0};
     void BeginRing(const PolarParam& h) {
@@ -550,13 +568,18 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
     }
     void Panel(double a, double bEnd, const GaussRule01& g) {
       const int n = static_cast<int>(g.x.size());
-      std::fill(b.a + b.J, b.a + b.J + n, a);
-      std::fill(b.b + b.J, b.b + b.J + n, bEnd);
-      std::copy(g.x.begin(), g.x.end(), b.t + b.J);
-      std::copy(g.w.begin(), g.w.end(), b.gw + b.J);
+      const SmoothNodes& sn = SmoothNodesOf(n);
+      const double d = bEnd - a;
+      double* phi = b.phi + b.J;
+      double* w = b.w + b.J;
+      for (int j = 0; j < n; ++j) {
+        phi[j] = a + d * sn.s[j];
+        w[j] = d * sn.ws[j];
+      }
       b.J += n;
     }
     void EndRing(double wo) {
+      if (!(ring.cosTheta > 0)) return;  // no node visible: the ring adds nothing
       const dielectric_simd::FastRing r{v.mu * ring.cosTheta,
                                         v.st * ring.sinTheta,
                                         ring.cosTheta,
@@ -567,18 +590,15 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
                                         v.a2,
                                         v.gDen,
                                         v.reflectOnly};
-      dielectric_simd::FastRingWeighted(r, ring.cosTheta > 0, b);
-      double c0 = 0, c1 = 0;
-      for (int j = 0; j < b.J; ++j) {
-        c0 += b.tR[j];
-        c1 += b.tT[j];
-      }
+      double c0, c1;
+      (simd ? dielectric_simd::FastRingSums : dielectric_simd::PortableRingSums)(r, b.phi, b.w, b.J,
+                                                                                 &c0, &c1);
       sum += wo * Channels<2>{c0, c1};
     }
   };
   dielectric_simd::RingBuffer buffer;
-  Sum s{v, buffer};
-  const long long count = dielectric_walk::WalkPanels(v, rule, s);
+  Sum s{v, buffer, simd};
+  const long long count = dielectric_walk::WalkPanels(ev, rule, s);
   if (evals) *evals += count;
   return s.sum;
 }

@@ -1,16 +1,20 @@
 // Eight doubles per instruction for the glass rules' fixed walks (integrate/dielectric_albedo.cpp:
 // the E tables' eta columns and the exit side's per-point walk), where the CPU has AVX-512F
-// (checked at run time; the portable code of dielectric_albedo.cpp runs elsewhere). Every lane
-// does the portable code's IEEE operations (add, mul, div, sqrt correctly rounded; min, max and
-// the branches as selects with the same operand order; no fused multiply-add: the functions are
-// compiled for AVX-512F without FMA) in the same order, and the caller sums the lanes' terms in
-// the walk's order: the same bits on either path (tests/integrate_dielectric_simd.cpp).
+// (checked at run time; the portable code of dielectric_albedo.cpp runs elsewhere). The column
+// paths (dielectric_simd.cpp) do the portable code's IEEE operations lane by lane (add, mul, div,
+// sqrt correctly rounded; min, max and the branches as selects with the same operand order; no
+// fused multiply-add) in the same order, and the caller sums the lanes' terms in the walk's
+// order: the same bits on either path. The exit walk's ring (FastRingSums,
+// dielectric_simd_exit.cpp) fuses multiply-adds and sums in lanes, and its portable form
+// (PortableRingSums) does the same with std::fma: the same bits too
+// (tests/integrate_dielectric_simd.cpp).
 #pragma once
 
 namespace kiln {
 namespace dielectric_simd {
 
-/// True where the AVX-512F paths run: the CPU has AVX-512F and SetEnabled(false) was not called.
+/// True where the AVX-512F paths run: the CPU has AVX-512F, the environment variable
+/// KILN_NO_AVX512 is unset, empty or "0" at the first call, and SetEnabled(false) was not called.
 bool Enabled();
 /// Turns the AVX-512F paths off (false) or back on where the CPU has them (tests compare the
 /// two paths' bits).
@@ -27,28 +31,44 @@ struct RingBuffer {
   double wR[kMaxRingNodes], wb[kMaxRingNodes], cc[kMaxRingNodes], tR[kMaxRingNodes],
       tT[kMaxRingNodes];
   unsigned char valid[kMaxRingNodes];
-  /// The exit walk's nodes by panel (FastRingWeighted): the panel [a, b] and the Gauss node t
-  /// and weight gw on [0, 1] of each node.
-  double a[kMaxRingNodes], b[kMaxRingNodes], t[kMaxRingNodes], gw[kMaxRingNodes];
 };
 
 /// One ring of the exit side's per-point walk (dielectric_albedo.cpp, FastView): the view's and
-/// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m.
+/// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m; cosM > 0.
 struct FastRing {
   double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
   bool reflectOnly;
 };
 
-/// FastView::Integrand {R, T} at the J azimuths phi[0 .. J-1] of ring r (cos phi by
-/// dielectric_walk::CosHalfTurn), into outR, outT. Needs Enabled().
-void FastRingIntegrand(const FastRing& r, const double* phi, int J, double* outR, double* outT);
+/// dielectric_walk::CosHalfTurn's coefficients in its Horner order (x^20's first): the exit
+/// ring's fused forms of it (FastRingSums, PortableRingSums) read them here.
+constexpr double kCosHalfTurnSeries[11] = {1.9572941063391263e-20,
+                                           -8.2206352466243295e-18,
+                                           2.8114572543455206e-15,
+                                           -7.6471637318198164e-13,
+                                           1.6059043836821613e-10,
+                                           -2.505210838544172e-08,
+                                           2.7557319223985893e-06,
+                                           -0.00019841269841269841,
+                                           0.0083333333333333332,
+                                           -0.16666666666666666,
+                                           1};
 
-/// The same ring's weighted terms from its nodes as the walk makes them
-/// (dielectric_walk::WalkNodes, Smooth): node j at phi = a + (b - a) t^2 (3 - 2 t) with weight
-/// w = gw (b - a) 6 t (1 - t) (a = buf.a[j], b = buf.b[j], t = buf.t[j], gw = buf.gw[j]), into
-/// buf.tR[j] = w R(phi), buf.tT[j] = w T(phi); R = T = 0 where !visible (a ring with cos_m <= 0).
-/// Every operation in Smooth's order: the portable walk's products. Needs Enabled().
-void FastRingWeighted(const FastRing& r, bool visible, RingBuffer& buf);
+/// The ring's sums of FastView's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
+/// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
+/// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums
+/// gives its bits. Needs Enabled().
+void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                  double* sumT);
+
+/// FastRingSums on any CPU: the same operations in the same order, one node at a time (std::fma
+/// where FastRingSums fuses; node j in lane j mod 8 of the same partial sums): its bits
+/// (dielectric_exit_ring.cpp). The exit walk's path where Enabled() is false.
+void PortableRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
+                      double* sumT);
+/// PortableRingSums by the CPU's FMA instructions where it has them (true, the default) or by
+/// libm's std::fma (false): the same bits either way (tests compare them).
+void SetPortableFmaInstructions(bool on);
 
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).
