@@ -547,19 +547,38 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
   return FitErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, p, n);
 }
 
-double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n) {
-  if (!(norm > 0)) throw std::invalid_argument("ltc: the overlap error needs the lobe's norm");
+namespace {
+
+/// LtcOverlapError from the lobe's own n x n samples `ls` (LobeSamples(lobe, n)); norm > 0.
+double OverlapErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, double norm,
+                        const LtcMatrix& ltc, int n) {
   double overlap = 0;
   auto add = [&](Vec3 l, double f, double pl) {
     double d = ltc.Eval(l), den = pl + d;
     if (den > 0) overlap += std::min(f / norm, d) / den;
   };
-  ForEachMisSample(LobeSamples(lobe, n), lobe, ltc, n, add);
+  ForEachMisSample(ls, lobe, ltc, n, add);
   return 2 - 2 * overlap / (double(n) * n);
 }
 
-LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
-                const LtcFitOptions& opt) {
+/// The LTC of a texel's coefficients rounded to float (what a table stores).
+LtcMatrix StoredMatrix(const LtcTexel& t) {
+  const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]), float(t.minv[3])};
+  return LtcMatrix::FromInverse(stored);
+}
+
+}  // namespace
+
+double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n) {
+  if (!(norm > 0)) throw std::invalid_argument("ltc: the overlap error needs the lobe's norm");
+  return OverlapErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, n);
+}
+
+namespace {
+
+/// FitLtc from the lobe's opt.fitSamples^2 samples `all` (LobeSamples(lobe, opt.fitSamples)).
+LtcTexel FitLtcFrom(const LtcLobe& lobe, const std::vector<LobeSample>& all, double norm,
+                    const LtcFrameParams& start, bool isotropic, const LtcFitOptions& opt) {
   // The lobe's fixed points: n x n stratified samples of its proposal, with the normalised lobe
   // and its proposal density, evaluated once; the frame's Z from the same points.
   const int n = opt.fitSamples;
@@ -571,7 +590,6 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   pts.reserve(size_t(n) * n);
   Vec3 z{0, 0, 0};
   double sum = 0;
-  const std::vector<LobeSample> all = LobeSamples(lobe, n);
   for (const LobeSample& ls : all) {
     Vec3 l = ls.l;
     double pl = ls.pl, f = ls.f;
@@ -659,15 +677,20 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   if (opt.errorSamples > 0 && opt.storedError) {
     // At the float coefficients a table stores, the norm from the measure's own samples: the
     // lobe's samples are the fit's when the counts agree.
-    const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]),
-                              float(t.minv[3])};
-    LtcMatrix st = LtcMatrix::FromInverse(stored);
+    LtcMatrix st = StoredMatrix(t);
     t.l1 = opt.errorSamples == n ? FitErrorFrom(all, lobe, -1, st, 1, n)
                                  : LtcFitError(lobe, -1, st, 1, opt.errorSamples);
   } else {
     t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
   }
   return t;
+}
+
+}  // namespace
+
+LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
+                const LtcFitOptions& opt) {
+  return FitLtcFrom(lobe, LobeSamples(lobe, opt.fitSamples), norm, start, isotropic, opt);
 }
 
 double LtcFitMu(double mu) { return std::max(mu, std::cos(1.57)); }
@@ -682,15 +705,27 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
   auto lobeAt = [&](size_t ir, size_t im) {
     return LtcLobe(model, std::max(rs[ir], std::sqrt(alphaFloor)), LtcFitMu(mus[im]));
   };
+  // With the overlap form the fit measures no error of its own (measured below instead).
+  LtcFitOptions fitOpt = opt;
+  if (opt.overlapNorm) fitOpt.errorSamples = 0;
   auto fitOne = [&](size_t ir, size_t im, const LtcFrameParams& start) {
     LtcLobe lobe = lobeAt(ir, im);
-    LtcTexel t = FitLtc(lobe, -1, start, mus[im] >= 1, opt);
+    // The lobe's samples once per texel: the fit, its retries and the overlap error share them.
+    const std::vector<LobeSample> samples = LobeSamples(lobe, opt.fitSamples);
+    LtcTexel t = FitLtcFrom(lobe, samples, -1, start, mus[im] >= 1, fitOpt);
     if (opt.retryMisses && opt.power == 2 && im > 0 && t.l3 > 0.5 * t.lobeL2) {
       // A miss: again from the column's first texel and from the clamped cosine.
       for (const LtcFrameParams& s : {out[ir].chain, LtcFrameParams{}}) {
-        LtcTexel u = FitLtc(lobe, -1, s, mus[im] >= 1, opt);
+        LtcTexel u = FitLtcFrom(lobe, samples, -1, s, mus[im] >= 1, fitOpt);
         if (u.l3 < t.l3) t = u;
       }
+    }
+    if (opt.overlapNorm) {
+      const double norm = opt.overlapNorm(ir, im);
+      const int ne = opt.errorSamples;
+      t.l1 = !(norm > 0) || ne <= 0 ? -1
+             : ne == opt.fitSamples ? OverlapErrorFrom(samples, lobe, norm, StoredMatrix(t), ne)
+                                    : LtcOverlapError(lobe, norm, StoredMatrix(t), ne);
     }
     return t;
   };

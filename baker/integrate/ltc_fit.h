@@ -9,6 +9,7 @@
 // "dominant direction") rotated about y by the fit's free-frame stage, X = (Z.z, 0, -Z.x),
 // Y = (0, 1, 0), as the paper's fitting code.
 #pragma once
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -117,6 +118,12 @@ struct LtcFitOptions {
   /// from the clamped cosine, the lowest objective kept (deterministic; p = 2). Off for the
   /// catalogue's ltc-ggx, ltc-beckmann, ltc-blinn-phong (their bytes unchanged).
   bool retryMisses = false;
+  /// FitLtcGrid: when set, each texel's l1 is the overlap form of the L1 error
+  /// (LtcOverlapError, errorSamples^2 points of each proposal) at the coefficients rounded to
+  /// float, with the lobe's norm this gives for texel (ir, im); the lobe's samples are the fit's
+  /// own when the counts agree (the same bits as a separate LtcOverlapError). A norm <= 0 leaves
+  /// that texel unmeasured (l1 = -1). The fit's own error (storedError) is then not measured.
+  std::function<double(size_t ir, size_t im)> overlapNorm;
 };
 
 /// The lobe's norm integral f mu_l dl (F = 1) and average direction (unit) by the proposal's

@@ -426,12 +426,17 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   LtcFitOptions fopt;
   fopt.storedError = true;  // the declared L1 at the stored (float) coefficients: StoredFitError
   const bool overlap = DeclaresOverlapError(spec.model);
+  const size_t nr = g.rs.size();
   if (overlap) {
-    fopt.errorSamples = 0;    // measured below, with the lobe's exact norm
+    // The declared error in the overlap form, StoredFitError's value, measured by the fit with
+    // its own lobe samples and the fixed rule's norm; -1: left out (kLtcMinNorm).
+    fopt.overlapNorm = [&](size_t ir, size_t im) {
+      if (table.data[g.index[ir + nr * im] * nc + 4] < kLtcMinNorm) return -1.0;
+      return FitLobeNorm(spec, g.rs[ir], g.mus[im]);
+    };
     fopt.retryMisses = true;  // (LtcFitOptions::retryMisses)
   }
   std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads, fopt);
-  const size_t nr = g.rs.size();
   std::vector<double> l1(n, 0);
   for (size_t k = 0; k < fit.size(); ++k) {
     size_t i = g.index[k];
@@ -447,10 +452,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
             size_t i = g.index[k], ir = k % nr, im = k / nr;
             double r = g.rs[ir], mu = g.mus[im];
             // StoredFitError's value, from the fit's lobe samples; -1: left out (kLtcMinNorm)
-            if (table.data[i * nc + 4] < kLtcMinNorm)
-              l1[i] = -1;
-            else
-              l1[i] = overlap ? StoredFitError(spec, r, mu, &table.data[i * nc]) : fit[k].l1;
+            l1[i] = table.data[i * nc + 4] < kLtcMinNorm ? -1 : fit[k].l1;
             if (OnPolygonSubset(ir, im, nr, g.mus.size()))
               polygon[i] = PolygonError(spec, r, mu, &table.data[i * nc], polygons, &evals[i]);
           }
