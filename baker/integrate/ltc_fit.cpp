@@ -46,6 +46,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
@@ -505,6 +507,21 @@ std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
   return ls;
 }
 
+/// The n x n stratified clamped-cosine directions CosineSample((i + 0.5) / n, (j + 0.5) / n) at
+/// index i + n j: the same for every texel, computed once per n (thread-safe).
+const std::vector<Vec3>& CosineGrid(int n) {
+  static std::mutex mutex;
+  static std::map<int, std::vector<Vec3>> grids;  // (a map's elements stay where they are)
+  std::lock_guard<std::mutex> lock(mutex);
+  std::vector<Vec3>& g = grids[n];
+  if (g.empty() && n > 0) {
+    g.reserve(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) g.push_back(CosineSample((i + 0.5) / n, (j + 0.5) / n));
+  }
+  return g;
+}
+
 /// The MIS points of an error integral between a lobe and an LTC, in one order: the lobe's
 /// samples `ls` (LobeSamples), then the LTC's n x n stratified samples; add(l, f, pl) with the
 /// lobe's value f (cosine included) and its proposal's density pl at each.
@@ -512,9 +529,11 @@ template <class Add>
 void ForEachMisSample(const std::vector<LobeSample>& ls, const LtcLobe& lobe, const LtcMatrix& ltc,
                       int n, Add& add) {
   for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
+  const std::vector<Vec3>& cosines = CosineGrid(n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
+      // LtcMatrix::Sample((i + 0.5) / n, (j + 0.5) / n), its cosine direction from the grid.
+      Vec3 l = Normalize(Mul(ltc.m, cosines[size_t(i) + size_t(n) * j]));
       double f, pl;
       lobe.EvalPdf(l, &f, &pl);
       add(l, f, pl);
@@ -604,12 +623,8 @@ LtcTexel FitLtcFrom(const LtcLobe& lobe, const std::vector<LobeSample>& all, dou
   z = isotropic || !(Length(z) > 0) ? Vec3{0, 0, 1} : Normalize(z);
   // The LTC's own fixed points: m x m stratified clamped-cosine directions, mapped by M.
   const int m = opt.ltcSamples;
-  std::vector<Vec3> cosPts;
-  cosPts.reserve(size_t(m) * m);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) cosPts.push_back(CosineSample((i + 0.5) / m, (j + 0.5) / m));
   std::vector<double> cx, cy, cz;
-  for (Vec3 c : cosPts) {
+  for (Vec3 c : CosineGrid(m)) {
     cx.push_back(c.x);
     cy.push_back(c.y);
     cz.push_back(c.z);
