@@ -135,6 +135,8 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 4;
           alpha_ = m.alpha;
         }
+        if constexpr (std::is_same_v<T, CharlieSmithSheen>)
+          sheenLambdaO_ = CharlieSheenLambda(CosTheta(wo_), m.alpha);
         // Unity's GGX lobes: the D of Unity's a, no narrower than where the epsilons of its
         // formulas flatten the peak (fixed_rule_microfacet.h: alpha_q).
         if constexpr (std::is_same_v<T, UnityBRDF1>) {
@@ -178,7 +180,11 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
 
 double LtcLobe::Eval(Vec3 wi) const {
   if (wi.z <= 0) return 0;
-  double f = Evaluate(model_, wo_, wi) * wi.z;
+  // charlie-smith with its view's Lambda kept: Evaluate's bits.
+  const double value =
+      sheenLambdaO_ >= 0 ? std::get<CharlieSmithSheen>(model_).FGivenLambdaO(wo_, wi, sheenLambdaO_)
+                         : Evaluate(model_, wo_, wi);
+  double f = value * wi.z;
   return std::isfinite(f) ? f : 0;
 }
 

@@ -67,6 +67,8 @@ class LtcLobe {
   /// Kind 5: the weights of the cosine, the lobe about m and its twin about -m (sum 1).
   double wCos_ = 1, wMirror_ = 0, wTwin_ = 0;
   double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
+  /// charlie-smith: its Lambda(mu_o), kept for Eval (CharlieSmithSheen::FGivenLambdaO); else -1.
+  double sheenLambdaO_ = -1;
   double DCos(Vec3 wm) const;
 };
 
