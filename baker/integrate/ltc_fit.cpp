@@ -180,6 +180,11 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
 
 double LtcLobe::Eval(Vec3 wi) const {
   if (wi.z <= 0) return 0;
+  if (muLambdaO_ >= 0) {  // the fused form's f, with mu_o Lambda(o) kept: Evaluate's bits
+    double f, pdf;
+    EvalPdf(wi, &f, &pdf);
+    return f;
+  }
   // charlie-smith with its view's Lambda kept: Evaluate's bits.
   const double value =
       sheenLambdaO_ >= 0 ? std::get<CharlieSmithSheen>(model_).FGivenLambdaO(wo_, wi, sheenLambdaO_)

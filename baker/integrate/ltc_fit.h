@@ -38,7 +38,9 @@ class LtcLobe {
   /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
   /// Throws std::invalid_argument for an unknown model.
   LtcLobe(const std::string& model, double r, double mu);
-  /// f(o, l) mu_l at F = 1 (cosine included); 0 below the horizon.
+  /// f(o, l) mu_l at F = 1 (cosine included); 0 below the horizon. The registry model's
+  /// Evaluate times mu_l, bit for bit (a height-correlated microfacet lobe takes EvalPdf's f,
+  /// charlie-smith its view's Lambda kept).
   double Eval(Vec3 wi) const;
   /// The proposal's direction at (u1, u2) in [0, 1)^2 (may be below the horizon).
   Vec3 Sample(double u1, double u2) const;
