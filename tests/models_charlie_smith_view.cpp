@@ -52,3 +52,15 @@ TEST_CASE("A charlie-smith LTC lobe evaluates f mu_l as the registry's model doe
       }
     }
 }
+
+TEST_CASE("charlie-smith's 1 / V with its view's Lambda given has the bits of InverseV",
+          "[sheen]") {
+  // (ClampSwitches scans mu_l with Lambda(mu_o) computed once.)
+  for (double alpha : {0.045 * 0.045, 0.09, 0.6, 1.0})
+    for (double muO : {1e-4, 0.02, 0.5, 0.9, 1.0}) {
+      const CharlieSmithSheen m{alpha};
+      const double lambdaO = CharlieSheenLambda(muO, alpha);
+      for (double muL = 1e-12; muL <= 1; muL *= 1.7)
+        REQUIRE(test::Bits(m.InverseVGiven(muO, muL, lambdaO)) == test::Bits(m.InverseV(muO, muL)));
+    }
+}

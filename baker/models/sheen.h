@@ -128,7 +128,8 @@ struct CharlieSmithSheen {
   std::vector<double> ClampSwitches(double mu_o) const {
     std::vector<double> roots;
     if (!(mu_o > 0)) return roots;
-    auto g = [&](double lnMu) { return InverseV(mu_o, std::exp(lnMu)) - 1; };
+    const double lambdaO = CharlieSheenLambda(mu_o, alpha);  // (InverseV's, once)
+    auto g = [&](double lnMu) { return InverseVGiven(mu_o, std::exp(lnMu), lambdaO) - 1; };
     const double lo = std::log(1e-12), step = std::log(10.0) / 4;
     const int n = static_cast<int>(std::ceil(-lo / step));
     double a = lo, ga = g(a);
