@@ -1,5 +1,5 @@
-// The LTC fit's objective sums two points at a time (integrate/ltc_objective.h): the same bits
-// as one point at a time, so the fit, and the committed ltc tables, do not change.
+// The LTC fit's objective sums in lanes (integrate/ltc_objective.h): the same bits as one point at
+// a time in the sums' one order (four partial sums), on every path.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -93,4 +93,32 @@ TEST_CASE(
   const double withOriginRef = LtcCrossSumScalar(m, x.data(), y.data(), z.data(), w.data(), 4);
   CHECK(std::isnan(withOrigin));
   CHECK(std::isnan(withOriginRef));
+}
+
+TEST_CASE("The LTC objective's sums add point k into partial sum k % 4, then (s0 + s1) + (s2 + s3)",
+          "[integrate][ltc][ltc-objective]") {
+  // Four independent partial sums instead of one chain of additions through all points: the
+  // fit's objective is add-latency bound otherwise. Each point's term is a one-point sum.
+  int differsFromChain = 0;
+  for (size_t n : {size_t(5), size_t(64), size_t(256)}) {
+    const Points p = RandomPoints(n, 91 + n);
+    for (const LtcMatrix& m : Matrices()) {
+      double part[4] = {0, 0, 0, 0}, chain = 0;
+      double ownPart[4] = {0, 0, 0, 0};
+      for (size_t k = 0; k < n; ++k) {
+        const double term = LtcCrossSumScalar(m, &p.x[k], &p.y[k], &p.z[k], &p.w[k], 1);
+        part[k % 4] += term;
+        chain += term;
+        ownPart[k % 4] += LtcOwnSumScalar(m, &p.x[k], &p.y[k], &p.z[k], 1, 2);
+      }
+      const double expect = (part[0] + part[1]) + (part[2] + part[3]);
+      const double ownExpect = (ownPart[0] + ownPart[1]) + (ownPart[2] + ownPart[3]);
+      const double cross = LtcCrossSum(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
+      REQUIRE(test::Bits(cross) == test::Bits(expect));
+      REQUIRE(test::Bits(LtcOwnSum(m, p.x.data(), p.y.data(), p.z.data(), n, 2)) ==
+              test::Bits(ownExpect));
+      differsFromChain += test::Bits(expect) != test::Bits(chain);
+    }
+  }
+  CHECK(differsFromChain > 0);  // the data tell the two orders apart
 }

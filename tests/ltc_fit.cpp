@@ -172,11 +172,14 @@ TEST_CASE("kiln's own LTC layout is the dfg's axes, on request", "[ltc]") {
 
 TEST_CASE("A lobe's fused EvalPdf gives the same bits as Eval and Pdf", "[ltc]") {
   // The fit and its error measure read f and the proposal's density through EvalPdf (one half
-  // vector, one D); the separate calls are the definition.
+  // vector, one D); the separate calls are the definition, and Eval the registry's model.
   for (const char* model : {"ggx", "beckmann", "blinn-phong"})
     for (double r : {0.05, 0.4, 1.0})
       for (double mu : {1.0, 0.5, 0.05}) {
         LtcLobe lobe(model, r, mu);
+        ModelParams mp;
+        mp.roughness = r;
+        const AnyModel m = MakeModel(model, mp);
         for (int j = 0; j < 9; ++j)
           for (int i = 0; i < 9; ++i) {
             Vec3 wi = lobe.Sample((i + 0.5) / 9, (j + 0.5) / 9);
@@ -185,6 +188,8 @@ TEST_CASE("A lobe's fused EvalPdf gives the same bits as Eval and Pdf", "[ltc]")
             INFO(model << " r " << r << " mu " << mu << " wi " << wi.x << " " << wi.y << " "
                        << wi.z);
             CHECK(f == lobe.Eval(wi));
+            const double def = wi.z > 0 ? Evaluate(m, lobe.wo(), wi) * wi.z : 0;
+            CHECK(f == (std::isfinite(def) ? def : 0));
             CHECK(p == lobe.Pdf(wi));
           }
       }

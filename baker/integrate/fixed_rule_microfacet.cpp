@@ -605,6 +605,28 @@ std::array<double, 2> Rule2(Context& k, const MicrofacetRuleOptions& opt, long l
 }
 
 /// The context of a view and model (eta = 0: the DFG).
+/// Blinn-Phong's end of the NDF for alpha a (blinnK = 1 / a^2 - 1): the u = tan^2 t' where
+/// log r = 2 log(1 + u) - (1 / a^2 + 1) log(1 + a^2 u) falls to -37, by 60 bisections in log u
+/// (INFINITY when it stays above). It depends on a alone: the last a's value is kept per thread
+/// (a table's texels of one roughness come one after another), the same bits.
+double BlinnPhongEnd(double a, double blinnK) {
+  thread_local double lastA = -1, lastEnd = INFINITY;
+  if (a == lastA) return lastEnd;
+  auto logR = [&](double u) { return 2 * std::log1p(u) - (blinnK + 2) * std::log1p(a * a * u); };
+  double uMax = INFINITY;
+  if (logR(1e300) < -37) {
+    double lo = std::log(1e-3), hi = std::log(1e300);
+    for (int i = 0; i < 60; ++i) {
+      const double m = (lo + hi) / 2;
+      (logR(std::exp(m)) < -37 ? hi : lo) = m;
+    }
+    uMax = std::exp(hi);
+  }
+  lastA = a;
+  lastEnd = uMax;
+  return uMax;
+}
+
 Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   Context k;
   k.model = model;
@@ -642,19 +664,7 @@ Context MakeContext(const FixedRuleModel& model, double mu, double alpha) {
   // when it stays above), then t = tan(t'/2).
   double uMax = INFINITY;
   if (model.ndf == FixedRuleNdf::Beckmann) uMax = 45;
-  if (model.ndf == FixedRuleNdf::BlinnPhong) {
-    auto logR = [&](double u) {
-      return 2 * std::log1p(u) - (k.blinnK + 2) * std::log1p(k.a * k.a * u);
-    };
-    if (logR(1e300) < -37) {
-      double lo = std::log(1e-3), hi = std::log(1e300);
-      for (int i = 0; i < 60; ++i) {
-        const double m = (lo + hi) / 2;
-        (logR(std::exp(m)) < -37 ? hi : lo) = m;
-      }
-      uMax = std::exp(hi);
-    }
-  }
+  if (model.ndf == FixedRuleNdf::BlinnPhong) uMax = BlinnPhongEnd(k.a, k.blinnK);
   // (no cap beyond u = 1e12: t is within 1e-6 of 1 there, where the tail grading takes over)
   k.tCap = uMax < 1e12 ? std::tan(std::atan(std::sqrt(uMax)) / 2) : 1;
   return k;

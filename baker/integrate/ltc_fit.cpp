@@ -46,6 +46,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <type_traits>
@@ -133,6 +135,8 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
           kind_ = 4;
           alpha_ = m.alpha;
         }
+        if constexpr (std::is_same_v<T, CharlieSmithSheen>)
+          sheenLambdaO_ = CharlieSheenLambda(CosTheta(wo_), m.alpha);
         // Unity's GGX lobes: the D of Unity's a, no narrower than where the epsilons of its
         // formulas flatten the peak (fixed_rule_microfacet.h: alpha_q).
         if constexpr (std::is_same_v<T, UnityBRDF1>) {
@@ -176,7 +180,16 @@ LtcLobe::LtcLobe(const std::string& model, double r, double mu) {
 
 double LtcLobe::Eval(Vec3 wi) const {
   if (wi.z <= 0) return 0;
-  double f = Evaluate(model_, wo_, wi) * wi.z;
+  if (muLambdaO_ >= 0) {  // the fused form's f, with mu_o Lambda(o) kept: Evaluate's bits
+    double f, pdf;
+    EvalPdf(wi, &f, &pdf);
+    return f;
+  }
+  // charlie-smith with its view's Lambda kept: Evaluate's bits.
+  const double value =
+      sheenLambdaO_ >= 0 ? std::get<CharlieSmithSheen>(model_).FGivenLambdaO(wo_, wi, sheenLambdaO_)
+                         : Evaluate(model_, wo_, wi);
+  double f = value * wi.z;
   return std::isfinite(f) ? f : 0;
 }
 
@@ -505,6 +518,21 @@ std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
   return ls;
 }
 
+/// The n x n stratified clamped-cosine directions CosineSample((i + 0.5) / n, (j + 0.5) / n) at
+/// index i + n j: the same for every texel, computed once per n (thread-safe).
+const std::vector<Vec3>& CosineGrid(int n) {
+  static std::mutex mutex;
+  static std::map<int, std::vector<Vec3>> grids;  // (a map's elements stay where they are)
+  std::lock_guard<std::mutex> lock(mutex);
+  std::vector<Vec3>& g = grids[n];
+  if (g.empty() && n > 0) {
+    g.reserve(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) g.push_back(CosineSample((i + 0.5) / n, (j + 0.5) / n));
+  }
+  return g;
+}
+
 /// The MIS points of an error integral between a lobe and an LTC, in one order: the lobe's
 /// samples `ls` (LobeSamples), then the LTC's n x n stratified samples; add(l, f, pl) with the
 /// lobe's value f (cosine included) and its proposal's density pl at each.
@@ -512,9 +540,11 @@ template <class Add>
 void ForEachMisSample(const std::vector<LobeSample>& ls, const LtcLobe& lobe, const LtcMatrix& ltc,
                       int n, Add& add) {
   for (const LobeSample& s : ls) add(s.l, s.f, s.pl);
+  const std::vector<Vec3>& cosines = CosineGrid(n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      Vec3 l = ltc.Sample((i + 0.5) / n, (j + 0.5) / n);
+      // LtcMatrix::Sample((i + 0.5) / n, (j + 0.5) / n), its cosine direction from the grid.
+      Vec3 l = Normalize(Mul(ltc.m, cosines[size_t(i) + size_t(n) * j]));
       double f, pl;
       lobe.EvalPdf(l, &f, &pl);
       add(l, f, pl);
@@ -547,19 +577,38 @@ double LtcFitError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int p
   return FitErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, p, n);
 }
 
-double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n) {
-  if (!(norm > 0)) throw std::invalid_argument("ltc: the overlap error needs the lobe's norm");
+namespace {
+
+/// LtcOverlapError from the lobe's own n x n samples `ls` (LobeSamples(lobe, n)); norm > 0.
+double OverlapErrorFrom(const std::vector<LobeSample>& ls, const LtcLobe& lobe, double norm,
+                        const LtcMatrix& ltc, int n) {
   double overlap = 0;
   auto add = [&](Vec3 l, double f, double pl) {
     double d = ltc.Eval(l), den = pl + d;
     if (den > 0) overlap += std::min(f / norm, d) / den;
   };
-  ForEachMisSample(LobeSamples(lobe, n), lobe, ltc, n, add);
+  ForEachMisSample(ls, lobe, ltc, n, add);
   return 2 - 2 * overlap / (double(n) * n);
 }
 
-LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
-                const LtcFitOptions& opt) {
+/// The LTC of a texel's coefficients rounded to float (what a table stores).
+LtcMatrix StoredMatrix(const LtcTexel& t) {
+  const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]), float(t.minv[3])};
+  return LtcMatrix::FromInverse(stored);
+}
+
+}  // namespace
+
+double LtcOverlapError(const LtcLobe& lobe, double norm, const LtcMatrix& ltc, int n) {
+  if (!(norm > 0)) throw std::invalid_argument("ltc: the overlap error needs the lobe's norm");
+  return OverlapErrorFrom(LobeSamples(lobe, n), lobe, norm, ltc, n);
+}
+
+namespace {
+
+/// FitLtc from the lobe's opt.fitSamples^2 samples `all` (LobeSamples(lobe, opt.fitSamples)).
+LtcTexel FitLtcFrom(const LtcLobe& lobe, const std::vector<LobeSample>& all, double norm,
+                    const LtcFrameParams& start, bool isotropic, const LtcFitOptions& opt) {
   // The lobe's fixed points: n x n stratified samples of its proposal, with the normalised lobe
   // and its proposal density, evaluated once; the frame's Z from the same points.
   const int n = opt.fitSamples;
@@ -571,7 +620,6 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   pts.reserve(size_t(n) * n);
   Vec3 z{0, 0, 0};
   double sum = 0;
-  const std::vector<LobeSample> all = LobeSamples(lobe, n);
   for (const LobeSample& ls : all) {
     Vec3 l = ls.l;
     double pl = ls.pl, f = ls.f;
@@ -586,12 +634,8 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   z = isotropic || !(Length(z) > 0) ? Vec3{0, 0, 1} : Normalize(z);
   // The LTC's own fixed points: m x m stratified clamped-cosine directions, mapped by M.
   const int m = opt.ltcSamples;
-  std::vector<Vec3> cosPts;
-  cosPts.reserve(size_t(m) * m);
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) cosPts.push_back(CosineSample((i + 0.5) / m, (j + 0.5) / m));
   std::vector<double> cx, cy, cz;
-  for (Vec3 c : cosPts) {
+  for (Vec3 c : CosineGrid(m)) {
     cx.push_back(c.x);
     cy.push_back(c.y);
     cz.push_back(c.z);
@@ -659,15 +703,20 @@ LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, b
   if (opt.errorSamples > 0 && opt.storedError) {
     // At the float coefficients a table stores, the norm from the measure's own samples: the
     // lobe's samples are the fit's when the counts agree.
-    const double stored[4] = {float(t.minv[0]), float(t.minv[1]), float(t.minv[2]),
-                              float(t.minv[3])};
-    LtcMatrix st = LtcMatrix::FromInverse(stored);
+    LtcMatrix st = StoredMatrix(t);
     t.l1 = opt.errorSamples == n ? FitErrorFrom(all, lobe, -1, st, 1, n)
                                  : LtcFitError(lobe, -1, st, 1, opt.errorSamples);
   } else {
     t.l1 = opt.errorSamples > 0 ? LtcFitError(lobe, norm, mt, 1, opt.errorSamples) : -1;
   }
   return t;
+}
+
+}  // namespace
+
+LtcTexel FitLtc(const LtcLobe& lobe, double norm, const LtcFrameParams& start, bool isotropic,
+                const LtcFitOptions& opt) {
+  return FitLtcFrom(lobe, LobeSamples(lobe, opt.fitSamples), norm, start, isotropic, opt);
 }
 
 double LtcFitMu(double mu) { return std::max(mu, std::cos(1.57)); }
@@ -682,15 +731,27 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
   auto lobeAt = [&](size_t ir, size_t im) {
     return LtcLobe(model, std::max(rs[ir], std::sqrt(alphaFloor)), LtcFitMu(mus[im]));
   };
+  // With the overlap form the fit measures no error of its own (measured below instead).
+  LtcFitOptions fitOpt = opt;
+  if (opt.overlapNorm) fitOpt.errorSamples = 0;
   auto fitOne = [&](size_t ir, size_t im, const LtcFrameParams& start) {
     LtcLobe lobe = lobeAt(ir, im);
-    LtcTexel t = FitLtc(lobe, -1, start, mus[im] >= 1, opt);
+    // The lobe's samples once per texel: the fit, its retries and the overlap error share them.
+    const std::vector<LobeSample> samples = LobeSamples(lobe, opt.fitSamples);
+    LtcTexel t = FitLtcFrom(lobe, samples, -1, start, mus[im] >= 1, fitOpt);
     if (opt.retryMisses && opt.power == 2 && im > 0 && t.l3 > 0.5 * t.lobeL2) {
       // A miss: again from the column's first texel and from the clamped cosine.
       for (const LtcFrameParams& s : {out[ir].chain, LtcFrameParams{}}) {
-        LtcTexel u = FitLtc(lobe, -1, s, mus[im] >= 1, opt);
+        LtcTexel u = FitLtcFrom(lobe, samples, -1, s, mus[im] >= 1, fitOpt);
         if (u.l3 < t.l3) t = u;
       }
+    }
+    if (opt.overlapNorm) {
+      const double norm = opt.overlapNorm(ir, im);
+      const int ne = opt.errorSamples;
+      t.l1 = !(norm > 0) || ne <= 0 ? -1
+             : ne == opt.fitSamples ? OverlapErrorFrom(samples, lobe, norm, StoredMatrix(t), ne)
+                                    : LtcOverlapError(lobe, norm, StoredMatrix(t), ne);
     }
     return t;
   };

@@ -9,6 +9,7 @@
 // "dominant direction") rotated about y by the fit's free-frame stage, X = (Z.z, 0, -Z.x),
 // Y = (0, 1, 0), as the paper's fitting code.
 #pragma once
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -37,7 +38,9 @@ class LtcLobe {
   /// `model` a registry id, r its roughness (perceptual; alpha = r^2), mu = cos(theta_o) > 0.
   /// Throws std::invalid_argument for an unknown model.
   LtcLobe(const std::string& model, double r, double mu);
-  /// f(o, l) mu_l at F = 1 (cosine included); 0 below the horizon.
+  /// f(o, l) mu_l at F = 1 (cosine included); 0 below the horizon. The registry model's
+  /// Evaluate times mu_l, bit for bit (a height-correlated microfacet lobe takes EvalPdf's f,
+  /// charlie-smith its view's Lambda kept).
   double Eval(Vec3 wi) const;
   /// The proposal's direction at (u1, u2) in [0, 1)^2 (may be below the horizon).
   Vec3 Sample(double u1, double u2) const;
@@ -66,6 +69,8 @@ class LtcLobe {
   /// Kind 5: the weights of the cosine, the lobe about m and its twin about -m (sum 1).
   double wCos_ = 1, wMirror_ = 0, wTwin_ = 0;
   double muLambdaO_ = -1;  ///< mu_o + mu_o Lambda(o), height-correlated microfacet lobes; else -1
+  /// charlie-smith: its Lambda(mu_o), kept for Eval (CharlieSmithSheen::FGivenLambdaO); else -1.
+  double sheenLambdaO_ = -1;
   double DCos(Vec3 wm) const;
 };
 
@@ -117,6 +122,12 @@ struct LtcFitOptions {
   /// from the clamped cosine, the lowest objective kept (deterministic; p = 2). Off for the
   /// catalogue's ltc-ggx, ltc-beckmann, ltc-blinn-phong (their bytes unchanged).
   bool retryMisses = false;
+  /// FitLtcGrid: when set, each texel's l1 is the overlap form of the L1 error
+  /// (LtcOverlapError, errorSamples^2 points of each proposal) at the coefficients rounded to
+  /// float, with the lobe's norm this gives for texel (ir, im); the lobe's samples are the fit's
+  /// own when the counts agree (the same bits as a separate LtcOverlapError). A norm <= 0 leaves
+  /// that texel unmeasured (l1 = -1). The fit's own error (storedError) is then not measured.
+  std::function<double(size_t ir, size_t im)> overlapNorm;
 };
 
 /// The lobe's norm integral f mu_l dl (F = 1) and average direction (unit) by the proposal's

@@ -14,30 +14,48 @@
 
 namespace kiln {
 
+namespace {
+
+/// Point k's term of the cross sum, pc[k] D(l_k) (the sparse M^-1 in `inv`, scale = |det M^-1| /
+/// pi).
+inline double CrossTerm(const double* inv, double scale, const double* px, const double* py,
+                        const double* pz, const double* pc, size_t k) {
+  const double qx = inv[0] * px[k] + inv[2] * pz[k], qy = inv[4] * py[k];
+  const double qz = inv[6] * px[k] + inv[8] * pz[k];
+  const double len2 = qx * qx + qy * qy + qz * qz;
+  return pc[k] * (std::max(qz, 0.0) * scale / (len2 * len2));
+}
+
+/// Point j's term of the own sum, d_j (p = 2) or d_j^2 (the sparse M in `m`, k = |det M^-1| /
+/// pi).
+inline double OwnTerm(const double* m, double k, const double* cx, const double* cy,
+                      const double* cz, int p, size_t j) {
+  const double ax = m[0] * cx[j] + m[2] * cz[j], ay = m[4] * cy[j];
+  const double az = m[6] * cx[j] + m[8] * cz[j];
+  const double len2 = ax * ax + ay * ay + az * az, d = cz[j] * k * len2 * std::sqrt(len2);
+  return p == 2 ? d : d * d;
+}
+
+/// The four partial sums' total, in the one order every path uses.
+inline double Total(const double* acc) { return (acc[0] + acc[1]) + (acc[2] + acc[3]); }
+
+}  // namespace
+
 double LtcCrossSumScalar(const LtcMatrix& ltc, const double* px, const double* py, const double* pz,
                          const double* pc, size_t n) {
-  const double i0 = ltc.inv[0], i2 = ltc.inv[2], i4 = ltc.inv[4], i6 = ltc.inv[6], i8 = ltc.inv[8];
   const double scale = kLtcInvPi * ltc.detInv;
-  double cross = 0;
-  for (size_t k = 0; k < n; ++k) {
-    double qx = i0 * px[k] + i2 * pz[k], qy = i4 * py[k], qz = i6 * px[k] + i8 * pz[k];
-    double len2 = qx * qx + qy * qy + qz * qz;
-    cross += pc[k] * (std::max(qz, 0.0) * scale / (len2 * len2));
-  }
-  return cross;
+  double acc[kLtcSumLanes] = {0, 0, 0, 0};
+  for (size_t k = 0; k < n; ++k)
+    acc[k % kLtcSumLanes] += CrossTerm(ltc.inv, scale, px, py, pz, pc, k);
+  return Total(acc);
 }
 
 double LtcOwnSumScalar(const LtcMatrix& ltc, const double* cx, const double* cy, const double* cz,
                        size_t n, int p) {
-  const double m0 = ltc.m[0], m2 = ltc.m[2], m4 = ltc.m[4], m6 = ltc.m[6], m8 = ltc.m[8];
   const double k = kLtcInvPi * ltc.detInv;
-  double own = 0;
-  for (size_t j = 0; j < n; ++j) {
-    double ax = m0 * cx[j] + m2 * cz[j], ay = m4 * cy[j], az = m6 * cx[j] + m8 * cz[j];
-    double len2 = ax * ax + ay * ay + az * az, d = cz[j] * k * len2 * std::sqrt(len2);
-    own += p == 2 ? d : d * d;
-  }
-  return own;
+  double acc[kLtcSumLanes] = {0, 0, 0, 0};
+  for (size_t j = 0; j < n; ++j) acc[j % kLtcSumLanes] += OwnTerm(ltc.m, k, cx, cy, cz, p, j);
+  return Total(acc);
 }
 
 #if defined(__x86_64__)
@@ -50,15 +68,15 @@ bool LtcHasAvx2() {
   return avx2;
 }
 
-/// LtcCrossSum's first points four at a time, their terms added to `cross` in point order;
-/// returns how many it took (a multiple of 4).
+/// LtcCrossSum's first points four at a time, point k's term added to acc[k % 4]; returns how
+/// many it took (a multiple of 4).
 KILN_AVX2 size_t LtcCrossSumAvx2(const LtcMatrix& ltc, const double* px, const double* py,
-                                 const double* pz, const double* pc, size_t n, double& cross) {
+                                 const double* pz, const double* pc, size_t n, double* acc) {
   const __m256d i0 = _mm256_set1_pd(ltc.inv[0]), i2 = _mm256_set1_pd(ltc.inv[2]);
   const __m256d i4 = _mm256_set1_pd(ltc.inv[4]), i6 = _mm256_set1_pd(ltc.inv[6]);
   const __m256d i8 = _mm256_set1_pd(ltc.inv[8]);
   const __m256d scale = _mm256_set1_pd(kLtcInvPi * ltc.detInv), zero = _mm256_setzero_pd();
-  alignas(32) double term[4];
+  __m256d sum = _mm256_loadu_pd(acc);
   size_t k = 0;
   for (; k + 4 <= n; k += 4) {
     const __m256d x = _mm256_loadu_pd(px + k), y = _mm256_loadu_pd(py + k);
@@ -70,20 +88,20 @@ KILN_AVX2 size_t LtcCrossSumAvx2(const LtcMatrix& ltc, const double* px, const d
                                        _mm256_mul_pd(qz, qz));
     const __m256d d =
         _mm256_div_pd(_mm256_mul_pd(_mm256_max_pd(zero, qz), scale), _mm256_mul_pd(len2, len2));
-    _mm256_store_pd(term, _mm256_mul_pd(_mm256_loadu_pd(pc + k), d));
-    for (double t : term) cross += t;
+    sum = _mm256_add_pd(sum, _mm256_mul_pd(_mm256_loadu_pd(pc + k), d));
   }
+  _mm256_storeu_pd(acc, sum);
   return k;
 }
 
 /// LtcOwnSum's first points four at a time (as LtcCrossSumAvx2).
 KILN_AVX2 size_t LtcOwnSumAvx2(const LtcMatrix& ltc, const double* cx, const double* cy,
-                               const double* cz, size_t n, int p, double& own) {
+                               const double* cz, size_t n, int p, double* acc) {
   const __m256d m0 = _mm256_set1_pd(ltc.m[0]), m2 = _mm256_set1_pd(ltc.m[2]);
   const __m256d m4 = _mm256_set1_pd(ltc.m[4]), m6 = _mm256_set1_pd(ltc.m[6]);
   const __m256d m8 = _mm256_set1_pd(ltc.m[8]);
   const __m256d kk = _mm256_set1_pd(kLtcInvPi * ltc.detInv);
-  alignas(32) double term[4];
+  __m256d sum = _mm256_loadu_pd(acc);
   size_t j = 0;
   for (; j + 4 <= n; j += 4) {
     const __m256d x = _mm256_loadu_pd(cx + j), y = _mm256_loadu_pd(cy + j);
@@ -95,9 +113,9 @@ KILN_AVX2 size_t LtcOwnSumAvx2(const LtcMatrix& ltc, const double* cx, const dou
                                        _mm256_mul_pd(az, az));
     __m256d d = _mm256_mul_pd(_mm256_mul_pd(_mm256_mul_pd(z, kk), len2), _mm256_sqrt_pd(len2));
     if (p != 2) d = _mm256_mul_pd(d, d);
-    _mm256_store_pd(term, d);
-    for (double t : term) own += t;
+    sum = _mm256_add_pd(sum, d);
   }
+  _mm256_storeu_pd(acc, sum);
   return j;
 }
 
@@ -139,46 +157,53 @@ inline TransformedLanes Transform(const SparseLanes& a, __m128d x, __m128d y, __
 double LtcCrossSum(const LtcMatrix& ltc, const double* px, const double* py, const double* pz,
                    const double* pc, size_t n) {
   const SparseLanes inv(ltc.inv);
-  const __m128d scale = _mm_set1_pd(kLtcInvPi * ltc.detInv), zero = _mm_setzero_pd();
-  double cross = 0, term[2];
+  const double s = kLtcInvPi * ltc.detInv;
+  const __m128d scale = _mm_set1_pd(s), zero = _mm_setzero_pd();
+  alignas(16) double acc[kLtcSumLanes] = {0, 0, 0, 0};
   size_t k = 0;
 #if defined(__x86_64__)
-  if (LtcHasAvx2()) k = LtcCrossSumAvx2(ltc, px, py, pz, pc, n, cross);
+  if (LtcHasAvx2()) k = LtcCrossSumAvx2(ltc, px, py, pz, pc, n, acc);
 #endif
+  // Two points at a time into acc[0..1] or acc[2..3] (k even: k % 4 is 0 or 2).
+  __m128d sum[2] = {_mm_load_pd(acc), _mm_load_pd(acc + 2)};
   for (; k + 2 <= n; k += 2) {
     const __m128d x = _mm_loadu_pd(px + k), y = _mm_loadu_pd(py + k), z = _mm_loadu_pd(pz + k);
     const TransformedLanes q = Transform(inv, x, y, z);
     // max(zero, q.z) is (0 > q.z ? 0 : q.z), std::max(q.z, 0.0)'s choice (NaN and -0 kept).
     const __m128d d =
         _mm_div_pd(_mm_mul_pd(_mm_max_pd(zero, q.z), scale), _mm_mul_pd(q.len2, q.len2));
-    _mm_storeu_pd(term, _mm_mul_pd(_mm_loadu_pd(pc + k), d));
-    cross += term[0];
-    cross += term[1];
+    __m128d& acc2 = sum[(k % kLtcSumLanes) / 2];
+    acc2 = _mm_add_pd(acc2, _mm_mul_pd(_mm_loadu_pd(pc + k), d));
   }
-  if (k < n) cross += LtcCrossSumScalar(ltc, px + k, py + k, pz + k, pc + k, n - k);
-  return cross;
+  _mm_store_pd(acc, sum[0]);
+  _mm_store_pd(acc + 2, sum[1]);
+  for (; k < n; ++k) acc[k % kLtcSumLanes] += CrossTerm(ltc.inv, s, px, py, pz, pc, k);
+  return Total(acc);
 }
 
 double LtcOwnSum(const LtcMatrix& ltc, const double* cx, const double* cy, const double* cz,
                  size_t n, int p) {
   const SparseLanes m(ltc.m);
-  const __m128d kk = _mm_set1_pd(kLtcInvPi * ltc.detInv);
-  double own = 0, term[2];
+  const double k1 = kLtcInvPi * ltc.detInv;
+  const __m128d kk = _mm_set1_pd(k1);
+  alignas(16) double acc[kLtcSumLanes] = {0, 0, 0, 0};
   size_t j = 0;
 #if defined(__x86_64__)
-  if (LtcHasAvx2()) j = LtcOwnSumAvx2(ltc, cx, cy, cz, n, p, own);
+  if (LtcHasAvx2()) j = LtcOwnSumAvx2(ltc, cx, cy, cz, n, p, acc);
 #endif
+  __m128d sum[2] = {_mm_load_pd(acc), _mm_load_pd(acc + 2)};
   for (; j + 2 <= n; j += 2) {
     const __m128d x = _mm_loadu_pd(cx + j), y = _mm_loadu_pd(cy + j), z = _mm_loadu_pd(cz + j);
     const __m128d len2 = Transform(m, x, y, z).len2;
     __m128d d = _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(z, kk), len2), _mm_sqrt_pd(len2));
     if (p != 2) d = _mm_mul_pd(d, d);
-    _mm_storeu_pd(term, d);
-    own += term[0];
-    own += term[1];
+    __m128d& acc2 = sum[(j % kLtcSumLanes) / 2];
+    acc2 = _mm_add_pd(acc2, d);
   }
-  if (j < n) own += LtcOwnSumScalar(ltc, cx + j, cy + j, cz + j, n - j, p);
-  return own;
+  _mm_store_pd(acc, sum[0]);
+  _mm_store_pd(acc + 2, sum[1]);
+  for (; j < n; ++j) acc[j % kLtcSumLanes] += OwnTerm(ltc.m, k1, cx, cy, cz, p, j);
+  return Total(acc);
 }
 
 #else

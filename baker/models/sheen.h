@@ -115,8 +115,12 @@ struct CharlieSmithSheen {
 
   /// 4 mu_o mu_l (1 + Lambda(mu_o) + Lambda(mu_l)) = 1 / V before the clamp.
   double InverseV(double mu_o, double mu_l) const {
-    return 4 * mu_o * mu_l *
-           (1 + CharlieSheenLambda(mu_o, alpha) + CharlieSheenLambda(mu_l, alpha));
+    return InverseVGiven(mu_o, mu_l, CharlieSheenLambda(mu_o, alpha));
+  }
+  /// InverseV with lambdaO = Lambda(mu_o) = CharlieSheenLambda(mu_o, alpha) given (a caller with
+  /// one view keeps it): InverseV's bits.
+  double InverseVGiven(double mu_o, double mu_l, double lambdaO) const {
+    return 4 * mu_o * mu_l * (1 + lambdaO + CharlieSheenLambda(mu_l, alpha));
   }
   /// Where the clamp V <= 1 switches (4 mu_o mu_l (1 + Lambda(mu_o) + Lambda(mu_l)) crosses 1),
   /// a condition on mu_l alone: a scan of ln(mu_l) from 1e-12 to 1 in quarter decades, each sign
@@ -124,7 +128,8 @@ struct CharlieSmithSheen {
   std::vector<double> ClampSwitches(double mu_o) const {
     std::vector<double> roots;
     if (!(mu_o > 0)) return roots;
-    auto g = [&](double lnMu) { return InverseV(mu_o, std::exp(lnMu)) - 1; };
+    const double lambdaO = CharlieSheenLambda(mu_o, alpha);  // (InverseV's, once)
+    auto g = [&](double lnMu) { return InverseVGiven(mu_o, std::exp(lnMu), lambdaO) - 1; };
     const double lo = std::log(1e-12), step = std::log(10.0) / 4;
     const int n = static_cast<int>(std::ceil(-lo / step));
     double a = lo, ga = g(a);
@@ -156,15 +161,22 @@ struct CharlieSmithSheen {
     k.push_back(0.5);
     return k;
   }
-  RhoParts Parts(Vec3 wo, Vec3 wi) const {
+  RhoParts Parts(Vec3 wo, Vec3 wi) const { return {FWith(wo, wi, nullptr), 0}; }
+  double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
+  /// f with lambdaO = CharlieSheenLambda(CosTheta(wo), alpha) given (a caller with one view
+  /// keeps it): f's bits.
+  double FGivenLambdaO(Vec3 wo, Vec3 wi, double lambdaO) const { return FWith(wo, wi, &lambdaO); }
+
+ private:
+  /// f, Lambda(mu_o) from *lambdaO when given.
+  double FWith(Vec3 wo, Vec3 wi, const double* lambdaO) const {
     double mu_o = CosTheta(wo), mu_l = CosTheta(wi);
-    if (mu_o < 0 || mu_l < 0 || mu_o + mu_l <= 0) return {};
+    if (mu_o < 0 || mu_l < 0 || mu_o + mu_l <= 0) return 0;
     bool ok;
     double s2 = HalfSin2(wo, wi, &ok);
-    double inv = InverseV(mu_o, mu_l);
-    return {ok ? CharlieD(alpha, s2) * (inv > 1 ? 1 / inv : 1.0) : 0, 0};
+    double inv = lambdaO ? InverseVGiven(mu_o, mu_l, *lambdaO) : InverseV(mu_o, mu_l);
+    return ok ? CharlieD(alpha, s2) * (inv > 1 ? 1 / inv : 1.0) : 0;
   }
-  double f(Vec3 wo, Vec3 wi) const { return Parts(wo, wi).lin; }
 };
 
 /// Ashikhmin & Premoze 2007 velvet: f = D_velvet(h) / (4 (mu_l + mu_o - mu_l mu_o)), F = 1

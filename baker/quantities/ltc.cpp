@@ -211,11 +211,23 @@ std::vector<double> RuleAtMuR(const TableSpec& spec, const double* xm, Integrati
   return Channels(spec.model, ab[0], ab[1]);
 }
 
+/// The point (mu, r) FixedRule took its rule at and the norm channel the rule gave there.
+struct RuleNorm {
+  double mu = -1, r = -1, norm = 0;
+};
+
+/// Where FixedRule records its point and norm (nullptr: nowhere): BakeTable's channel pass sets
+/// it around each texel's evaluation, so that the fit's overlap error takes the norm of a texel
+/// whose fit lobe is at the same point from there instead of integrating it again (FitNorm).
+thread_local RuleNorm* tRuleNorm = nullptr;
+
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   double r, mu;
   LtcPoint(spec, x, &r, &mu);
   const double xm[2] = {mu, r};
-  return RuleAtMuR(spec, xm, stats, false);
+  std::vector<double> v = RuleAtMuR(spec, xm, stats, false);
+  if (tRuleNorm) *tRuleNorm = {mu, r, v[4]};
+  return v;
 }
 
 /// The lookup-error search's form of FixedRule (MicrofacetSearchRuleAt: the bake's rule for GGX,
@@ -335,6 +347,14 @@ double FitLobeNorm(const TableSpec& spec, double r, double mu) {
   return RuleAtMuR(spec, xm, st, false)[4];
 }
 
+/// FitLobeNorm(spec, r, mu), taken from `channel` (what the channel pass's fixed rule gave) when
+/// that rule ran at the same point: the same function of the same arguments, the same bits.
+double FitNorm(const TableSpec& spec, double r, double mu, const RuleNorm& channel) {
+  if (channel.mu == LtcFitMu(mu) && channel.r == std::max(r, std::sqrt(kLtcAlphaFloor)))
+    return channel.norm;
+  return FitLobeNorm(spec, r, mu);
+}
+
 /// The declared fit error of stored coefficients: L1 over the sphere of the normalised lobe
 /// minus the LTC, by the paper's MIS (errorSamples^2 of each): in the overlap form with the
 /// exact norm (DeclaresOverlapError), else self-normalised.
@@ -405,7 +425,9 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   const size_t nc = spec.channels.size();
   if (spec.axes.size() != 2) throw std::invalid_argument("table '" + spec.name + "': needs 2 axes");
   tbb::task_arena arena(threads);
-  // The norm and Fresnel channels: exact integrals, each texel alone.
+  // The norm and Fresnel channels: exact integrals, each texel alone (where the fixed rule
+  // took them, its point and norm kept for the overlap error: FitNorm).
+  std::vector<RuleNorm> ruleNorms(n);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
                       [&](const tbb::blocked_range<size_t>& rg) {
@@ -413,7 +435,9 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
                           double x[3];
                           NodeEvaluationPoint(spec, i, x);
                           IntegrationStats st;
+                          tRuleNorm = &ruleNorms[i];
                           std::vector<double> v = EvaluateSpec(spec, x, st);
+                          tRuleNorm = nullptr;
                           table.data[i * nc + 4] = static_cast<float>(v[4]);
                           table.data[i * nc + 5] = static_cast<float>(v[5]);
                           evals[i] = st.evals;
@@ -426,12 +450,18 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
   LtcFitOptions fopt;
   fopt.storedError = true;  // the declared L1 at the stored (float) coefficients: StoredFitError
   const bool overlap = DeclaresOverlapError(spec.model);
+  const size_t nr = g.rs.size();
   if (overlap) {
-    fopt.errorSamples = 0;    // measured below, with the lobe's exact norm
+    // The declared error in the overlap form, StoredFitError's value, measured by the fit with
+    // its own lobe samples and the fixed rule's norm; -1: left out (kLtcMinNorm).
+    fopt.overlapNorm = [&](size_t ir, size_t im) {
+      const size_t i = g.index[ir + nr * im];
+      if (table.data[i * nc + 4] < kLtcMinNorm) return -1.0;
+      return FitNorm(spec, g.rs[ir], g.mus[im], ruleNorms[i]);
+    };
     fopt.retryMisses = true;  // (LtcFitOptions::retryMisses)
   }
   std::vector<LtcTexel> fit = FitLtcGrid(spec.model, g.rs, g.mus, kLtcAlphaFloor, threads, fopt);
-  const size_t nr = g.rs.size();
   std::vector<double> l1(n, 0);
   for (size_t k = 0; k < fit.size(); ++k) {
     size_t i = g.index[k];
@@ -447,10 +477,7 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
             size_t i = g.index[k], ir = k % nr, im = k / nr;
             double r = g.rs[ir], mu = g.mus[im];
             // StoredFitError's value, from the fit's lobe samples; -1: left out (kLtcMinNorm)
-            if (table.data[i * nc + 4] < kLtcMinNorm)
-              l1[i] = -1;
-            else
-              l1[i] = overlap ? StoredFitError(spec, r, mu, &table.data[i * nc]) : fit[k].l1;
+            l1[i] = table.data[i * nc + 4] < kLtcMinNorm ? -1 : fit[k].l1;
             if (OnPolygonSubset(ir, im, nr, g.mus.size()))
               polygon[i] = PolygonError(spec, r, mu, &table.data[i * nc], polygons, &evals[i]);
           }
