@@ -6,12 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
-#include <cstdint>
-#include <cstring>
-#include <map>
-#include <mutex>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "baker/integrate/dielectric_albedo.h"
@@ -19,6 +14,7 @@
 #include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
 #include "kiln/stored.h"
+#include "point_memo.h"
 
 namespace kiln::test {
 
@@ -35,28 +31,14 @@ inline bool IsGlassAlbedo(Quantity q) {
 /// {E_R, E_T} at view cosine mu, GGX alpha and eta to `tol` by DielectricAlbedo (EvaluateSpec's
 /// options), integrated once a process for each (mu, alpha, eta, tol).
 inline std::array<double, 2> SharedGlassAlbedo(double mu, double alpha, double eta, double tol) {
-  using Key = std::tuple<std::uint64_t, std::uint64_t, std::uint64_t, std::uint64_t>;
-  static std::mutex mutex;
-  static std::map<Key, std::array<double, 2>> memo;
-  auto bits = [](double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-  };
-  const Key key{bits(mu), bits(alpha), bits(eta), bits(tol)};
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = memo.find(key);
-    if (it != memo.end()) return it->second;
-  }
-  IntegrationOptions opt;
-  opt.tol = tol;
-  opt.maxPanels = kGlassAlbedoMaxPanels;
-  IntegrationStats stats;
-  const std::array<double, 2> e = DielectricAlbedo(mu, alpha, eta, opt, stats);
-  std::lock_guard<std::mutex> lock(mutex);
-  memo.emplace(key, e);
-  return e;
+  static PointMemo<4> memo;
+  return memo.Get({mu, alpha, eta, tol}, [&] {
+    IntegrationOptions opt;
+    opt.tol = tol;
+    opt.maxPanels = kGlassAlbedoMaxPanels;
+    IntegrationStats stats;
+    return DielectricAlbedo(mu, alpha, eta, opt, stats);
+  });
 }
 
 /// EvaluateSpec(spec, x, tol) of a glass E table (IsGlassAlbedo) over (mu, roughness, eta), by

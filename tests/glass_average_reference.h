@@ -6,12 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <array>
-#include <cstdint>
-#include <cstring>
-#include <map>
-#include <mutex>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "baker/integrate/dielectric_albedo_avg.h"
@@ -19,6 +14,7 @@
 #include "baker/quantities/common.h"
 #include "baker/tables/quantity.h"
 #include "baker/tables/spec.h"
+#include "point_memo.h"
 
 namespace kiln::test {
 
@@ -39,30 +35,17 @@ inline bool IsGlassAverage(Quantity q) {
 /// `evals` (optional) is charged with the evaluations of an integration this call ran.
 inline std::array<double, 2> NestedGlassAverage(double alpha, double eta, double tol,
                                                 long long* evals = nullptr) {
-  using Key = std::tuple<std::uint64_t, std::uint64_t, std::uint64_t>;
-  static std::mutex mutex;
-  static std::map<Key, std::array<double, 2>> memo;
-  auto bits = [](double v) {
-    std::uint64_t b;
-    std::memcpy(&b, &v, sizeof b);
-    return b;
-  };
-  const Key key{bits(alpha), bits(eta), bits(tol)};
-  {
-    std::lock_guard<std::mutex> lock(mutex);
-    auto it = memo.find(key);
-    if (it != memo.end()) return it->second;
-  }
-  NestedAverageTolerance split;
-  split.outer = (1 - kGlassAverageInnerTolShare) * tol;
-  split.inner = kGlassAverageInnerTolShare * tol;
-  split.gradedByWeight = true;
-  IntegrationStats stats;
-  const std::array<double, 2> e = DielectricAlbedoAverage(alpha, eta, split, stats);
-  if (evals) *evals += stats.evals;
-  std::lock_guard<std::mutex> lock(mutex);
-  memo.emplace(key, e);
-  return e;
+  static PointMemo<3> memo;
+  return memo.Get({alpha, eta, tol}, [&] {
+    NestedAverageTolerance split;
+    split.outer = (1 - kGlassAverageInnerTolShare) * tol;
+    split.inner = kGlassAverageInnerTolShare * tol;
+    split.gradedByWeight = true;
+    IntegrationStats stats;
+    const std::array<double, 2> e = DielectricAlbedoAverage(alpha, eta, split, stats);
+    if (evals) *evals += stats.evals;
+    return e;
+  });
 }
 
 /// EvaluateSpec(spec, x, tol) of a glass average (IsGlassAverage) over roughness and eta, by
