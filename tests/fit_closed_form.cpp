@@ -144,7 +144,8 @@ TEST_CASE("A fit is the same for any thread count", "[fit]") {
   FitOptions opt;
   opt.terms = 25;
   opt.threads = 1;
-  const TableSpec spec = CatalogueTable("ggx-albedo-avg");
+  // A cheap 1D exact integral: the samples are evaluated in parallel all the same.
+  const TableSpec spec = CatalogueTable("fresnel-dielectric-avg");
   FitResult one = FitTable(spec, opt);
   opt.threads = 2;
   FitResult two = FitTable(spec, opt);
