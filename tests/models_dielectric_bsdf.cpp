@@ -200,7 +200,7 @@ std::vector<size_t> WholeRuleRows() {
 /// r = 1 (1.8e-7).
 const std::vector<test::GridIndex> kRuleWorst = {{0, 40}, {7, 59}, {0, 41}, {2, 65}, {7, 58}};
 
-/// The fixed rule within kDielectricRuleBound of Adaptive (at 1000x below the bound) at the
+/// The fixed rule within kDielectricRuleBound of Adaptive (at 100x below the bound) at the
 /// columns mu = 0, 1e-6, 1 and WholeRuleRows whole, one point of each 3 x 3 block of the rest
 /// (seeded) and kRuleWorst; block 1: every point.
 void CheckRuleGrid(size_t block) {
@@ -208,7 +208,7 @@ void CheckRuleGrid(size_t block) {
   for (const test::GridIndex& p : test::StratifiedGrid(std::size(kRuleMus), kNy, block, 0xB5DF, {1},
                                                        WholeRuleRows(), kRuleWorst)) {
     const double mu = kRuleMus[p.i], r = kRuleRs[p.j % kNr], eta = kRuleEtas[p.j / kNr];
-    std::array<double, 2> a = Adaptive(mu, r, eta, kDielectricRuleBound / 1000);
+    std::array<double, 2> a = Adaptive(mu, r, eta, kDielectricRuleBound / 100);
     std::array<double, 2> f = FixedRuleDielectricAlbedo(mu, r * r, eta);
     double err = std::max(std::abs(a[0] - f[0]), std::abs(a[1] - f[1]));
     worst = std::max(worst, err);
