@@ -535,6 +535,24 @@ const SmoothNodes& SmoothNodesOf(int n) {
   return all[n];
 }
 
+/// Panel [a, b]'s n nodes by their smoothstep shares sn: node j at a + d s[j], weight d ws[j], d
+/// = b - a (a product, then a sum: no fused step).
+inline void PanelNodesOf(int n, const SmoothNodes& sn, double a, double b, double* __restrict phi,
+                         double* __restrict w) {
+  const double d = b - a;
+  for (int j = 0; j < n; ++j) {
+    phi[j] = a + d * sn.s[j];
+    w[j] = d * sn.ws[j];
+  }
+}
+
+/// PanelNodesOf for a count known when compiled (its loop unrolled).
+template <int N>
+inline void PanelNodes(const SmoothNodes& sn, double a, double b, double* __restrict phi,
+                       double* __restrict w) {
+  PanelNodesOf(N, sn, a, b, phi, w);
+}
+
 /// The exit walk's problem (both paths): a FastView with the breaks of dielectric_exit_breaks.h.
 struct ExitView : FastView {
   dielectric_exit_breaks::ExitBreakConsts k;
@@ -569,12 +587,29 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
     void Panel(double a, double bEnd, const GaussRule01& g) {
       const int n = static_cast<int>(g.x.size());
       const SmoothNodes& sn = SmoothNodesOf(n);
-      const double d = bEnd - a;
       double* phi = b.phi + b.J;
       double* w = b.w + b.J;
-      for (int j = 0; j < n; ++j) {
-        phi[j] = a + d * sn.s[j];
-        w[j] = d * sn.ws[j];
+      switch (n) {  // the exit rules' counts unrolled (two nodes an SSE2 operation)
+        case 2:
+          PanelNodes<2>(sn, a, bEnd, phi, w);
+          break;
+        case 4:
+          PanelNodes<4>(sn, a, bEnd, phi, w);
+          break;
+        case 6:
+          PanelNodes<6>(sn, a, bEnd, phi, w);
+          break;
+        case 8:
+          PanelNodes<8>(sn, a, bEnd, phi, w);
+          break;
+        case 10:
+          PanelNodes<10>(sn, a, bEnd, phi, w);
+          break;
+        case 12:
+          PanelNodes<12>(sn, a, bEnd, phi, w);
+          break;
+        default:
+          PanelNodesOf(n, sn, a, bEnd, phi, w);
       }
       b.J += n;
     }
