@@ -578,6 +578,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
     const FastView& v;
     dielectric_simd::RingBuffer& b;
     bool simd;  ///< FastRingSums, else PortableRingSums
+    double invEta = 1 / v.eta;
     PolarParam ring{};
     Channels<2> sum{0, 0};
     void BeginRing(const PolarParam& h) {
@@ -624,6 +625,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
                                         v.eta2m1,
                                         v.a2,
                                         v.gDen,
+                                        invEta,
                                         v.reflectOnly};
       double c0, c1;
       (simd ? dielectric_simd::FastRingSums : dielectric_simd::PortableRingSums)(r, b.phi, b.w, b.J,

@@ -37,6 +37,7 @@ struct RingBuffer {
 /// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m; cosM > 0.
 struct FastRing {
   double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
+  double invEta;  ///< 1 / eta, the view's (one division a view, not a ring)
   bool reflectOnly;
 };
 
