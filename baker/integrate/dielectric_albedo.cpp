@@ -108,6 +108,8 @@ static_assert(dielectric_simd::kMaxColumnEtas == kMaxDielectricColumn,
 namespace {
 
 constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
+static_assert(dielectric_simd::kMaxRingPhis == dielectric_walk::kMaxPhiBreaks,
+              "PhiBreaks8's rings hold the walk's inner breaks");
 static_assert(dielectric_simd::kMaxRingNodes >=
                   (dielectric_walk::kMaxPhiBreaks - 1) * kMaxCachedGaussNodes,
               "a ring's nodes must fit the AVX-512F paths' buffer");
@@ -562,6 +564,65 @@ struct ExitView : FastView {
   }
 };
 
+/// dielectric_walk::WalkPanels for the exit walk, the same panels, rings and order, with the
+/// inner breaks of an outer panel's rings made first: eight rings at once by
+/// dielectric_simd::PhiBreaks8 where simd (the same bits as ExitView::PhiBreaks, which the
+/// portable path calls ring by ring). Returns the azimuth nodes.
+template <class Visitor>
+long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& rule, bool simd,
+                         Visitor& visit) {
+  using namespace dielectric_walk;
+  double vs[kMaxThetaBreaks];
+  const int nt = VBreaks(p, vs);
+  const dielectric_simd::ExitPhiView pv{p.mu,      p.st,          p.cCrit,        p.eta2m1,
+                                        p.eta < 1, p.ncs,         p.k.nReflected, p.k.nRefracted,
+                                        p.cs,      p.k.reflected, p.k.refracted};
+  constexpr int kMaxRings = kMaxCachedGaussNodes;
+  PolarParam hs[kMaxRings];
+  double cosM[kMaxRings], sinM[kMaxRings], wos[kMaxRings];
+  double phis[kMaxRings][dielectric_simd::kMaxRingPhis];
+  int nps[kMaxRings];
+  long long count = 0;
+  for (int i = 0; i + 1 < nt; ++i) {
+    // The panel's weight and class (WalkPanels).
+    const double vb = vs[i + 1];
+    const double weight =
+        vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
+               : INFINITY;
+    const int outerClass = ClassOf(rule.outerWeight, weight);
+    const int* innerNodes = rule.innerNodes[outerClass];
+    const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
+    int m = 0;
+    for (size_t ko = 0; ko < go.x.size(); ++ko) {
+      double jac;
+      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
+      jac = -jac;
+      if (!(vv > 0) || !(jac > 0)) continue;
+      hs[m] = p.dist.FromV(vv);
+      cosM[m] = hs[m].cosTheta;
+      sinM[m] = hs[m].sinTheta;
+      wos[m++] = go.w[ko] * jac / Pi;
+    }
+    if (simd)
+      for (int r = 0; r < m; r += 8)
+        dielectric_simd::PhiBreaks8(pv, cosM + r, sinM + r, std::min(8, m - r), phis + r, nps + r);
+    else
+      for (int r = 0; r < m; ++r) nps[r] = p.PhiBreaks(hs[r], phis[r]);
+    for (int r = 0; r < m; ++r) {
+      visit.BeginRing(hs[r]);
+      for (int k = 0; k + 1 < nps[r]; ++k) {
+        const double width = phis[r][k + 1] - phis[r][k];
+        if (!(width > 0)) continue;
+        const GaussRule01& gi = CachedGaussLegendre01(NodesOf(innerNodes, rule.innerWidth, width));
+        count += static_cast<long long>(gi.x.size());
+        visit.Panel(phis[r][k], phis[r][k + 1], gi);
+      }
+      visit.EndRing(wos[r]);
+    }
+  }
+  return count;
+}
+
 /// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
 /// FastView's terms): the panels of ExitView's breaks, a ring's panels
 /// (dielectric_walk::WalkPanels) made its nodes (SmoothNodes: two operations a node), then the
@@ -635,7 +696,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   };
   dielectric_simd::RingBuffer buffer;
   Sum s{v, buffer, simd};
-  const long long count = dielectric_walk::WalkPanels(ev, rule, s);
+  const long long count = ExitWalkPanels(ev, rule, simd, s);
   if (evals) *evals += count;
   return s.sum;
 }
