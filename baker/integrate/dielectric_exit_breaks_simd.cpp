@@ -41,11 +41,12 @@ KILN_AVX512 inline V Acos8(V x) {
   return _mm512_mask_blend_pd(big, small, large);
 }
 
-/// The candidate boundaries of eight rings: acos of each threshold, and the lanes that keep it.
+/// The boundaries of eight rings between 0 and phiMax, sorted lane by lane as they come: slot
+/// k holds each lane's k-th smallest (+inf past a lane's count); count the lanes' counts.
 struct Slots {
   int n = 0;
-  alignas(64) double phi[kMaxSlots][8];
-  M keep[kMaxSlots];
+  V phi[kMaxSlots];
+  V count;
 };
 
 /// Adds threshold c0 (lanes `where`) to s: cp = (c0 - A) / (sin_o sin_m), kept where it is in
@@ -54,8 +55,18 @@ KILN_AVX512 inline void AddSlot(Slots* s, V c0, M where, V A, V inv, V phiMax) {
   const V cp = Mul(Sub(c0, A), inv);
   const M in = where & Gt(cp, Set(-1)) & Lt(cp, Set(1));
   const V q = Acos8(cp);
-  s->keep[s->n] = in & Gt(q, _mm512_setzero_pd()) & Lt(q, phiMax);
-  _mm512_store_pd(s->phi[s->n++], q);
+  const M keep = in & Gt(q, _mm512_setzero_pd()) & Lt(q, phiMax);
+  if (!keep) return;
+  // Insertion into each lane's sorted column by min and max (the values are neither NaN nor
+  // signed zeros: the same order as SortSmall's).
+  V x = _mm512_mask_blend_pd(keep, Set(INFINITY), q);
+  for (int k = 0; k < s->n; ++k) {
+    const V lo = Min(s->phi[k], x);
+    x = Max(s->phi[k], x);
+    s->phi[k] = lo;
+  }
+  s->phi[s->n++] = x;
+  s->count = _mm512_mask_add_pd(s->count, keep, s->count, Set(1));
 }
 
 }  // namespace
@@ -72,6 +83,7 @@ KILN_AVX512 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const doub
   const M seen = static_cast<M>(lanes & ~edge & ~_mm512_cmp_pd_mask(cp0, one, _CMP_GE_OQ));
   const V phiMax = _mm512_mask_blend_pd(Gt(cp0, minusOne), Set(Pi), Acos8(cp0));
   Slots s;
+  s.count = zero;
   AddSlot(&s, Mul(Set(v.mu), half), seen, A, inv, phiMax);
   for (int i = 0; i < v.ncs; ++i) AddSlot(&s, Set(v.cs[i]), seen, A, inv, phiMax);
   for (int i = 0; i < v.nReflected; ++i)
@@ -93,9 +105,11 @@ KILN_AVX512 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const doub
       counts = _mm512_mask_add_pd(counts, in, counts, one);
     }
   }
-  alignas(64) double maxes[8], as[8];
+  alignas(64) double maxes[8], as[8], counts[8], sorted[kMaxSlots][8];
   _mm512_store_pd(maxes, phiMax);
   _mm512_store_pd(as, A);
+  _mm512_store_pd(counts, s.count);
+  for (int k = 0; k < s.n; ++k) _mm512_store_pd(sorted[k], s.phi[k]);
   for (int l = 0; l < m; ++l) {
     double* p = phis[l];
     if ((edge >> l) & 1) {  // PhiBreaks' den <= 0 case
@@ -108,15 +122,12 @@ KILN_AVX512 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const doub
       np[l] = 0;
       continue;
     }
-    int n = 0;
-    p[n++] = 0;
-    for (int k = 0; k < s.n; ++k) {
-      p[n] = s.phi[k][l];
-      n += (s.keep[k] >> l) & 1;
-    }
-    p[n++] = maxes[l];
-    SortSmall(p, n);
-    np[l] = n;
+    // 0, the lane's boundaries in order (each below phiMax), phiMax: PhiBreaks' sorted list.
+    const int kept = static_cast<int>(counts[l]);
+    p[0] = 0;
+    for (int k = 0; k < kept; ++k) p[k + 1] = sorted[k][l];
+    p[kept + 1] = maxes[l];
+    np[l] = kept + 2;
   }
 }
 
