@@ -567,7 +567,9 @@ struct ExitView : FastView {
 /// dielectric_walk::WalkPanels for the exit walk, the same panels, rings and order, with the
 /// inner breaks of an outer panel's rings made first: eight rings at once by
 /// dielectric_simd::PhiBreaks8 where simd (the same bits as ExitView::PhiBreaks, which the
-/// portable path calls ring by ring). Returns the azimuth nodes.
+/// portable path calls ring by ring). The visitor's calls are WalkPanels' but for Panel(a, b, n,
+/// sn): an inner panel's node count n and its smoothstep shares sn (looked up once per outer
+/// panel). Returns the azimuth nodes.
 template <class Visitor>
 long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& rule, bool simd,
                          Visitor& visit) {
@@ -592,6 +594,14 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
     const int outerClass = ClassOf(rule.outerWeight, weight);
     const int* innerNodes = rule.innerNodes[outerClass];
     const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
+    // The inner panels' node counts (CachedGaussLegendre01's clamp) and their smoothstep shares
+    // by width class.
+    int innerCount[4];
+    const SmoothNodes* innerShares[4];
+    for (int q = 0; q < 4; ++q) {
+      innerCount[q] = static_cast<int>(CachedGaussLegendre01(innerNodes[q]).x.size());
+      innerShares[q] = &SmoothNodesOf(innerCount[q]);
+    }
     int m = 0;
     for (size_t ko = 0; ko < go.x.size(); ++ko) {
       double jac;
@@ -613,9 +623,9 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
       for (int k = 0; k + 1 < nps[r]; ++k) {
         const double width = phis[r][k + 1] - phis[r][k];
         if (!(width > 0)) continue;
-        const GaussRule01& gi = CachedGaussLegendre01(NodesOf(innerNodes, rule.innerWidth, width));
-        count += static_cast<long long>(gi.x.size());
-        visit.Panel(phis[r][k], phis[r][k + 1], gi);
+        const int q = ClassOf(rule.innerWidth, width);
+        count += innerCount[q];
+        visit.Panel(phis[r][k], phis[r][k + 1], innerCount[q], *innerShares[q]);
       }
       visit.EndRing(wos[r]);
     }
@@ -646,9 +656,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
       b.J = 0;
       ring = h;
     }
-    void Panel(double a, double bEnd, const GaussRule01& g) {
-      const int n = static_cast<int>(g.x.size());
-      const SmoothNodes& sn = SmoothNodesOf(n);
+    void Panel(double a, double bEnd, int n, const SmoothNodes& sn) {
       double* phi = b.phi + b.J;
       double* w = b.w + b.J;
       switch (n) {  // the exit rules' counts unrolled (two nodes an SSE2 operation)
