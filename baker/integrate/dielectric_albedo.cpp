@@ -74,7 +74,8 @@
 // azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
 // texel of the exit E pair against 8,535. The walk (FastWalk: the exit side, the entering side
 // below eta 1.1 and E_R alone): its breaks by dielectric_exit_breaks.h (one division a ring, acos
-// by a polynomial, the refracted horizon by false position), a ring's nodes from precomputed
+// by a polynomial, the refracted horizon by false position; on the AVX-512F path an outer
+// panel's rings eight at once, dielectric_exit_breaks_simd.cpp), a ring's nodes from precomputed
 // smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes, by
 // AVX-512F where the CPU has it (dielectric_simd_exit.cpp), else the same operations one node at
 // a time with std::fma (dielectric_exit_ring.cpp): the same bits on either path, 0.66x the CPU
