@@ -74,7 +74,8 @@
 // azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
 // texel of the exit E pair against 8,535. The walk (FastWalk: the exit side, the entering side
 // below eta 1.1 and E_R alone): its breaks by dielectric_exit_breaks.h (one division a ring, acos
-// by a polynomial, the refracted horizon by false position), a ring's nodes from precomputed
+// by a polynomial, the refracted horizon by false position; on the AVX-512F path an outer
+// panel's rings eight at once, dielectric_exit_breaks_simd.cpp), a ring's nodes from precomputed
 // smoothstep shares, the integrand with fused multiply-adds and its sums in eight lanes, by
 // AVX-512F where the CPU has it (dielectric_simd_exit.cpp), else the same operations one node at
 // a time with std::fma (dielectric_exit_ring.cpp): the same bits on either path, 0.66x the CPU
@@ -108,6 +109,8 @@ static_assert(dielectric_simd::kMaxColumnEtas == kMaxDielectricColumn,
 namespace {
 
 constexpr int kMaxBreaks = dielectric_walk::kMaxThetaBreaks;
+static_assert(dielectric_simd::kMaxRingPhis == dielectric_walk::kMaxPhiBreaks,
+              "PhiBreaks8's rings hold the walk's inner breaks");
 static_assert(dielectric_simd::kMaxRingNodes >=
                   (dielectric_walk::kMaxPhiBreaks - 1) * kMaxCachedGaussNodes,
               "a ring's nodes must fit the AVX-512F paths' buffer");
@@ -535,6 +538,24 @@ const SmoothNodes& SmoothNodesOf(int n) {
   return all[n];
 }
 
+/// Panel [a, b]'s n nodes by their smoothstep shares sn: node j at a + d s[j], weight d ws[j], d
+/// = b - a (a product, then a sum: no fused step).
+inline void PanelNodesOf(int n, const SmoothNodes& sn, double a, double b, double* __restrict phi,
+                         double* __restrict w) {
+  const double d = b - a;
+  for (int j = 0; j < n; ++j) {
+    phi[j] = a + d * sn.s[j];
+    w[j] = d * sn.ws[j];
+  }
+}
+
+/// PanelNodesOf for a count known when compiled (its loop unrolled).
+template <int N>
+inline void PanelNodes(const SmoothNodes& sn, double a, double b, double* __restrict phi,
+                       double* __restrict w) {
+  PanelNodesOf(N, sn, a, b, phi, w);
+}
+
 /// The exit walk's problem (both paths): a FastView with the breaks of dielectric_exit_breaks.h.
 struct ExitView : FastView {
   dielectric_exit_breaks::ExitBreakConsts k;
@@ -543,6 +564,75 @@ struct ExitView : FastView {
     return dielectric_exit_breaks::PhiBreaks(*this, k, h, phis);
   }
 };
+
+/// dielectric_walk::WalkPanels for the exit walk, the same panels, rings and order, with the
+/// inner breaks of an outer panel's rings made first: eight rings at once by
+/// dielectric_simd::PhiBreaks8 where simd (the same bits as ExitView::PhiBreaks, which the
+/// portable path calls ring by ring). The visitor's calls are WalkPanels' but for Panel(a, b, n,
+/// sn): an inner panel's node count n and its smoothstep shares sn (looked up once per outer
+/// panel). Returns the azimuth nodes.
+template <class Visitor>
+long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& rule, bool simd,
+                         Visitor& visit) {
+  using namespace dielectric_walk;
+  double vs[kMaxThetaBreaks];
+  const int nt = VBreaks(p, vs);
+  const dielectric_simd::ExitPhiView pv{p.mu,      p.st,          p.cCrit,        p.eta2m1,
+                                        p.eta < 1, p.ncs,         p.k.nReflected, p.k.nRefracted,
+                                        p.cs,      p.k.reflected, p.k.refracted};
+  constexpr int kMaxRings = kMaxCachedGaussNodes;
+  PolarParam hs[kMaxRings];
+  double cosM[kMaxRings], sinM[kMaxRings], wos[kMaxRings];
+  double phis[kMaxRings][dielectric_simd::kMaxRingPhis];
+  int nps[kMaxRings];
+  long long count = 0;
+  for (int i = 0; i + 1 < nt; ++i) {
+    // The panel's weight and class (WalkPanels).
+    const double vb = vs[i + 1];
+    const double weight =
+        vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
+               : INFINITY;
+    const int outerClass = ClassOf(rule.outerWeight, weight);
+    const int* innerNodes = rule.innerNodes[outerClass];
+    const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
+    // The inner panels' node counts (CachedGaussLegendre01's clamp) and their smoothstep shares
+    // by width class.
+    int innerCount[4];
+    const SmoothNodes* innerShares[4];
+    for (int q = 0; q < 4; ++q) {
+      innerCount[q] = static_cast<int>(CachedGaussLegendre01(innerNodes[q]).x.size());
+      innerShares[q] = &SmoothNodesOf(innerCount[q]);
+    }
+    int m = 0;
+    for (size_t ko = 0; ko < go.x.size(); ++ko) {
+      double jac;
+      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
+      jac = -jac;
+      if (!(vv > 0) || !(jac > 0)) continue;
+      hs[m] = p.dist.FromV(vv);
+      cosM[m] = hs[m].cosTheta;
+      sinM[m] = hs[m].sinTheta;
+      wos[m++] = go.w[ko] * jac / Pi;
+    }
+    if (simd)
+      for (int r = 0; r < m; r += 8)
+        dielectric_simd::PhiBreaks8(pv, cosM + r, sinM + r, std::min(8, m - r), phis + r, nps + r);
+    else
+      for (int r = 0; r < m; ++r) nps[r] = p.PhiBreaks(hs[r], phis[r]);
+    for (int r = 0; r < m; ++r) {
+      visit.BeginRing(hs[r]);
+      for (int k = 0; k + 1 < nps[r]; ++k) {
+        const double width = phis[r][k + 1] - phis[r][k];
+        if (!(width > 0)) continue;
+        const int q = ClassOf(rule.innerWidth, width);
+        count += innerCount[q];
+        visit.Panel(phis[r][k], phis[r][k + 1], innerCount[q], *innerShares[q]);
+      }
+      visit.EndRing(wos[r]);
+    }
+  }
+  return count;
+}
 
 /// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
 /// FastView's terms): the panels of ExitView's breaks, a ring's panels
@@ -560,21 +650,37 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
     const FastView& v;
     dielectric_simd::RingBuffer& b;
     bool simd;  ///< FastRingSums, else PortableRingSums
+    double invEta = 1 / v.eta;
     PolarParam ring{};
     Channels<2> sum{0, 0};
     void BeginRing(const PolarParam& h) {
       b.J = 0;
       ring = h;
     }
-    void Panel(double a, double bEnd, const GaussRule01& g) {
-      const int n = static_cast<int>(g.x.size());
-      const SmoothNodes& sn = SmoothNodesOf(n);
-      const double d = bEnd - a;
+    void Panel(double a, double bEnd, int n, const SmoothNodes& sn) {
       double* phi = b.phi + b.J;
       double* w = b.w + b.J;
-      for (int j = 0; j < n; ++j) {
-        phi[j] = a + d * sn.s[j];
-        w[j] = d * sn.ws[j];
+      switch (n) {  // the exit rules' counts unrolled (two nodes an SSE2 operation)
+        case 2:
+          PanelNodes<2>(sn, a, bEnd, phi, w);
+          break;
+        case 4:
+          PanelNodes<4>(sn, a, bEnd, phi, w);
+          break;
+        case 6:
+          PanelNodes<6>(sn, a, bEnd, phi, w);
+          break;
+        case 8:
+          PanelNodes<8>(sn, a, bEnd, phi, w);
+          break;
+        case 10:
+          PanelNodes<10>(sn, a, bEnd, phi, w);
+          break;
+        case 12:
+          PanelNodes<12>(sn, a, bEnd, phi, w);
+          break;
+        default:
+          PanelNodesOf(n, sn, a, bEnd, phi, w);
       }
       b.J += n;
     }
@@ -589,6 +695,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
                                         v.eta2m1,
                                         v.a2,
                                         v.gDen,
+                                        invEta,
                                         v.reflectOnly};
       double c0, c1;
       (simd ? dielectric_simd::FastRingSums : dielectric_simd::PortableRingSums)(r, b.phi, b.w, b.J,
@@ -598,7 +705,7 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   };
   dielectric_simd::RingBuffer buffer;
   Sum s{v, buffer, simd};
-  const long long count = dielectric_walk::WalkPanels(ev, rule, s);
+  const long long count = ExitWalkPanels(ev, rule, simd, s);
   if (evals) *evals += count;
   return s.sum;
 }

@@ -89,7 +89,8 @@ int PhiBreaks(const View& v, const ExitBreakConsts& k, PolarParam h, double* phi
     phis[1] = Pi;
     return 2;
   }
-  const double inv = 1 / den, half = 0.5 / h.cosTheta;
+  // 0.5 / cos_m as 0.5 (1 / cos_m): the same bits (a power of two scales exactly).
+  const double inv = 1 / den, invCos = 1 / h.cosTheta, half = 0.5 * invCos;
   double cp[2 + kMaxThresholds];
   int n = 0;
   cp[n++] = -A * inv;  // the end of visibility, c0 = 0
@@ -100,7 +101,7 @@ int PhiBreaks(const View& v, const ExitBreakConsts& k, PolarParam h, double* phi
   for (int i = 0; i < k.nReflected; ++i) add((k.reflected[i] + v.mu) * half);
   if (v.eta < 1) {
     add(v.cCrit);
-    const double invCos = 1 / h.cosTheta, c2 = -v.eta2m1;
+    const double c2 = -v.eta2m1;
     for (int i = 0; i < k.nRefracted && n - 1 < kMaxThresholds; ++i) {
       const double q = k.refracted[i] * invCos;
       if (!(q > 0)) break;

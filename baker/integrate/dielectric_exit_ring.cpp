@@ -50,7 +50,7 @@ struct Consts {
 };
 
 KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
-  return {r.A,    r.B,        r.cosM,   1 / r.cosM,          r.mu, 1 / r.eta,
+  return {r.A,    r.B,        r.cosM,   1 / r.cosM,          r.mu, r.invEta,
           r.eta2, r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1, r.a2, r.gDen};
 }
 

@@ -37,6 +37,7 @@ struct RingBuffer {
 /// the ring's constants. c = A + B cos(phi) with A = mu cos_m, B = sin_o sin_m; cosM > 0.
 struct FastRing {
   double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
+  double invEta;  ///< 1 / eta, the view's (one division a view, not a ring)
   bool reflectOnly;
 };
 
@@ -69,6 +70,26 @@ void PortableRingSums(const FastRing& r, const double* phi, const double* w, int
 /// PortableRingSums by the CPU's FMA instructions where it has them (true, the default) or by
 /// libm's std::fma (false): the same bits either way (tests compare them).
 void SetPortableFmaInstructions(bool on);
+
+/// The inner breaks' view constants of the exit walk (dielectric_exit_breaks.h, PhiBreaks): the
+/// thresholds c0 in its order (mu / (2 cos_m), cs, the reflected layer's (m + mu) / (2 cos_m),
+/// then where exitSide c_crit and the refracted layer's c at q = refracted[i] / cos_m).
+struct ExitPhiView {
+  double mu, st, cCrit, eta2m1;
+  bool exitSide;  ///< eta < 1
+  int ncs, nReflected, nRefracted;
+  const double *cs, *reflected, *refracted;
+};
+
+/// Most boundaries of one ring's PhiBreaks (dielectric_walk.h's kMaxPhiBreaks).
+constexpr int kMaxRingPhis = 40;
+
+/// dielectric_exit_breaks::PhiBreaks of m <= 8 rings (cos_m, sin_m) at once, one ring a lane:
+/// ring l's sorted boundaries into phis[l], their count into np[l] (>= 2, or 0). The same
+/// operations as the scalar PhiBreaks (no fused multiply-add; acos by the same polynomial and
+/// order): its bits. Needs Enabled().
+void PhiBreaks8(const ExitPhiView& v, const double* cosM, const double* sinM, int m,
+                double (*phis)[kMaxRingPhis], int* np);
 
 /// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
 /// and the ring's constants (cosM > 0).

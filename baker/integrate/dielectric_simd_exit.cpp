@@ -49,9 +49,9 @@ struct Consts {
 };
 
 KILN_AVX512 inline Consts ConstsOf(const FastRing& r) {
-  return {Set(r.A),       Set(r.B),    Set(r.cosM),     Set(1 / r.cosM), Set(r.mu),
-          Set(1 / r.eta), Set(r.eta2), Set(r.eta2 + 1), Set(r.eta2m1),   Set(r.eta2m1 * r.eta2m1),
-          Set(r.a2),      Set(r.gDen)};
+  return {Set(r.A),      Set(r.B),    Set(r.cosM),     Set(1 / r.cosM), Set(r.mu),
+          Set(r.invEta), Set(r.eta2), Set(r.eta2 + 1), Set(r.eta2m1),   Set(r.eta2m1 * r.eta2m1),
+          Set(r.a2),     Set(r.gDen)};
 }
 
 /// One ray's weighted term, FastView's weigh: wb f p / (gDen p + mu a2 s_i^2), p = 2 mu_i
