@@ -587,12 +587,7 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
   int nps[kMaxRings];
   long long count = 0;
   for (int i = 0; i + 1 < nt; ++i) {
-    // The panel's weight and class (WalkPanels).
-    const double vb = vs[i + 1];
-    const double weight =
-        vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
-               : INFINITY;
-    const int outerClass = ClassOf(rule.outerWeight, weight);
+    const int outerClass = OuterClass(p, rule, vs[i], vs[i + 1]);
     const int* innerNodes = rule.innerNodes[outerClass];
     const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
     // The inner panels' node counts (CachedGaussLegendre01's clamp) and their smoothstep shares
@@ -605,14 +600,10 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
     }
     int m = 0;
     for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      double jac;
-      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
-      jac = -jac;
-      if (!(vv > 0) || !(jac > 0)) continue;
-      hs[m] = p.dist.FromV(vv);
+      if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &hs[m], &wos[m])) continue;
       cosM[m] = hs[m].cosTheta;
       sinM[m] = hs[m].sinTheta;
-      wos[m++] = go.w[ko] * jac / Pi;
+      ++m;
     }
     if (simd)
       for (int r = 0; r < m; r += 8)

@@ -107,6 +107,32 @@ int VBreaks(const Problem& p, double* vs) {
   return nt;
 }
 
+/// The weight class of the outer panel [va, vb] (v decreasing): its share of dv times the
+/// integrand's bound at its small-v end, (mu + sin_o tan theta_m) / gDen (the tail panel, ending
+/// at v = 0, is unbounded: top class).
+template <class Problem>
+int OuterClass(const Problem& p, const NodeClasses& rule, double va, double vb) {
+  const double weight =
+      vb > 0 ? (va - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
+             : INFINITY;
+  return ClassOf(rule.outerWeight, weight);
+}
+
+/// The ring at the Gauss node t (weight w) of the outer panel [va, vb], smoothstep-mapped: false
+/// where its v or its Jacobian is not positive (no ring); else its normal's polar parameters h and
+/// its outer weight wo (w times the Jacobian and 1 / pi).
+template <class Problem>
+bool OuterRing(const Problem& p, double va, double vb, double t, double w, PolarParam* h,
+               double* wo) {
+  double jac;
+  const double vv = Smooth(va, vb, t, &jac);
+  jac = -jac;
+  if (!(vv > 0) || !(jac > 0)) return false;
+  *h = p.dist.FromV(vv);
+  *wo = w * jac / Pi;
+  return true;
+}
+
 /// Walks the fixed rule's panels with node classes `rule` in its one summation order: panels in
 /// order of v, rings (theta_m nodes) in order within each, azimuth panels in order within a ring.
 /// For each ring: visit.BeginRing(h); visit.Panel(a, b, g) for each of its azimuth panels [a, b]
@@ -120,21 +146,13 @@ long long WalkPanels(const Problem& p, const NodeClasses& rule, Visitor& visit) 
   const int nt = VBreaks(p, vs);
   long long count = 0;
   for (int i = 0; i + 1 < nt; ++i) {
-    // The panel's weight: its share of dv times the integrand's bound at its small-v end,
-    // (mu + sin_o tan theta_m) / gDen (the tail panel, ending at v = 0, is unbounded: top class).
-    const double vb = vs[i + 1];
-    const double weight =
-        vb > 0 ? (vs[i] - vb) * (p.mu + p.st * p.dist.alpha * std::sqrt((1 - vb) / vb)) / p.gDen
-               : INFINITY;
-    const int outerClass = ClassOf(rule.outerWeight, weight);
+    const int outerClass = OuterClass(p, rule, vs[i], vs[i + 1]);
     const int* innerNodes = rule.innerNodes[outerClass];
     const GaussRule01& go = CachedGaussLegendre01(rule.outerNodes[outerClass]);
     for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      double jac;
-      const double vv = Smooth(vs[i], vs[i + 1], go.x[ko], &jac);
-      jac = -jac;
-      if (!(vv > 0) || !(jac > 0)) continue;
-      const PolarParam h = p.dist.FromV(vv);
+      PolarParam h;
+      double wo;
+      if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &h, &wo)) continue;
       double phis[kMaxPhiBreaks];
       const int np = p.PhiBreaks(h, phis);
       visit.BeginRing(h);
@@ -145,7 +163,7 @@ long long WalkPanels(const Problem& p, const NodeClasses& rule, Visitor& visit) 
         count += static_cast<long long>(gi.x.size());
         visit.Panel(phis[k], phis[k + 1], gi);
       }
-      visit.EndRing(go.w[ko] * jac / Pi);
+      visit.EndRing(wo);
     }
   }
   return count;
