@@ -58,15 +58,21 @@ bool SameBits(const T& a, const T& b) {
 const double kMus[] = {0.0, 1e-6, 0.013, 0.2, 0.5, 0.77, 0.999, 1.0};
 const double kRoughness[] = {1.0 / (39 * 39), 0.05, 0.3, 0.7, 1.0};
 
-}  // namespace
-
-TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric][glass-rule]") {
+/// Turns the AVX-512F paths on (a warning where the CPU has none: the comparisons then hold the
+/// portable path to itself) and returns the tuned rule's options.
+DielectricRuleOptions FastPathsOn() {
   dielectric_simd::SetEnabled(true);
   if (!dielectric_simd::Enabled())
     WARN(
         "no AVX-512F on this CPU: both runs take the portable path (the test compares it with "
         "itself)");
-  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  return TunedDielectricRuleOptions();
+}
+
+}  // namespace
+
+TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric][glass-rule]") {
+  const DielectricRuleOptions opt = FastPathsOn();
   int compared = 0;
   SECTION("entering columns of 1, 2, 7, 8, 9, 16 and 40 etas") {
     std::vector<double> etas;
@@ -128,12 +134,7 @@ TEST_CASE("the AVX-512F glass walks give the portable walks' bits", "[dielectric
 
 TEST_CASE("the AVX-512F exit walk gives the portable exit walk's bits",
           "[dielectric][glass-rule]") {
-  dielectric_simd::SetEnabled(true);
-  if (!dielectric_simd::Enabled())
-    WARN(
-        "no AVX-512F on this CPU: both runs take the portable path (the test compares it with "
-        "itself)");
-  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  const DielectricRuleOptions opt = FastPathsOn();
   int compared = 0;
   // The exit side's E pair and E_R alone, and the entering side below 1.1 (the same walk), at the
   // corners and at the exit side's thresholds: mu_c and its neighbours, mu = eta.
