@@ -132,13 +132,15 @@ constexpr long long kClimb[4] = {0, 22, 44, 66};
 constexpr long long kSearchCells = 8;
 constexpr long long kClimbedCells = 4;
 /// A glass average's search budget: all 8 cells probed, climbs in 3 (9 + 44 points each): by
-/// the automatic budget of 2e7 integrand evaluations its nested reference reached one cell and
-/// one climb, and its outer reference (a mu integral of the glass E rule a point) is the
-/// costliest of the catalogue.
+/// the automatic budget (kLookupBudgetIntegrand integrand evaluations) its nested reference
+/// reaches one cell and one climb, and its outer reference (a mu integral of the glass E rule a
+/// point) is the costliest of the catalogue.
 constexpr long long kGlassAverageBudget = 220;
 
-/// The tables whose automatic budget (2e7 integrand evaluations: a costly reference) stops the
-/// search before kClimbedCells climbs: they keep it (an explicit budget would add points).
+/// The tables whose automatic budget (kLookupBudgetIntegrand integrand evaluations: a costly
+/// reference) stopped the search before kClimbedCells climbs when it was 2e7: they keep it (an
+/// explicit budget would add points). At a smaller automatic budget a table left off this list
+/// gets the explicit one, so more points, never fewer climbs.
 bool ReferenceLimited(const std::string& name) {
   static const char* const limited[] = {"ggx-albedo",
                                         "ggx-separable-albedo",
