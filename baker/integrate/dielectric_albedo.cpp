@@ -151,11 +151,9 @@ View MakeView(double mu, double alpha, double eta) {
   return v;
 }
 
-/// mu of the refracted ray for c = o.m above the critical cosine, at microfacet cosine cosM.
-inline double MuRefracted(const View& v, double c, double cosM) {
-  double cosT = std::sqrt(std::max(0.0, c * c + v.eta2m1)) / v.eta;
-  return -v.mu / v.eta + (c / v.eta - cosT) * cosM;
-}
+/// mu of the refracted ray for c = o.m above the critical cosine, at microfacet cosine cosM (one
+/// formula for both walks: dielectric_exit_breaks.h).
+using dielectric_exit_breaks::MuRefracted;
 
 /// The integrand {R, T} at microfacet polar angle h and azimuth cos(phi) = cp (without 1/pi).
 inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
@@ -731,8 +729,6 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
   ColumnWalk(v, ks, dielectric_walk::ClassesOf(opt), all, evals);
   std::copy(all, all + n, out);
 }
-
-namespace {}  // namespace
 
 std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {
   double F = FrDielectric(Clamp(mu, 0.0, 1.0), eta);

@@ -122,8 +122,8 @@ int PhiBreaks(const View& v, const ExitBreakConsts& k, PolarParam h, double* phi
   return np;
 }
 
-/// The refracted ray's mu at c = o.m, microfacet cosine cosM (dielectric_albedo.cpp,
-/// MuRefracted; continuous at the critical cosine, where cos_t = 0).
+/// The refracted ray's mu at c = o.m, microfacet cosine cosM (continuous at the critical cosine,
+/// where cos_t = 0); the rule of dielectric_albedo.cpp and the exit walk's breaks alike.
 template <class View>
 double MuRefracted(const View& v, double c, double cosM) {
   const double cosT = std::sqrt(std::max(0.0, c * c + v.eta2m1)) / v.eta;
