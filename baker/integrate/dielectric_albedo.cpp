@@ -421,8 +421,10 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
     const View& v;
     const EtaConsts& ks;
     const int np2;
-    const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
-               gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
+    const dielectric_lanes::RingConsts k =
+        dielectric_lanes::RingConstsOf(v.mu, v.gDen, v.dist.alpha);
+    const Pair one = Splat(1), mu = Splat(v.mu), a2 = Splat(k.a2), oma2 = Splat(k.oma2),
+               kh = Splat(k.kh);
     dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
     // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
@@ -450,25 +452,14 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
       const double wbs = w * (c / h.cosTheta);
       const double muR = 2 * c * h.cosTheta - v.mu;
       const Pair wR = Splat(muR > 0 ? wbs / (v.gDen + v.mu * (v.dist.MuLambda(muR) / muR)) : 0);
-      const Pair cc = Splat(std::min(c, 1.0)), cc2 = cc * cc, wb = Splat(wbs);
-      // Per eta: F from g = sqrt(c^2 + eta^2 - 1) = eta cos_t by FrDielectric's
-      // cancellation-free forms over one denominator, a = c + g, b = eta^2 c + g,
-      // X = (eta^2 + 1) c^2 - 1:  F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4)
-      // (a >= g > 0.45 on this side); the refracted ray mu_t = (mu - (c - g) cos_m) / eta,
-      // which for eta > 1 always goes down (g > c), and its masking mu Lambda(t) =
-      // mu alpha^2 s_t^2 / P, P = 2 mu_t (sqrt(mu_t^2 + alpha^2 s_t^2) + mu_t), folded into
-      // one division.
+      const Pair cc = Splat(std::min(c, 1.0)), wb = Splat(wbs / v.gDen);
+      // Per eta (file comment, "Columns"): Tf = 1 - F, the refracted ray's p and denominator.
       for (int e = 0; e < np2; ++e) {
-        const Pair eta2m1 = Load(ks.eta2m1 + 2 * e), eta2 = Load(ks.eta2 + 2 * e);
-        const Pair g = Sqrt(cc2 + eta2m1);
-        const Pair a = cc + g, b = eta2 * cc + g, x = (eta2 + one) * cc * cc - one;
-        const Pair aa = a * a, bb = b * b, a4 = aa * aa, b4 = bb * bb;
-        const Pair F = Min(one, eta2m1 * eta2m1 * (b4 + x * x * a4) / (two * a4 * b4));
-        sums.ring0[e] = sums.ring0[e] + wR * F;
-        const Pair muT = (mu - (cc - g) * cosM) * Load(ks.inv + 2 * e);
-        const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
-        const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
-        sums.ring1[e] = sums.ring1[e] + wb * (one - F) * p / (gDen * p + mu * a2s2);
+        Pair tf, p, den;
+        dielectric_lanes::EtaTerms(cc, Load(ks.eta2m1 + 2 * e), Load(ks.eta2 + 2 * e),
+                                   Load(ks.inv + 2 * e), cosM, mu, a2, oma2, kh, &tf, &p, &den);
+        sums.ring0[e] = sums.ring0[e] + wR * (one - tf);
+        sums.ring1[e] = sums.ring1[e] + wb * tf * p / den;
       }
     }
     void EndRing(double wo) {
@@ -485,9 +476,14 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
       dielectric_simd::RingBuffer& b = *buf;
       const int J = b.J, n = ks.n;
       if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
-      const dielectric_simd::ColumnRing r{
-          v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
-          Sqr(v.dist.alpha)};
+      const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
+                                          v.st * ring.sinTheta,
+                                          ring.cosTheta,
+                                          v.mu,
+                                          v.gDen,
+                                          k.a2,
+                                          k.oma2,
+                                          k.kh};
       dielectric_simd::ColumnRingShared(r, b.phi, b.w, J, b.valid, b.wR, b.wb, b.cc);
       dielectric_simd::AddColumnRing(
           n, b, wo,

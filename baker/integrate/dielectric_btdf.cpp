@@ -197,8 +197,10 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
     const BtdfView& v;
     const BtdfEtaConsts& ks;
     const int np2;
-    const Pair one = Splat(1), two = Splat(2), zero = Splat(0), mu = Splat(v.mu),
-               gDen = Splat(v.gDen), a2 = Splat(Sqr(v.dist.alpha));
+    const dielectric_lanes::RingConsts k =
+        dielectric_lanes::RingConstsOf(v.mu, v.gDen, v.dist.alpha);
+    const Pair one = Splat(1), mu = Splat(v.mu), a2 = Splat(k.a2), oma2 = Splat(k.oma2),
+               kh = Splat(k.kh);
     dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
     Pair cosM = Splat(0);
     // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
@@ -223,26 +225,16 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
       }
       const double c = v.mu * h.cosTheta + v.st * h.sinTheta * dielectric_walk::CosHalfTurn(phi);
       if (!(c > 0) || !(h.cosTheta > 0)) return;
-      const Pair wb = Splat(w * (c / h.cosTheta));
-      const Pair cc = Splat(std::min(c, 1.0)), cc2 = cc * cc;
-      // Per eta: g = sqrt(c^2 + eta^2 - 1) = eta cos_t; F by FrDielectric's
-      // cancellation-free forms over one denominator (a = c + g, b = eta^2 c + g,
-      // X = (eta^2 + 1) c^2 - 1: F = (eta^2 - 1)^2 (b^4 + X^2 a^4) / (2 a^4 b^4), a >= g >
-      // 0.45 on this side); the refracted ray mu_t = (mu - (c - g) cos_m) / eta (> 0: g > c)
-      // and its masking mu Lambda(t) = mu alpha^2 s_t^2 / P, P = 2 mu_t (sqrt(mu_t^2 +
-      // alpha^2 s_t^2) + mu_t), folded into one division.
+      const Pair wb = Splat(w * (c / h.cosTheta) / v.gDen), cc = Splat(std::min(c, 1.0));
+      // Per eta (dielectric_lanes::EtaTerms): Tf = 1 - F, the refracted ray's p and denominator;
+      // T_lobe's term t = wb p / den (wb over gDen), T_F's t (1 - Tf).
       for (int e = 0; e < np2; ++e) {
-        const Pair eta2m1 = Load(ks.eta2m1 + 2 * e), eta2 = Load(ks.eta2 + 2 * e);
-        const Pair g = Sqrt(cc2 + eta2m1);
-        const Pair a = cc + g, b = eta2 * cc + g, x = (eta2 + one) * cc2 - one;
-        const Pair aa = a * a, bb = b * b, a4 = aa * aa, b4 = bb * bb;
-        const Pair F = Min(one, eta2m1 * eta2m1 * (b4 + x * x * a4) / (two * a4 * b4));
-        const Pair muT = (mu - (cc - g) * cosM) * Load(ks.inv + 2 * e);
-        const Pair a2s2 = a2 * Max(zero, (one - muT) * (one + muT));
-        const Pair p = two * muT * (Sqrt(muT * muT + a2s2) + muT);
-        const Pair t = wb * p / (gDen * p + mu * a2s2);
+        Pair tf, p, den;
+        dielectric_lanes::EtaTerms(cc, Load(ks.eta2m1 + 2 * e), Load(ks.eta2 + 2 * e),
+                                   Load(ks.inv + 2 * e), cosM, mu, a2, oma2, kh, &tf, &p, &den);
+        const Pair t = wb * p / den;
         sums.ring0[e] = sums.ring0[e] + t;
-        sums.ring1[e] = sums.ring1[e] + t * F;
+        sums.ring1[e] = sums.ring1[e] + t * (one - tf);
       }
     }
     void EndRing(double wo) {
@@ -259,9 +251,14 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
       dielectric_simd::RingBuffer& b = *buf;
       const int J = b.J, n = ks.n;
       if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
-      const dielectric_simd::ColumnRing r{
-          v.mu * ring.cosTheta, v.st * ring.sinTheta, ring.cosTheta, v.mu, v.gDen,
-          Sqr(v.dist.alpha)};
+      const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
+                                          v.st * ring.sinTheta,
+                                          ring.cosTheta,
+                                          v.mu,
+                                          v.gDen,
+                                          k.a2,
+                                          k.oma2,
+                                          k.kh};
       dielectric_simd::BtdfRingShared(r, b.phi, b.w, J, b.valid, b.wb, b.cc);
       dielectric_simd::AddColumnRing(
           n, b, wo,

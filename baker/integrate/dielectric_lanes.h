@@ -52,6 +52,35 @@ inline void Store(double* p, Pair a) {
 }
 #endif
 
+/// A column walk's per-view constants of the refracted ray's masking: a2 = alpha^2, oma2 = 1 -
+/// a2, kh = mu a2 / (2 gDen) (gDen = mu + mu Lambda(o)).
+struct RingConsts {
+  double a2, oma2, kh;
+};
+inline RingConsts RingConstsOf(double mu, double gDen, double alpha) {
+  const double a2 = alpha * alpha;
+  return {a2, 1 - a2, mu * a2 / (2 * gDen)};
+}
+
+/// The column walks' per-eta quantities at cosine c = min(o.m, 1) for two etas (eta2m1 = eta^2 -
+/// 1, eta2 = eta^2, inv = 1 / eta), the derivation in dielectric_albedo.cpp ("Columns"): Fresnel's
+/// transmittance Tf = 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2) into *tf (g = sqrt(c^2 + eta^2 -
+/// 1) = eta cos_t, a = c + g, b = eta^2 c + g: every term positive), the refracted ray's mu_t =
+/// (mu - (c - g) cos_m) / eta, p = mu_t (sqrt(alpha^2 + (1 - alpha^2) mu_t^2) + mu_t) into *p and
+/// den = p + kh s_t^2 into *den, so that wb p / den = w (c / cos_m) / (gDen + mu Lambda(t)).
+/// dielectric_simd.cpp's EtaTerms does the same operations in the same order.
+inline void EtaTerms(Pair c, Pair eta2m1, Pair eta2, Pair inv, Pair cosM, Pair mu, Pair a2,
+                     Pair oma2, Pair kh, Pair* tf, Pair* p, Pair* den) {
+  const Pair zero = Splat(0), one = Splat(1);
+  const Pair g = Sqrt(c * c + eta2m1);
+  const Pair a = c + g, b = eta2 * c + g, aa = a * a, bb = b * b, cg = c * g;
+  *tf = (cg + cg) * (bb + eta2 * aa) / (aa * bb);
+  const Pair muT = (mu - (c - g) * cosM) * inv, mt2 = muT * muT;
+  const Pair s2 = Max(zero, one - mt2);
+  *p = muT * (Sqrt(a2 + oma2 * mt2) + muT);
+  *den = *p + kh * s2;
+}
+
 /// Two channels of a column walk (dielectric_walk::WalkNodes' visitor state), per lane pair of
 /// etas: a ring's sums (ring0, ring1) cleared by ClearRing, added to the totals with the ring's
 /// weight by EndRing, in the walk's order; Write stores eta 2e's and 2e + 1's {sum0, sum1}.

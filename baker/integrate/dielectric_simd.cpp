@@ -64,36 +64,54 @@ KILN_AVX512 void ColumnRingShared(const ColumnRing& r, const double* phi, const 
     const V wr = Div(wbs, Add(gDen, Mul(mu, Div(ml, muR))));
     // Nodes not visited: zero weights and a benign cc (their terms are then exactly 0).
     _mm512_mask_storeu_pd(wR + j, k, _mm512_maskz_mov_pd(ok & Gt(muR, zero), wr));
-    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, wbs));
+    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, Div(wbs, gDen)));
     _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
     for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
   }
+}
+
+/// The ring's and a group of eight etas' constants, as EtaTerms takes them.
+struct RingV {
+  V cosM, mu, a2, oma2, kh;
+};
+struct EtaV {
+  V e2m1, e2, ie;
+};
+KILN_AVX512 inline RingV RingVOf(const ColumnRing& r) {
+  return {Set(r.cosM), Set(r.mu), Set(r.a2), Set(r.oma2), Set(r.kh)};
+}
+
+/// ColumnWalk's and BtdfColumnWalk's per-eta quantities at cosine c (each lane its own eta), the
+/// portable code's operations in its order: Fresnel's transmittance Tf = 1 - F into *tf, the
+/// refracted ray's p into *p and its denominator p + kh s_t^2 into *den.
+KILN_AVX512 inline void EtaTerms(V c, const EtaV& e, const RingV& rv, V* tf, V* p, V* den) {
+  const V zero = _mm512_setzero_pd(), one = Set(1);
+  const V g = Sqrt(Add(Mul(c, c), e.e2m1));
+  const V a = Add(c, g), b = Add(Mul(e.e2, c), g), aa = Mul(a, a), bb = Mul(b, b), cg = Mul(c, g);
+  *tf = Div(Mul(Add(cg, cg), Add(bb, Mul(e.e2, aa))), Mul(aa, bb));
+  const V muT = Mul(Sub(rv.mu, Mul(Sub(c, g), rv.cosM)), e.ie), mt2 = Mul(muT, muT);
+  // Max(zero, X) of dielectric_lanes.h is _mm_max_pd(zero, X): (0 > X) ? 0 : X.
+  const V s2 = Max(zero, Sub(one, mt2));
+  *p = Mul(muT, Add(Sqrt(Add(rv.a2, Mul(rv.oma2, mt2))), muT));
+  *den = Add(*p, Mul(rv.kh, s2));
 }
 
 KILN_AVX512 void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
                                 const double* wb, const double* cc, int J, const double* eta2m1,
                                 const double* eta2, const double* inv, int groups, double* ring0,
                                 double* ring1) {
-  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
-  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  const V one = Set(1);
+  const RingV rv = RingVOf(r);
   for (int q = 0; q < groups; ++q) {
-    const V e2m1 = _mm512_loadu_pd(eta2m1 + 8 * q), e2 = _mm512_loadu_pd(eta2 + 8 * q),
-            ie = _mm512_loadu_pd(inv + 8 * q), e2p1 = Add(e2, one), e2m1sq = Mul(e2m1, e2m1);
+    const EtaV e{_mm512_loadu_pd(eta2m1 + 8 * q), _mm512_loadu_pd(eta2 + 8 * q),
+                 _mm512_loadu_pd(inv + 8 * q)};
     V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
     for (int j = 0; j < J; ++j) {
       if (!valid[j]) continue;
-      const V c = Set(cc[j]), c2 = Mul(c, c);
-      const V g = Sqrt(Add(c2, e2m1));
-      const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(Mul(e2p1, c), c), one);
-      const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-      // Min(one, X) of dielectric_lanes.h is _mm_min_pd(one, X): (1 < X) ? 1 : X.
-      const V F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
-      r0 = Add(r0, Mul(Set(wR[j]), F));
-      const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
-      // Max(zero, X) is _mm_max_pd(zero, X): (0 > X) ? 0 : X.
-      const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
-      const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
-      r1 = Add(r1, Div(Mul(Mul(Set(wb[j]), Sub(one, F)), p), Add(Mul(gDen, p), Mul(mu, a2s2))));
+      V tf, p, den;
+      EtaTerms(Set(cc[j]), e, rv, &tf, &p, &den);
+      r0 = Add(r0, Mul(Set(wR[j]), Sub(one, tf)));
+      r1 = Add(r1, Div(Mul(Mul(Set(wb[j]), tf), p), den));
     }
     _mm512_storeu_pd(ring0 + 8 * q, r0);
     _mm512_storeu_pd(ring1 + 8 * q, r1);
@@ -103,76 +121,51 @@ KILN_AVX512 void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid,
 KILN_AVX512 void ColumnRingOneEta(const ColumnRing& r, const unsigned char*, const double* wR,
                                   const double* wb, const double* cc, int J, double eta2m1,
                                   double eta2, double inv, double* tR, double* tT) {
-  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
-  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
-  const V e2m1 = Set(eta2m1), e2 = Set(eta2), ie = Set(inv), e2p1 = Add(e2, one),
-          e2m1sq = Mul(e2m1, e2m1);
+  const V one = Set(1);
+  const RingV rv = RingVOf(r);
+  const EtaV e{Set(eta2m1), Set(eta2), Set(inv)};
   for (int j = 0; j < J; j += 8) {
     const int m = J - j < 8 ? J - j : 8;
     const M k = static_cast<M>((1u << m) - 1);
-    const V c = _mm512_mask_loadu_pd(Set(0.5), k, cc + j), c2 = Mul(c, c);
-    const V g = Sqrt(Add(c2, e2m1));
-    const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(Mul(e2p1, c), c), one);
-    const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-    const V F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
-    _mm512_mask_storeu_pd(tR + j, k, Mul(_mm512_maskz_loadu_pd(k, wR + j), F));
-    const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
-    const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
-    const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
-    _mm512_mask_storeu_pd(tT + j, k,
-                          Div(Mul(Mul(_mm512_maskz_loadu_pd(k, wb + j), Sub(one, F)), p),
-                              Add(Mul(gDen, p), Mul(mu, a2s2))));
+    V tf, p, den;
+    EtaTerms(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), e, rv, &tf, &p, &den);
+    _mm512_mask_storeu_pd(tR + j, k, Mul(_mm512_maskz_loadu_pd(k, wR + j), Sub(one, tf)));
+    _mm512_mask_storeu_pd(tT + j, k, Div(Mul(Mul(_mm512_maskz_loadu_pd(k, wb + j), tf), p), den));
   }
 }
 
 KILN_AVX512 void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
                                 unsigned char* valid, double* wb, double* cc) {
   const V zero = _mm512_setzero_pd(), one = Set(1);
-  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM);
+  const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM), gDen = Set(r.gDen);
   for (int j = 0; j < J; j += 8) {
     const int m = J - j < 8 ? J - j : 8;
     const M k = static_cast<M>((1u << m) - 1);
     const V c = Add(A, Mul(B, CosHalfTurn8(_mm512_maskz_loadu_pd(k, phi + j))));
     const M ok = Gt(c, zero) & k;
     const V wbs = Mul(_mm512_maskz_loadu_pd(k, w + j), Div(c, cosM));
-    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, wbs));
+    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, Div(wbs, gDen)));
     _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
     for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
   }
-}
-
-/// BtdfColumnWalk's per-eta terms at cos cc (c2 = cc^2) and weight wb: t and F.
-KILN_AVX512 inline V BtdfTerm(V c, V wbv, V e2m1, V e2, V ie, V e2p1, V e2m1sq, V cosM, V mu,
-                              V gDen, V a2, V* F) {
-  const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
-  const V c2 = Mul(c, c);
-  const V g = Sqrt(Add(c2, e2m1));
-  // BtdfColumnWalk: x = (eta^2 + 1) cc2 - 1 (the E walk's is ((eta^2 + 1) cc) cc - 1).
-  const V a = Add(c, g), b = Add(Mul(e2, c), g), x = Sub(Mul(e2p1, c2), one);
-  const V aa = Mul(a, a), bb = Mul(b, b), a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-  *F = Min(one, Div(Mul(e2m1sq, Add(b4, Mul(Mul(x, x), a4))), Mul(Mul(two, a4), b4)));
-  const V muT = Mul(Sub(mu, Mul(Sub(c, g), cosM)), ie);
-  const V a2s2 = Mul(a2, Max(zero, Mul(Sub(one, muT), Add(one, muT))));
-  const V p = Mul(Mul(two, muT), Add(Sqrt(Add(Mul(muT, muT), a2s2)), muT));
-  return Div(Mul(wbv, p), Add(Mul(gDen, p), Mul(mu, a2s2)));
 }
 
 KILN_AVX512 void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
                               const double* cc, int J, const double* eta2m1, const double* eta2,
                               const double* inv, int groups, double* ring0, double* ring1) {
   const V one = Set(1);
-  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
+  const RingV rv = RingVOf(r);
   for (int q = 0; q < groups; ++q) {
-    const V e2m1 = _mm512_loadu_pd(eta2m1 + 8 * q), e2 = _mm512_loadu_pd(eta2 + 8 * q),
-            ie = _mm512_loadu_pd(inv + 8 * q), e2p1 = Add(e2, one), e2m1sq = Mul(e2m1, e2m1);
+    const EtaV e{_mm512_loadu_pd(eta2m1 + 8 * q), _mm512_loadu_pd(eta2 + 8 * q),
+                 _mm512_loadu_pd(inv + 8 * q)};
     V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
     for (int j = 0; j < J; ++j) {
       if (!valid[j]) continue;
-      V F;
-      const V t =
-          BtdfTerm(Set(cc[j]), Set(wb[j]), e2m1, e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+      V tf, p, den;
+      EtaTerms(Set(cc[j]), e, rv, &tf, &p, &den);
+      const V t = Div(Mul(Set(wb[j]), p), den);
       r0 = Add(r0, t);
-      r1 = Add(r1, Mul(t, F));
+      r1 = Add(r1, Mul(t, Sub(one, tf)));
     }
     _mm512_storeu_pd(ring0 + 8 * q, r0);
     _mm512_storeu_pd(ring1 + 8 * q, r1);
@@ -182,18 +175,16 @@ KILN_AVX512 void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, c
 KILN_AVX512 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const double* cc, int J,
                                 double eta2m1, double eta2, double inv, double* t0, double* t1) {
   const V one = Set(1);
-  const V cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen), a2 = Set(r.a2);
-  const V e2m1 = Set(eta2m1), e2 = Set(eta2), ie = Set(inv), e2p1 = Add(e2, one),
-          e2m1sq = Mul(e2m1, e2m1);
+  const RingV rv = RingVOf(r);
+  const EtaV e{Set(eta2m1), Set(eta2), Set(inv)};
   for (int j = 0; j < J; j += 8) {
     const int m = J - j < 8 ? J - j : 8;
     const M k = static_cast<M>((1u << m) - 1);
-    V F;
-    const V t =
-        BtdfTerm(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), _mm512_maskz_loadu_pd(k, wb + j), e2m1,
-                 e2, ie, e2p1, e2m1sq, cosM, mu, gDen, a2, &F);
+    V tf, p, den;
+    EtaTerms(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), e, rv, &tf, &p, &den);
+    const V t = Div(Mul(_mm512_maskz_loadu_pd(k, wb + j), p), den);
     _mm512_mask_storeu_pd(t0 + j, k, t);
-    _mm512_mask_storeu_pd(t1 + j, k, Mul(t, F));
+    _mm512_mask_storeu_pd(t1 + j, k, Mul(t, Sub(one, tf)));
   }
 }
 

@@ -95,6 +95,8 @@ void PhiBreaks8(const ExitPhiView& v, const double* cosM, const double* sinM, in
 /// and the ring's constants (cosM > 0).
 struct ColumnRing {
   double A, B, cosM, mu, gDen, a2;
+  double oma2;  ///< 1 - a2
+  double kh;    ///< mu a2 / (2 gDen): the refracted ray's masking over the view's (ColumnTerms)
 };
 
 /// The column walk's per-node shared part at the J nodes (phi, w) of ring r: c > 0 marks the
