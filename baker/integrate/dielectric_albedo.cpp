@@ -45,11 +45,18 @@
 // reflected ray's geometry (c, i_r, Lambda(i_r)) and the weight c / cos_m not at all. So the rule
 // there fixes those thresholds at eta = 1.1's (eps = 0.458, 4 eps > 1: one threshold), whatever
 // eta: then one walk of (v, phi_m) serves every eta of a table's eta axis (ColumnWalk), with per
-// node the shared part once (cos phi_m, c, the reflected ray and its masking) and per eta only F
-// (FrDielectric's cancellation-free forms over one denominator, from g = sqrt(c^2 + eta^2 - 1) =
-// eta cos_t), the refracted ray mu_t = (mu - (c - g) cos_m) / eta (always down for eta > 1) and
-// its masking folded into one division: 2 square roots and 2 divisions per eta, two etas per
-// SSE2 lane pair. Each eta's sums are its own, in the walk's order: a column of one (a single
+// node the shared part once (cos phi_m, c, the reflected ray and its masking) and per eta only
+// Fresnel's transmittance and the refracted ray. With g = sqrt(c^2 + eta^2 - 1) = eta cos_t,
+// a = c + g, b = eta^2 c + g: 1 - R_s = 4 c g / a^2, 1 - R_p = 4 eta^2 c g / b^2, so
+//     T_f = 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2),   F = 1 - T_f
+// (every term positive: no cancellation; T_f <= 0.998 for eta >= 1.1). The refracted ray
+// mu_t = (mu - (c - g) cos_m) / eta (always down for eta > 1) and its masking mu Lambda(t) =
+// mu alpha^2 s_t^2 / (2 p), p = mu_t (sqrt(alpha^2 + (1 - alpha^2) mu_t^2) + mu_t) (s_t^2 =
+// 1 - mu_t^2), so the weight w (c / cos_m) / (gDen + mu Lambda(t)) = wb p / (p + kh s_t^2), wb =
+// w (c / cos_m) / gDen per node and kh = mu alpha^2 / (2 gDen) per view
+// (dielectric_lanes::EtaTerms): 2 square roots, 2 divisions and 17 multiplications per eta (25
+// with F over the one denominator 2 a^4 b^4 before), two etas per SSE2 lane pair. Each eta's
+// sums are its own, in the walk's order: a column of one (a single
 // point: the lookup-error search, kiln verify) gives the bits the column gives. Evaluations per
 // texel 10,354 counted per eta (8,953 before: the extra threshold for eta > 1.1), of which a
 // 24-eta column walks ~430 per texel; measured cost in docs/catalogue.md ("Tables on request").

@@ -30,17 +30,17 @@
 // eps at eta = 1.1's (0.458), whatever eta (for eta >= sqrt(2), eps >= 1, which had no panel,
 // the walk now keeps the one at 0.458), as the E tables' columns do: one walk of (v, phi_m) per
 // (mu, alpha) serves every eta of a column (BtdfColumnWalk), per node the geometry once and per
-// eta only F (FrDielectric's cancellation-free forms over one denominator, from g = sqrt(c^2 +
-// eta^2 - 1) = eta cos_t), the refracted ray mu_t = (mu - (c - g) cos_m) / eta and its masking
-// folded into one division: 2 square roots and 2 divisions per eta, two etas per lane pair
-// (dielectric_lanes.h). Each eta's sums are its own, in the walk's order: a column of one (a
-// single point: the lookup-error search, kiln verify) gives the bits the column
-// gives. Below 1.1 (eta in [1, 1.1): the reference's and tests' points, off the table) the
-// per-point walk with eta's own panels as before. Measured: the worst |fixed - adaptive at
-// 1e-10| on the test's grid (tests/integrate_dielectric_btdf.cpp) 6.8e-8 (1.0e-7 before), on a
-// grid between its nodes 5.4e-8; evaluations per texel 2,083 counted per eta (1,607 before: the
-// Fresnel panels kept above sqrt(2)), of which a 40-eta column walks ~52 per texel; cost in
-// docs/models.md section 16 and the README.
+// eta only F and the refracted ray by the E columns' forms (dielectric_albedo.cpp, "Columns";
+// dielectric_lanes::EtaTerms): T_f = 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2) from g =
+// sqrt(c^2 + eta^2 - 1) = eta cos_t, the weight c / cos_m / (gDen + mu Lambda(t)) as wb p / (p +
+// kh s_t^2): 2 square roots and 2 divisions per eta, two etas per lane pair. Each eta's sums are
+// its own, in the walk's order: a column of one (a single point: the lookup-error search, kiln
+// verify) gives the bits the column gives. Below 1.1 (eta in [1, 1.1): the reference's and tests'
+// points, off the table) the per-point walk with eta's own panels as before. Measured: the worst
+// |fixed - adaptive at 1e-10| on the test's grid (tests/integrate_dielectric_btdf.cpp) 6.8e-8
+// (1.0e-7 before), on a grid between its nodes 5.4e-8; evaluations per texel 2,083 counted per eta
+// (1,607 before: the Fresnel panels kept above sqrt(2)), of which a 40-eta column walks ~52 per
+// texel; cost in docs/models.md section 16 and the README.
 #include "baker/integrate/dielectric_btdf.h"
 
 #include <algorithm>

@@ -52,8 +52,8 @@ inline void Store(double* p, Pair a) {
 }
 #endif
 
-/// A column walk's per-view constants of the refracted ray's masking: a2 = alpha^2, oma2 = 1 -
-/// a2, kh = mu a2 / (2 gDen) (gDen = mu + mu Lambda(o)).
+/// A column walk's per-view constants of the refracted ray's masking (EtaTerms): a2 = alpha^2,
+/// oma2 = 1 - a2, kh = mu a2 / (2 gDen) (gDen = mu + mu Lambda(o)).
 struct RingConsts {
   double a2, oma2, kh;
 };
@@ -63,12 +63,10 @@ inline RingConsts RingConstsOf(double mu, double gDen, double alpha) {
 }
 
 /// The column walks' per-eta quantities at cosine c = min(o.m, 1) for two etas (eta2m1 = eta^2 -
-/// 1, eta2 = eta^2, inv = 1 / eta), the derivation in dielectric_albedo.cpp ("Columns"): Fresnel's
-/// transmittance Tf = 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2) into *tf (g = sqrt(c^2 + eta^2 -
-/// 1) = eta cos_t, a = c + g, b = eta^2 c + g: every term positive), the refracted ray's mu_t =
-/// (mu - (c - g) cos_m) / eta, p = mu_t (sqrt(alpha^2 + (1 - alpha^2) mu_t^2) + mu_t) into *p and
-/// den = p + kh s_t^2 into *den, so that wb p / den = w (c / cos_m) / (gDen + mu Lambda(t)).
-/// dielectric_simd.cpp's EtaTerms does the same operations in the same order.
+/// 1, eta2 = eta^2, inv = 1 / eta), as derived in dielectric_albedo.cpp ("Columns"): Fresnel's
+/// transmittance Tf = 1 - F into *tf, the refracted ray's p into *p and den = p + kh s_t^2 into
+/// *den (kh, oma2, a2: RingConstsOf), so that wb p / den is the refracted term's weight for wb =
+/// w (c / cos_m) / gDen. dielectric_simd.cpp's EtaTerms does the same operations in the same order.
 inline void EtaTerms(Pair c, Pair eta2m1, Pair eta2, Pair inv, Pair cosM, Pair mu, Pair a2,
                      Pair oma2, Pair kh, Pair* tf, Pair* p, Pair* den) {
   const Pair zero = Splat(0), one = Splat(1);

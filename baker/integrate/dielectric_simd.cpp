@@ -1,10 +1,10 @@
 // The glass walks' AVX-512F column paths (dielectric_simd.h; the exit walk's is
 // dielectric_simd_exit.cpp). Each function mirrors, operation for operation and in the same
 // order, the portable code it stands for in dielectric_albedo.cpp and dielectric_btdf.cpp
-// (ColumnWalk's and BtdfColumnWalk's node): std::min(a, b) is (b < a ? b : a), which
-// MINPD(b, a) computes ((b < a) ? b : a), likewise max; a branch becomes a mask and a
-// select. Compiled for AVX-512F only (no FMA: no contraction of a * b + c), so every lane's
-// result has the portable code's bits.
+// (ColumnWalk's and BtdfColumnWalk's node; their per-eta part dielectric_lanes::EtaTerms):
+// std::min(a, b) is (b < a ? b : a), which MINPD(b, a) computes ((b < a) ? b : a), likewise max; a
+// branch becomes a mask and a select. Compiled for AVX-512F only (no FMA: no contraction of a * b +
+// c), so every lane's result has the portable code's bits.
 #include "baker/integrate/dielectric_simd.h"
 
 #include <atomic>

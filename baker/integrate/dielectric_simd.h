@@ -96,12 +96,12 @@ void PhiBreaks8(const ExitPhiView& v, const double* cosM, const double* sinM, in
 struct ColumnRing {
   double A, B, cosM, mu, gDen, a2;
   double oma2;  ///< 1 - a2
-  double kh;    ///< mu a2 / (2 gDen): the refracted ray's masking over the view's (ColumnTerms)
+  double kh;    ///< mu a2 / (2 gDen): the refracted ray's masking over the view's (EtaTerms)
 };
 
 /// The column walk's per-node shared part at the J nodes (phi, w) of ring r: c > 0 marks the
 /// node visited (valid[j] = 1, else 0 and the rest unset), wR the reflected term's weight (0
-/// where the reflected ray goes down), wb = w c / cos_m, cc = min(c, 1). Needs Enabled().
+/// where the reflected ray goes down), wb = w (c / cos_m) / gDen, cc = min(c, 1). Needs Enabled().
 void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
                       unsigned char* valid, double* wR, double* wb, double* cc);
 /// The same without wR (the BTDF pair follows the refracted ray only).
@@ -109,9 +109,9 @@ void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int
                     unsigned char* valid, double* wb, double* cc);
 
 /// The column walk's per-eta terms of one ring, eight etas per instruction: for every valid node
-/// j in order and every eta e < 8 * groups, ring0[e] += wR F, ring1[e] += wb (1 - F) p / (gDen p +
-/// mu a2 s_t^2) (ColumnWalk's expressions). eta2m1, eta2, inv: 8 * groups entries each.
-/// Needs Enabled().
+/// j in order and every eta e < 8 * groups, ring0[e] += wR (1 - Tf), ring1[e] += wb Tf p / den
+/// (Tf = 1 - F, p and den by dielectric_lanes::EtaTerms, ColumnWalk's expressions). eta2m1,
+/// eta2, inv: 8 * groups entries each. Needs Enabled().
 void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
                     const double* wb, const double* cc, int J, const double* eta2m1,
                     const double* eta2, const double* inv, int groups, double* ring0,
@@ -125,8 +125,8 @@ void ColumnRingOneEta(const ColumnRing& r, const unsigned char* valid, const dou
                       double inv, double* tR, double* tT);
 
 /// The BTDF pair's column walk (dielectric_btdf.cpp, BtdfColumnWalk) likewise: per valid node
-/// j in order and eta e < 8 * groups, t = wb p / (gDen p + mu a2 s_t^2), ring0[e] += t,
-/// ring1[e] += t F. Needs Enabled().
+/// j in order and eta e < 8 * groups, t = wb p / den, ring0[e] += t, ring1[e] += t (1 - Tf).
+/// Needs Enabled().
 void BtdfRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wb,
                   const double* cc, int J, const double* eta2m1, const double* eta2,
                   const double* inv, int groups, double* ring0, double* ring1);
