@@ -6,6 +6,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -27,6 +28,7 @@ struct Column {
   double a, b;
   std::vector<size_t> texels;
   std::vector<double> etas;
+  std::vector<std::array<double, 3>> points;  ///< each texel's evaluation point (kept for store)
 };
 
 }  // namespace
@@ -58,12 +60,13 @@ void BakeDielectricColumns(const TableSpec& spec, int threads, const DielectricC
     const auto key = std::make_pair(BitsOf(a), BitsOf(b));
     auto it = open.find(key);
     if (it == open.end() || columns[it->second].texels.size() >= kMaxDielectricColumn) {
-      columns.push_back({a, b, {}, {}});
+      columns.push_back({a, b, {}, {}, {}});
       open[key] = columns.size() - 1;
       it = open.find(key);
     }
     columns[it->second].texels.push_back(i);
     columns[it->second].etas.push_back(eta);
+    columns[it->second].points.push_back({x[0], x[1], x[2]});
   }
   auto put = [&](size_t i, const std::vector<double>& v, long long e, double err) {
     for (size_t c = 0; c < nc; ++c) table.data[i * nc + c] = static_cast<float>(v[c]);
@@ -81,21 +84,18 @@ void BakeDielectricColumns(const TableSpec& spec, int threads, const DielectricC
                           put(alone[k], EvaluateSpec(spec, x, st), st.evals, st.errorEstimate);
                         }
                       });
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, columns.size(), 1),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t k = r.begin(); k != r.end(); ++k) {
-                          const Column& col = columns[k];
-                          const int m = static_cast<int>(col.etas.size());
-                          std::vector<std::array<double, 2>> out(m);
-                          long long e = 0;
-                          how.column(col.a, col.b, col.etas.data(), m, out.data(), &e);
-                          for (int j = 0; j < m; ++j) {
-                            double x[3];
-                            NodeEvaluationPoint(spec, col.texels[j], x);
-                            put(col.texels[j], how.store(x, out[j]), e, how.bound);
-                          }
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, columns.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t k = r.begin(); k != r.end(); ++k) {
+            const Column& col = columns[k];
+            const int m = static_cast<int>(col.etas.size());
+            std::vector<std::array<double, 2>> out(m);
+            long long e = 0;
+            how.column(col.a, col.b, col.etas.data(), m, out.data(), &e);
+            for (int j = 0; j < m; ++j)
+              put(col.texels[j], how.store(col.points[j].data(), out[j]), e, how.bound);
+          }
+        });
   });
 }
 
