@@ -2,7 +2,9 @@
 // four azimuth nodes at once with the same operations in the same order (LogFast4 and ExpFast4
 // have LogFast's and ExpFast's bits in each lane, 0 below kExpUnderflow as ExpFast); a lane
 // outside their tables (sin^2(theta_h) not a normal positive double, or an exp argument in
-// [kExpUnderflow, -kExpFastMaxAbs)) takes SheenNdf itself.
+// [kExpUnderflow, -kExpFastMaxAbs)) takes SheenNdf itself. The AVX-512F form does the AVX2 form's
+// operations eight nodes at a time (masks for its compares, MINPD / MAXPD with its operand order,
+// no fused multiply-add: -ffp-contract=off), the terms added in node order: the same bits.
 #include "baker/integrate/fixed_rule_sheen_row.h"
 
 #include <algorithm>
@@ -11,7 +13,9 @@
 #include "baker/math/constants.h"
 #include "baker/math/fast_exp_log.h"
 #if defined(__x86_64__)
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/math/fast_exp_log_avx2.h"
+#include "baker/math/fast_exp_log_avx512.h"
 #endif
 
 namespace kiln {
@@ -124,12 +128,85 @@ KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, doub
   return j;
 }
 
+/// ExpOrZero4 in eight lanes.
+KILN_AVX512F inline __m512d ExpOrZero8(__m512d arg) {
+  const __m512d e = ExpFast8(_mm512_maskz_max_pd(0xFF, arg, _mm512_set1_pd(-kExpFastMaxAbs)));
+  return _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(arg, _mm512_set1_pd(kExpUnderflow), _CMP_GE_OQ), e);
+}
+
+/// SheenRowSumAvx2's lanes eight at a time (AVX-512F, where dielectric_simd::Enabled()): the
+/// same operations, each lane's term added to `row` in node order; returns how many nodes it
+/// took (a multiple of 8).
+KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
+  const double alpha = ndf.alpha, a2 = alpha * alpha;
+  if (ndf.velvet && !(a2 > 0)) return 0;  // D = norm everywhere: the scalar form
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+  const __m512d sinT = _mm512_set1_pd(r.sinT), woX = _mm512_set1_pd(r.woX);
+  const double szs = r.woZ + r.muL;
+  const __m512d sz2 = _mm512_set1_pd(szs * szs), v = _mm512_set1_pd(r.v);
+  const __m512d minArg = _mm512_set1_pd(-kExpFastMaxAbs), minNormal = _mm512_set1_pd(kMinNormal);
+  const __m512d underflow = _mm512_set1_pd(kExpUnderflow);
+  const __m512d charlieK = _mm512_set1_pd(0.5 / alpha), charlieC = _mm512_set1_pd(2 + 1 / alpha);
+  const __m512d twoPi = _mm512_set1_pd(2 * Pi), a2v = _mm512_set1_pd(a2), four = _mm512_set1_pd(4);
+  const __m512d velvetNorm = _mm512_set1_pd(1 / (Pi * (1 + 4 * a2)));
+  alignas(64) double dv[8], s2v[8], argv[8], tv[8];
+  size_t j = 0;
+  for (; j + 8 <= r.n; j += 8) {
+    const __m512d sx = _mm512_add_pd(woX, _mm512_mul_pd(sinT, _mm512_loadu_pd(r.cosPhi + j)));
+    const __m512d sy = _mm512_add_pd(zero, _mm512_mul_pd(sinT, _mm512_loadu_pd(r.sinPhi + j)));
+    const __m512d xy = _mm512_add_pd(_mm512_mul_pd(sx, sx), _mm512_mul_pd(sy, sy));
+    const __m512d len2 = _mm512_add_pd(xy, sz2);
+    const __mmask8 ok = _mm512_cmp_pd_mask(len2, zero, _CMP_GT_OQ);
+    // min(one, max(q, zero)) as MINPD / MAXPD with the AVX2 form's operand order.
+    const __m512d q = _mm512_div_pd(xy, len2);
+    const __m512d s2 =
+        _mm512_maskz_mov_pd(ok, _mm512_maskz_min_pd(0xFF, one, _mm512_maskz_max_pd(0xFF, q, zero)));
+    const __m512d s2c = _mm512_maskz_max_pd(0xFF, s2, minNormal);
+    __m512d arg, d;
+    if (!ndf.velvet) {
+      arg = _mm512_mul_pd(LogFast8(s2c), charlieK);
+      d = _mm512_div_pd(_mm512_mul_pd(charlieC, ExpOrZero8(arg)), twoPi);
+    } else {
+      arg = _mm512_sub_pd(zero, _mm512_div_pd(_mm512_sub_pd(one, s2c), _mm512_mul_pd(a2v, s2c)));
+      const __m512d e = ExpOrZero8(arg);
+      d = _mm512_mul_pd(velvetNorm, _mm512_add_pd(one, _mm512_div_pd(_mm512_mul_pd(four, e),
+                                                                     _mm512_mul_pd(s2c, s2c))));
+    }
+    // Lanes off the tables: SheenNdf itself (as the AVX2 form).
+    const __mmask8 off = _mm512_cmp_pd_mask(s2, minNormal, _CMP_NGE_UQ) |
+                         (_mm512_cmp_pd_mask(arg, minArg, _CMP_LT_OQ) &
+                          _mm512_cmp_pd_mask(arg, underflow, _CMP_GE_OQ));
+    if (off != 0) {
+      _mm512_store_pd(dv, d);
+      _mm512_store_pd(s2v, s2);
+      _mm512_store_pd(argv, arg);
+      for (int l = 0; l < 8; ++l)
+        if (!(s2v[l] >= kMinNormal) || (argv[l] < -kExpFastMaxAbs && argv[l] >= kExpUnderflow))
+          dv[l] = SheenNdf(ndf, s2v[l]);
+      d = _mm512_load_pd(dv);
+    }
+    const __m512d term =
+        _mm512_mul_pd(_mm512_loadu_pd(r.ws + j), _mm512_maskz_mov_pd(ok, _mm512_mul_pd(d, v)));
+    _mm512_store_pd(tv, term);
+    for (double t : tv) row += t;
+  }
+  return j;
+}
+
 }  // namespace
 
 double SheenRowSum(const SheenRowNdf& ndf, const SheenRow& r) {
   double row = 0;
   size_t j = 0;
-  if (HasAvx2()) j = SheenRowSumAvx2(ndf, r, row);
+  if (dielectric_simd::Enabled()) j = SheenRowSumAvx512(ndf, r, row);
+  if (HasAvx2() && r.n - j >= 4) {
+    SheenRow rest = r;
+    rest.cosPhi += j;
+    rest.sinPhi += j;
+    rest.ws += j;
+    rest.n -= j;
+    j += SheenRowSumAvx2(ndf, rest, row);
+  }
   for (; j < r.n; ++j) row += NodeTerm(ndf, r, j);
   return row;
 }

@@ -1,6 +1,7 @@
 // One row of the sheen fixed rule (fixed_rule_sheen.cpp): at a light cosine mu_l, the sum over
 // the azimuth nodes psi_j of ws_j D(h_j) V, D the Charlie or velvet NDF (models/sheen.h) with the
-// inline exp and log (math/fast_exp_log.h), four nodes per AVX2 instruction where the CPU has it.
+// inline exp and log (math/fast_exp_log.h), eight nodes per AVX-512F instruction where those paths
+// run (dielectric_simd::Enabled()), then four per AVX2 instruction where the CPU has it.
 // The lanes give the scalar form's bits (tests/integrate_fixed_rule_sheen_row.cpp).
 #pragma once
 #include <cstddef>
