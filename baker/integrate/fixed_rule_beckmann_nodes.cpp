@@ -276,7 +276,7 @@ KILN_AVX512F inline __m512d Ratio8(const BeckmannNodeView& v, __m512d S, __m512d
 }
 
 /// The AVX2 loop's body eight nodes at a time (AVX-512F, where dielectric_simd::Enabled()): the
-/// same operations, masks for its compares; returns how many nodes it took (a multiple of 8).
+/// same operations, masks for its compares, the last block masked; takes all n nodes.
 KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, const double* t,
                                         const double* weight, int n, double& sumV, double& sumB) {
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1), two = _mm512_set1_pd(2);
@@ -287,8 +287,10 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
   const __m512d gNum = _mm512_set1_pd(v.gNum), gDenO = _mm512_set1_pd(v.gDenO);
   const __m512d gRatio = _mm512_set1_pd(v.gRatio);
   int i = 0;
-  for (; i + 8 <= n; i += 8) {
-    const __m512d tt = _mm512_loadu_pd(t + i);
+  for (; i < n; i += 8) {
+    // The last block's lanes beyond n load 0 and add nothing (`in`).
+    const __mmask8 in = n - i >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - i)) - 1);
+    const __m512d tt = _mm512_maskz_loadu_pd(in, t + i);
     const __m512d t2 = _mm512_mul_pd(tt, tt), C = _mm512_sub_pd(one, t2);
     const __m512d q = _mm512_add_pd(one, t2);
     const __m512d S = _mm512_mul_pd(two, tt), aS = _mm512_mul_pd(a, S);
@@ -301,7 +303,7 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
         _mm512_maskz_sqrt_pd(0xFF, _mm512_mul_pd(_mm512_sub_pd(M2, N1), _mm512_add_pd(M2, N1)));
     const __m512d r = Ratio8(v, S, q, C2, aS2, invM2);
     const int add =
-        _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(r, zero, _CMP_NEQ_UQ);
+        in & _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(r, zero, _CMP_NEQ_UQ);
     if (add == 0) continue;
     const __m512d x = _mm512_div_pd(N1, _mm512_mul_pd(a, rootL));
     const __m512d xc = _mm512_maskz_max_pd(0xFF, _mm512_maskz_min_pd(0xFF, x, psiMax), zero);
@@ -316,7 +318,7 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
     const __m512d gN = _mm512_mask_blend_pd(lam, gRatio, gNl);
     const __m512d gD = _mm512_mask_blend_pd(lam, one, gDl);
     const __m512d shape = _mm512_mul_pd(
-        _mm512_mul_pd(_mm512_loadu_pd(weight + i), tt),
+        _mm512_mul_pd(_mm512_maskz_loadu_pd(in, weight + i), tt),
         _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(twoOxs, cc), tt), _mm512_mul_pd(ozs, C)));
     const __m512d q3 = _mm512_mul_pd(_mm512_mul_pd(q, q), q);
     const __m512d val =
@@ -335,7 +337,7 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
         sumB += bv[l];
       }
   }
-  return i;
+  return n;
 }
 
 }  // namespace

@@ -135,8 +135,8 @@ KILN_AVX512F inline __m512d ExpOrZero8(__m512d arg) {
 }
 
 /// SheenRowSumAvx2's lanes eight at a time (AVX-512F, where dielectric_simd::Enabled()): the
-/// same operations, each lane's term added to `row` in node order; returns how many nodes it
-/// took (a multiple of 8).
+/// same operations, each lane's term added to `row` in node order, the last block masked;
+/// returns how many nodes it took (all, or 0 for the scalar form's case).
 KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
   const double alpha = ndf.alpha, a2 = alpha * alpha;
   if (ndf.velvet && !(a2 > 0)) return 0;  // D = norm everywhere: the scalar form
@@ -151,9 +151,14 @@ KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r,
   const __m512d velvetNorm = _mm512_set1_pd(1 / (Pi * (1 + 4 * a2)));
   alignas(64) double dv[8], s2v[8], argv[8], tv[8];
   size_t j = 0;
-  for (; j + 8 <= r.n; j += 8) {
-    const __m512d sx = _mm512_add_pd(woX, _mm512_mul_pd(sinT, _mm512_loadu_pd(r.cosPhi + j)));
-    const __m512d sy = _mm512_add_pd(zero, _mm512_mul_pd(sinT, _mm512_loadu_pd(r.sinPhi + j)));
+  for (; j < r.n; j += 8) {
+    // The last block's lanes beyond n load 0 and add nothing (`in`).
+    const size_t count = std::min<size_t>(8, r.n - j);
+    const __mmask8 in = static_cast<__mmask8>((1u << count) - 1);
+    const __m512d sx =
+        _mm512_add_pd(woX, _mm512_mul_pd(sinT, _mm512_maskz_loadu_pd(in, r.cosPhi + j)));
+    const __m512d sy =
+        _mm512_add_pd(zero, _mm512_mul_pd(sinT, _mm512_maskz_loadu_pd(in, r.sinPhi + j)));
     const __m512d xy = _mm512_add_pd(_mm512_mul_pd(sx, sx), _mm512_mul_pd(sy, sy));
     const __m512d len2 = _mm512_add_pd(xy, sz2);
     const __mmask8 ok = _mm512_cmp_pd_mask(len2, zero, _CMP_GT_OQ);
@@ -173,24 +178,24 @@ KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r,
                                                                      _mm512_mul_pd(s2c, s2c))));
     }
     // Lanes off the tables: SheenNdf itself (as the AVX2 form).
-    const __mmask8 off = _mm512_cmp_pd_mask(s2, minNormal, _CMP_NGE_UQ) |
-                         (_mm512_cmp_pd_mask(arg, minArg, _CMP_LT_OQ) &
-                          _mm512_cmp_pd_mask(arg, underflow, _CMP_GE_OQ));
+    const __mmask8 off = in & (_mm512_cmp_pd_mask(s2, minNormal, _CMP_NGE_UQ) |
+                               (_mm512_cmp_pd_mask(arg, minArg, _CMP_LT_OQ) &
+                                _mm512_cmp_pd_mask(arg, underflow, _CMP_GE_OQ)));
     if (off != 0) {
       _mm512_store_pd(dv, d);
       _mm512_store_pd(s2v, s2);
       _mm512_store_pd(argv, arg);
-      for (int l = 0; l < 8; ++l)
+      for (size_t l = 0; l < count; ++l)
         if (!(s2v[l] >= kMinNormal) || (argv[l] < -kExpFastMaxAbs && argv[l] >= kExpUnderflow))
           dv[l] = SheenNdf(ndf, s2v[l]);
       d = _mm512_load_pd(dv);
     }
-    const __m512d term =
-        _mm512_mul_pd(_mm512_loadu_pd(r.ws + j), _mm512_maskz_mov_pd(ok, _mm512_mul_pd(d, v)));
+    const __m512d term = _mm512_mul_pd(_mm512_maskz_loadu_pd(in, r.ws + j),
+                                       _mm512_maskz_mov_pd(ok, _mm512_mul_pd(d, v)));
     _mm512_store_pd(tv, term);
-    for (double t : tv) row += t;
+    for (size_t l = 0; l < count; ++l) row += tv[l];
   }
-  return j;
+  return r.n;
 }
 
 }  // namespace

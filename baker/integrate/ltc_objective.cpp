@@ -131,7 +131,7 @@ KILN_LTC_AVX512 inline __m256d AddEight(__m256d sum, __m512d term) {
   return _mm256_add_pd(sum, _mm512_maskz_extractf64x4_pd(0xF, term, 1));
 }
 
-/// LtcCrossSumAvx2's terms eight at a time; returns how many points it took (a multiple of 8).
+/// LtcCrossSumAvx2's terms eight at a time, the last block masked; takes all n points.
 KILN_LTC_AVX512 size_t LtcCrossSumAvx512(const LtcMatrix& ltc, const double* px, const double* py,
                                          const double* pz, const double* pc, size_t n,
                                          double* acc) {
@@ -141,20 +141,23 @@ KILN_LTC_AVX512 size_t LtcCrossSumAvx512(const LtcMatrix& ltc, const double* px,
   const __m512d scale = _mm512_set1_pd(kLtcInvPi * ltc.detInv), zero = _mm512_setzero_pd();
   __m256d sum = _mm256_loadu_pd(acc);
   size_t k = 0;
-  for (; k + 8 <= n; k += 8) {
-    const __m512d x = _mm512_loadu_pd(px + k), y = _mm512_loadu_pd(py + k);
-    const __m512d z = _mm512_loadu_pd(pz + k);
+  for (; k < n; k += 8) {
+    // The last block's lanes beyond n load 0 and add +0 (a partial sum is never -0: every term
+    // is >= +0 or NaN).
+    const __mmask8 in = n - k >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - k)) - 1);
+    const __m512d x = _mm512_maskz_loadu_pd(in, px + k), y = _mm512_maskz_loadu_pd(in, py + k);
+    const __m512d z = _mm512_maskz_loadu_pd(in, pz + k);
     const __m512d qx = _mm512_add_pd(_mm512_mul_pd(i0, x), _mm512_mul_pd(i2, z));
     const __m512d qy = _mm512_mul_pd(i4, y);
     const __m512d qz = _mm512_add_pd(_mm512_mul_pd(i6, x), _mm512_mul_pd(i8, z));
     const __m512d len2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(qx, qx), _mm512_mul_pd(qy, qy)),
                                        _mm512_mul_pd(qz, qz));
-    const __m512d d = _mm512_div_pd(_mm512_mul_pd(_mm512_maskz_max_pd(0xFF, zero, qz), scale),
-                                    _mm512_mul_pd(len2, len2));
-    sum = AddEight(sum, _mm512_mul_pd(_mm512_loadu_pd(pc + k), d));
+    const __m512d d = _mm512_maskz_div_pd(
+        in, _mm512_mul_pd(_mm512_maskz_max_pd(0xFF, zero, qz), scale), _mm512_mul_pd(len2, len2));
+    sum = AddEight(sum, _mm512_mul_pd(_mm512_maskz_loadu_pd(in, pc + k), d));
   }
   _mm256_storeu_pd(acc, sum);
-  return k;
+  return n;
 }
 
 /// LtcOwnSumAvx2's terms eight at a time (as LtcCrossSumAvx512).
@@ -166,9 +169,11 @@ KILN_LTC_AVX512 size_t LtcOwnSumAvx512(const LtcMatrix& ltc, const double* cx, c
   const __m512d kk = _mm512_set1_pd(kLtcInvPi * ltc.detInv);
   __m256d sum = _mm256_loadu_pd(acc);
   size_t j = 0;
-  for (; j + 8 <= n; j += 8) {
-    const __m512d x = _mm512_loadu_pd(cx + j), y = _mm512_loadu_pd(cy + j);
-    const __m512d z = _mm512_loadu_pd(cz + j);
+  for (; j < n; j += 8) {
+    // (the last block as LtcCrossSumAvx512's: its missing terms are +0)
+    const __mmask8 in = n - j >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - j)) - 1);
+    const __m512d x = _mm512_maskz_loadu_pd(in, cx + j), y = _mm512_maskz_loadu_pd(in, cy + j);
+    const __m512d z = _mm512_maskz_loadu_pd(in, cz + j);
     const __m512d ax = _mm512_add_pd(_mm512_mul_pd(m0, x), _mm512_mul_pd(m2, z));
     const __m512d ay = _mm512_mul_pd(m4, y);
     const __m512d az = _mm512_add_pd(_mm512_mul_pd(m6, x), _mm512_mul_pd(m8, z));
@@ -180,7 +185,7 @@ KILN_LTC_AVX512 size_t LtcOwnSumAvx512(const LtcMatrix& ltc, const double* cx, c
     sum = AddEight(sum, d);
   }
   _mm256_storeu_pd(acc, sum);
-  return j;
+  return n;
 }
 
 }  // namespace
