@@ -128,7 +128,9 @@ KILN_AVX2 inline __m256d BeckmannPsi4(__m256d x) {
 
 /// The SSE2 loop's body four nodes at a time; returns how many nodes it took (a multiple of 4).
 KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const double* t,
-                                   const double* weight, int n, double& sumV, double& sumB) {
+                                   const double* weight, int n, double& sumVOut, double& sumBOut) {
+  // (the sums in registers: through the references they would be stored and reloaded each node)
+  double sumV = sumVOut, sumB = sumBOut;
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), two = _mm256_set1_pd(2);
   const __m256d a = _mm256_set1_pd(v.a), mu = _mm256_set1_pd(v.mu), cc = _mm256_set1_pd(c);
   const __m256d twoSt = _mm256_set1_pd(2 * v.st), st = _mm256_set1_pd(v.st);
@@ -214,6 +216,8 @@ KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const do
         sumB += bv[l];
       }
   }
+  sumVOut = sumV;
+  sumBOut = sumB;
   return i;
 }
 
@@ -278,7 +282,10 @@ KILN_AVX512F inline __m512d Ratio8(const BeckmannNodeView& v, __m512d S, __m512d
 /// The AVX2 loop's body eight nodes at a time (AVX-512F, where dielectric_simd::Enabled()): the
 /// same operations, masks for its compares, the last block masked; takes all n nodes.
 KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, const double* t,
-                                        const double* weight, int n, double& sumV, double& sumB) {
+                                        const double* weight, int n, double& sumVOut,
+                                        double& sumBOut) {
+  // (the sums in registers: through the references they would be stored and reloaded each node)
+  double sumV = sumVOut, sumB = sumBOut;
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1), two = _mm512_set1_pd(2);
   const __m512d a = _mm512_set1_pd(v.a), mu = _mm512_set1_pd(v.mu), cc = _mm512_set1_pd(c);
   const __m512d twoSt = _mm512_set1_pd(2 * v.st), st = _mm512_set1_pd(v.st);
@@ -306,17 +313,22 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
         in & _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(r, zero, _CMP_NEQ_UQ);
     if (add == 0) continue;
     const __m512d x = _mm512_div_pd(N1, _mm512_mul_pd(a, rootL));
-    const __m512d xc = _mm512_maskz_max_pd(0xFF, _mm512_maskz_min_pd(0xFF, x, psiMax), zero);
-    const __m512d ePsi =
-        _mm512_mul_pd(ExpFast8(_mm512_sub_pd(zero, _mm512_mul_pd(xc, xc))), BeckmannPsi8(xc));
-    const __m512d x2 = _mm512_mul_pd(two, xc);
-    const __m512d gNl = _mm512_mul_pd(v.separable ? gRatio : gNum, x2);
-    const __m512d gDl = v.separable
-                            ? _mm512_add_pd(x2, ePsi)
-                            : _mm512_add_pd(_mm512_mul_pd(gDenO, x2), _mm512_mul_pd(mu, ePsi));
+    // g = gN / gD: gRatio / 1 where Lambda(l) vanishes (x >= 6), else MaskingQuotient's form; a
+    // block none of whose added lanes has Lambda(l) takes no exp and no psi.
     const __mmask8 lam = _mm512_cmp_pd_mask(x, psiMax, _CMP_LT_OQ);
-    const __m512d gN = _mm512_mask_blend_pd(lam, gRatio, gNl);
-    const __m512d gD = _mm512_mask_blend_pd(lam, one, gDl);
+    __m512d gN = gRatio, gD = one;
+    if ((lam & add) != 0) {
+      const __m512d xc = _mm512_maskz_max_pd(0xFF, _mm512_maskz_min_pd(0xFF, x, psiMax), zero);
+      const __m512d ePsi =
+          _mm512_mul_pd(ExpFast8(_mm512_sub_pd(zero, _mm512_mul_pd(xc, xc))), BeckmannPsi8(xc));
+      const __m512d x2 = _mm512_mul_pd(two, xc);
+      const __m512d gNl = _mm512_mul_pd(v.separable ? gRatio : gNum, x2);
+      const __m512d gDl = v.separable
+                              ? _mm512_add_pd(x2, ePsi)
+                              : _mm512_add_pd(_mm512_mul_pd(gDenO, x2), _mm512_mul_pd(mu, ePsi));
+      gN = _mm512_mask_blend_pd(lam, gRatio, gNl);
+      gD = _mm512_mask_blend_pd(lam, one, gDl);
+    }
     const __m512d shape = _mm512_mul_pd(
         _mm512_mul_pd(_mm512_maskz_loadu_pd(in, weight + i), tt),
         _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(twoOxs, cc), tt), _mm512_mul_pd(ozs, C)));
@@ -337,6 +349,8 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
         sumB += bv[l];
       }
   }
+  sumVOut = sumV;
+  sumBOut = sumB;
   return n;
 }
 

@@ -73,7 +73,8 @@ KILN_AVX2 inline __m256d ExpOrZero4(__m256d arg) {
 
 /// The row's first nodes four at a time, their terms added to `row` in node order; returns how
 /// many it took (a multiple of 4).
-KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
+KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, double& rowOut) {
+  double row = rowOut;  // (in a register: through the reference it would be stored each node)
   const double alpha = ndf.alpha, a2 = alpha * alpha;
   if (ndf.velvet && !(a2 > 0)) return 0;  // D = norm everywhere: the scalar form
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1);
@@ -125,6 +126,7 @@ KILN_AVX2 size_t SheenRowSumAvx2(const SheenRowNdf& ndf, const SheenRow& r, doub
     _mm256_store_pd(tv, term);
     for (double t : tv) row += t;
   }
+  rowOut = row;
   return j;
 }
 
@@ -137,7 +139,8 @@ KILN_AVX512F inline __m512d ExpOrZero8(__m512d arg) {
 /// SheenRowSumAvx2's lanes eight at a time (AVX-512F, where dielectric_simd::Enabled()): the
 /// same operations, each lane's term added to `row` in node order, the last block masked;
 /// returns how many nodes it took (all, or 0 for the scalar form's case).
-KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r, double& row) {
+KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r, double& rowOut) {
+  double row = rowOut;  // (in a register: through the reference it would be stored each node)
   const double alpha = ndf.alpha, a2 = alpha * alpha;
   if (ndf.velvet && !(a2 > 0)) return 0;  // D = norm everywhere: the scalar form
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
@@ -195,6 +198,7 @@ KILN_AVX512F size_t SheenRowSumAvx512(const SheenRowNdf& ndf, const SheenRow& r,
     _mm512_store_pd(tv, term);
     for (size_t l = 0; l < count; ++l) row += tv[l];
   }
+  rowOut = row;
   return r.n;
 }
 
