@@ -221,9 +221,35 @@ KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const do
   return i;
 }
 
+/// kBeckmannPsiCoeffs transposed, term k of the pieces 8 g .. 8 g + 7 at [k][g] (g = 0, 1, 2):
+/// what BeckmannPsi8's permutes pick from.
+struct PsiColumns {
+  alignas(64) double c[kBeckmannPsiTerms][3][8];
+};
+const PsiColumns& PsiTransposed() {
+  static const PsiColumns t = [] {
+    PsiColumns o{};
+    for (int k = 0; k < kBeckmannPsiTerms; ++k)
+      for (int i = 0; i < kBeckmannPsiPieces; ++i) o.c[k][i / 8][i % 8] = kBeckmannPsiCoeffs[i][k];
+    return o;
+  }();
+  return t;
+}
+static_assert(kBeckmannPsiPieces == 24, "BeckmannPsi8 picks a piece's terms from three registers");
+
+/// Term k of each lane's psi piece i (0..23): the table's value, picked by permutes (a gather's
+/// bits, without one): pieces 0..15 by a two-register permute, 16..23 by a one-register one.
+KILN_AVX512F inline __m512d PsiTerm8(const PsiColumns& t, __m512i i, __mmask8 high, int k) {
+  const __m512d lo =
+      _mm512_permutex2var_pd(_mm512_load_pd(t.c[k][0]), i, _mm512_load_pd(t.c[k][1]));
+  const __m512d hi = _mm512_maskz_permutexvar_pd(0xFF, i, _mm512_load_pd(t.c[k][2]));
+  return _mm512_mask_blend_pd(high, lo, hi);
+}
+
 /// c_k + c_(k+1) z of each lane's psi piece in eight lanes (as PsiPair4).
-KILN_AVX512F inline __m512d PsiPair8(const double* base, __m256i row, __m512d z, int k) {
-  return _mm512_add_pd(Gather8(base + k, row), _mm512_mul_pd(Gather8(base + k + 1, row), z));
+KILN_AVX512F inline __m512d PsiPair8(const PsiColumns& t, __m512i i, __mmask8 high, __m512d z,
+                                     int k) {
+  return _mm512_add_pd(PsiTerm8(t, i, high, k), _mm512_mul_pd(PsiTerm8(t, i, high, k + 1), z));
 }
 
 /// BeckmannPsi in eight lanes, x in [0, kBeckmannPsiMaxX] in each: BeckmannPsi4's operations.
@@ -234,15 +260,16 @@ KILN_AVX512F inline __m512d BeckmannPsi8(__m512d x) {
   const __m512d odd = _mm512_maskz_cvtepi32_pd(
       0xFF, _mm256_add_epi32(_mm256_add_epi32(i, i), _mm256_set1_epi32(1)));
   const __m512d z = _mm512_sub_pd(_mm512_mul_pd(_mm512_set1_pd(8), x), odd);
-  const __m256i row = _mm256_mullo_epi32(i, _mm256_set1_epi32(kBeckmannPsiTerms));
-  const double* base = &kBeckmannPsiCoeffs[0][0];
+  const __m512i i64 = _mm512_maskz_cvtepi32_epi64(0xFF, i);
+  const __mmask8 high = _mm512_cmp_epi64_mask(i64, _mm512_set1_epi64(16), _MM_CMPINT_NLT);
+  const PsiColumns& t = PsiTransposed();
   const __m512d z2 = _mm512_mul_pd(z, z), z4 = _mm512_mul_pd(z2, z2);
   const __m512d q0 =
-      _mm512_add_pd(PsiPair8(base, row, z, 0), _mm512_mul_pd(PsiPair8(base, row, z, 2), z2));
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 0), _mm512_mul_pd(PsiPair8(t, i64, high, z, 2), z2));
   const __m512d q1 =
-      _mm512_add_pd(PsiPair8(base, row, z, 4), _mm512_mul_pd(PsiPair8(base, row, z, 6), z2));
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 4), _mm512_mul_pd(PsiPair8(t, i64, high, z, 6), z2));
   const __m512d q2 =
-      _mm512_add_pd(PsiPair8(base, row, z, 8), _mm512_mul_pd(PsiPair8(base, row, z, 10), z2));
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 8), _mm512_mul_pd(PsiPair8(t, i64, high, z, 10), z2));
   return _mm512_add_pd(q0, _mm512_mul_pd(_mm512_add_pd(q1, _mm512_mul_pd(q2, z4)), z4));
 }
 
