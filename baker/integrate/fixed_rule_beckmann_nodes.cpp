@@ -399,8 +399,11 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
   const __m128d maxY = _mm_set1_pd(1e300), minArg = _mm_set1_pd(-kExpFastMaxAbs);
   int i = 0;
 #if defined(__x86_64__)
-  if (dielectric_simd::Enabled()) i = AddBeckmannNodesAvx512(v, c, t, weight, n, sumV, sumB);
-  if (HasAvx2()) i += AddBeckmannNodesAvx2(v, c, t + i, weight + i, n - i, sumV, sumB);
+  if (dielectric_simd::Enabled()) {  // (takes every node)
+    AddBeckmannNodesAvx512(v, c, t, weight, n, sumV, sumB);
+    return;
+  }
+  if (HasAvx2()) i = AddBeckmannNodesAvx2(v, c, t, weight, n, sumV, sumB);
 #endif
   for (; i + 2 <= n; i += 2) {
     const __m128d tt = _mm_loadu_pd(t + i);

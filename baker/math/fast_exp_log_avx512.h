@@ -11,6 +11,8 @@
 #include "baker/math/fast_exp_log.h"
 
 #define KILN_AVX512F __attribute__((target("avx512f")))
+/// (The lane functions below are always inlined into the AVX-512F loops that call them.)
+#define KILN_AVX512F_INLINE __attribute__((target("avx512f"), always_inline))
 
 namespace kiln {
 
@@ -53,7 +55,7 @@ KILN_AVX512F inline __m512d Lin8(__m512d r, double a, double b) {
 }
 
 /// ExpFast in eight lanes, |x| <= kExpFastMaxAbs in each: ExpFast4's operations.
-KILN_AVX512F inline __m512d ExpFast8(__m512d x) {
+KILN_AVX512F_INLINE inline __m512d ExpFast8(__m512d x) {
   const __m512d shift = _mm512_set1_pd(kExpShift);
   const __m512d kd =
       _mm512_sub_pd(_mm512_add_pd(_mm512_mul_pd(x, _mm512_set1_pd(kExpInvLn2N)), shift), shift);
@@ -76,7 +78,7 @@ KILN_AVX512F inline __m512d ExpFast8(__m512d x) {
 }
 
 /// LogFast in eight lanes, x normal, positive and finite in each: LogFast4's operations.
-KILN_AVX512F inline __m512d LogFast8(__m512d x) {
+KILN_AVX512F_INLINE inline __m512d LogFast8(__m512d x) {
   const __m512i bits = _mm512_castpd_si512(x);
   const __m512d e =
       _mm512_sub_pd(SmallToDouble8(_mm512_maskz_srli_epi64(0xFF, bits, 52)), _mm512_set1_pd(1023));
@@ -107,7 +109,7 @@ KILN_AVX512F inline __m512d LogFast8(__m512d x) {
 }
 
 /// Log1pNonNegative in eight lanes, y >= 0 finite in each: Log1pNonNegative4's operations.
-KILN_AVX512F inline __m512d Log1pNonNegative8(__m512d y) {
+KILN_AVX512F_INLINE inline __m512d Log1pNonNegative8(__m512d y) {
   const __m512d one = _mm512_set1_pd(1), u = _mm512_add_pd(one, y);
   const __m512d l = LogFast8(u);
   const __mmask8 small = _mm512_cmp_pd_mask(y, _mm512_set1_pd(0.75), _CMP_LT_OQ);
