@@ -69,6 +69,15 @@ TEST_CASE(
               part.n = count;
               INFO("AVX-512F " << avx512 << " nodes " << count);
               CHECK(SheenRowSum(ndf, part) == SheenRowSumScalar(ndf, part));
+              // Two rows sharing the azimuth nodes (SheenRowSum2): each its own bits.
+              SheenRow other = part;
+              other.muL = 0.5 * (muL + 0.3);
+              other.sinT = std::sqrt(1 - other.muL * other.muL);
+              other.v = 0.25 + other.muL;
+              double a = -1, b = -1;
+              SheenRowSum2(ndf, part, other, &a, &b);
+              CHECK(a == SheenRowSumScalar(ndf, part));
+              CHECK(b == SheenRowSumScalar(ndf, other));
             }
           dielectric_simd::SetEnabled(true);
           for (size_t j = 0; j < n; ++j) {

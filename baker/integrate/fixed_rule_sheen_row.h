@@ -32,6 +32,12 @@ struct SheenRow {
 /// sinT sinPhi_j, muL), as HalfSin2 (models/sheen.h).
 double SheenRowSum(const SheenRowNdf& ndf, const SheenRow& row);
 
+/// SheenRowSum of two rows that share their azimuth nodes (the same n, cosPhi, sinPhi and ws),
+/// into *sumA and *sumB: the same bits, the two rows' additions interleaved on the AVX-512F path
+/// (two independent chains of additions where one row's would be the loop's limit).
+void SheenRowSum2(const SheenRowNdf& ndf, const SheenRow& a, const SheenRow& b, double* sumA,
+                  double* sumB);
+
 /// The same one node at a time in scalar arithmetic (the lanes' reference).
 double SheenRowSumScalar(const SheenRowNdf& ndf, const SheenRow& row);
 
