@@ -154,7 +154,7 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
   // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
   // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
   // once per node (fixed_rule_sheen_row.h: the model's Parts' products D * V with the inline exp
-  // and log, four nodes at a time).
+  // and log, eight or four nodes at a time).
   // The rows are summed two at a time (SheenRowSum2: two independent chains of additions), their
   // terms added to the texel's sum in row order.
   const double lambdaO = LambdaOf(m, mu_o);

@@ -306,7 +306,6 @@ std::vector<Vec3> LtcLobe::SampleGrid(int n) const {
   for (int i = 0; i < n; ++i) {
     const double u1 = (i + 0.5) / n;
     Column& c = cols[size_t(i)];
-    c.reflect = true;
     if (kind_ == 4 && u1 < 0.25) {  // Sample's branches, in its order
       c = {std::sqrt(4 * u1), SafeSqrt(1 - 4 * u1), false};
     } else if (kind_ == 4 && u1 < 0.5) {
