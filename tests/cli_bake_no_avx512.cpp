@@ -1,7 +1,8 @@
 // kiln bake gives the same bytes on a CPU without AVX-512F: with KILN_NO_AVX512=1 (the portable
 // paths from the start) the glass tables that the AVX-512F paths bake (the exit E pair, whose
 // walk fuses multiply-adds and sums in eight lanes; the exit average; an entering column table)
-// are the bytes of a bake that takes them.
+// are the bytes of a bake that takes them; so are the tables whose fixed rules (Beckmann and
+// Blinn-Phong nodes, sheen rows) and LTC fits (the objective's sums) take AVX-512F lanes.
 #include <catch2/catch.hpp>
 
 #include "baker/integrate/dielectric_simd.h"
@@ -32,4 +33,34 @@ TEST_CASE("a bake with KILN_NO_AVX512=1 gives the glass tables' bytes", "[cli][b
     ++compared;
   }
   CHECK(compared == 4);
+}
+
+TEST_CASE(
+    "a bake with KILN_NO_AVX512=1 gives the bytes of the tables whose fixed rules and LTC fits "
+    "take AVX-512F lanes",
+    "[cli][bake][fixed-rule]") {
+  kiln::dielectric_simd::SetEnabled(true);
+  if (!kiln::dielectric_simd::Enabled())
+    WARN("no AVX-512F on this CPU: both bakes take the portable paths (compared with themselves)");
+  // Beckmann and Blinn-Phong nodes, sheen rows (Charlie, charlie-smith, velvet), the LTC
+  // objective's sums (ltc-beckmann: its norm by the Beckmann nodes too).
+  const std::string tables =
+      "beckmann-dfg,blinn-phong-dfg,beckmann-separable-dfg,charlie-dfg,charlie-smith-dfg,"
+      "ashikhmin-velvet-albedo,ltc-beckmann,ltc-charlie-smith";
+  ScratchDir fast("bake_rules_avx512"), portable("bake_rules_no_avx512");
+  const std::string args = "bake --size 12 -j 1 --no-lookup-error -q --only " + tables + " --out ";
+  const auto a = RunKilnFor(120, args + Quote(fast.path.string()), "KILN_NO_AVX512=0");
+  const auto b = RunKilnFor(120, args + Quote(portable.path.string()), "KILN_NO_AVX512=1");
+  INFO("stderr: " << a.err << " / " << b.err);
+  REQUIRE(a.exitCode == 0);
+  REQUIRE(b.exitCode == 0);
+  REQUIRE(fast.Entries() == portable.Entries());
+  int compared = 0;
+  for (const std::string& name : fast.Entries()) {
+    if (name.size() < 4 || name.substr(name.size() - 4) != ".exr") continue;
+    INFO(name);
+    CHECK(kiln::test::ReadFile(fast / name) == kiln::test::ReadFile(portable / name));
+    ++compared;
+  }
+  CHECK(compared == 10);  // the LTC tables are two files each
 }

@@ -1,8 +1,8 @@
 // The Beckmann-family nodes of the microfacet fixed rule (integrate/fixed_rule_beckmann_nodes.h):
-// the SSE2 lanes give the scalar form's bits, and both are within 1e-12 relative of the
-// straightforward integrand (std::exp, std::log1p, Lambda's erfc form, a division per quotient),
-// over views from the normal to grazing, roughness from 1e-6 to 1, both signs of the azimuth and
-// nodes from t = 0 to the horizon t = 1 (where the integrand vanishes or is cut).
+// the SSE2, AVX2 and AVX-512F lanes give the scalar form's bits, and both are within 1e-12 relative
+// of the straightforward integrand (std::exp, std::log1p, Lambda's erfc form, a division per
+// quotient), over views from the normal to grazing, roughness from 1e-6 to 1, both signs of the
+// azimuth and nodes from t = 0 to the horizon t = 1 (where the integrand vanishes or is cut).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/fixed_rule_beckmann_nodes.h"
 #include "baker/math/constants.h"
 
@@ -75,7 +76,7 @@ std::array<double, 2> Straightforward(const BeckmannNodeView& v, double c, doubl
 }  // namespace
 
 TEST_CASE(
-    "Beckmann-family nodes: the SSE2 lanes give the scalar form's bits, both the "
+    "Beckmann-family nodes: the SIMD lanes give the scalar form's bits, both the "
     "straightforward integrand's value to 1e-12 relative",
     "[integrate][fixed-rule][beckmann-nodes]") {
   std::mt19937_64 rng(0x32B2);
@@ -93,12 +94,20 @@ TEST_CASE(
             t[i] = i == 0 ? 0 : i == 32 ? 1 : i < 8 ? 1 - std::pow(u01(rng), 4) : u01(rng);
             w[i] = 0.01 + u01(rng);
           }
-          double v1 = 0, b1 = 0, v2 = 0, b2 = 0;
-          AddBeckmannNodes(v, c, t.data(), w.data(), 33, v1, b1);
-          AddBeckmannNodesScalar(v, c, t.data(), w.data(), 33, v2, b2);
           INFO("mu " << mu << " alpha " << alpha << " model " << model << " c " << c);
-          CHECK(v1 == v2);
-          CHECK(b1 == b2);
+          // Every path (AVX-512F on and off) and every mix of lanes: 33 = 4 x 8 + 1,
+          // 31 = 3 x 8 + 4 + 2 + 1, 14 = 8 + 4 + 2 nodes.
+          for (bool avx512 : {true, false})
+            for (int n : {33, 31, 14}) {
+              dielectric_simd::SetEnabled(avx512);
+              double v1 = 0, b1 = 0, v2 = 0, b2 = 0;
+              AddBeckmannNodes(v, c, t.data(), w.data(), n, v1, b1);
+              AddBeckmannNodesScalar(v, c, t.data(), w.data(), n, v2, b2);
+              INFO("AVX-512F " << avx512 << " nodes " << n);
+              CHECK(v1 == v2);
+              CHECK(b1 == b2);
+            }
+          dielectric_simd::SetEnabled(true);
           for (int i = 0; i < 33; ++i) {
             double vs = 0, bs = 0;
             AddBeckmannNodesScalar(v, c, &t[i], &w[i], 1, vs, bs);

@@ -1,7 +1,7 @@
-// The sheen fixed rule's rows (integrate/fixed_rule_sheen_row.h): the AVX2 lanes give the scalar
-// form's bits, and the scalar form is within 1e-12 relative of the model's own terms (CharlieD,
-// VelvetD and HalfSin2 of models/sheen.h, std::exp and std::log) at every node: views from the
-// normal to grazing, roughness from the tables' 0.045 to 1, lights from the horizon to the
+// The sheen fixed rule's rows (integrate/fixed_rule_sheen_row.h): the AVX2 and AVX-512F lanes give
+// the scalar form's bits, and the scalar form is within 1e-12 relative of the model's own terms
+// (CharlieD, VelvetD and HalfSin2 of models/sheen.h, std::exp and std::log) at every node: views
+// from the normal to grazing, roughness from the tables' 0.045 to 1, lights from the horizon to the
 // normal, azimuths over [0, pi] with the mirror (psi = 0) and the back (psi = pi) included.
 #include <catch2/catch.hpp>
 
@@ -9,6 +9,7 @@
 #include <random>
 #include <vector>
 
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/fixed_rule_sheen_row.h"
 #include "baker/models/sheen.h"
 
@@ -28,7 +29,7 @@ double ModelTerm(const SheenRowNdf& ndf, const SheenRow& r, size_t j) {
 }  // namespace
 
 TEST_CASE(
-    "Sheen rows: the AVX2 lanes give the scalar form's bits, the scalar form the model's "
+    "Sheen rows: the SIMD lanes give the scalar form's bits, the scalar form the model's "
     "terms to 1e-12 relative",
     "[integrate][fixed-rule][sheen-row]") {
   std::mt19937_64 rng(0x32C1);
@@ -59,7 +60,26 @@ TEST_CASE(
                              ws.data(),
                              n};
           INFO("velvet " << velvet << " r " << r << " mu_o " << muO << " mu_l " << muL);
-          CHECK(SheenRowSum(ndf, row) == SheenRowSumScalar(ndf, row));
+          // Every path (AVX-512F on and off) and every mix of lanes: 37 = 4 x 8 + 4 + 1 and
+          // 30 = 3 x 8 + 4 + 2 nodes.
+          for (bool avx512 : {true, false})
+            for (size_t count : {n, size_t(30)}) {
+              dielectric_simd::SetEnabled(avx512);
+              SheenRow part = row;
+              part.n = count;
+              INFO("AVX-512F " << avx512 << " nodes " << count);
+              CHECK(SheenRowSum(ndf, part) == SheenRowSumScalar(ndf, part));
+              // Two rows sharing the azimuth nodes (SheenRowSum2): each its own bits.
+              SheenRow other = part;
+              other.muL = 0.5 * (muL + 0.3);
+              other.sinT = std::sqrt(1 - other.muL * other.muL);
+              other.v = 0.25 + other.muL;
+              double a = -1, b = -1;
+              SheenRowSum2(ndf, part, other, &a, &b);
+              CHECK(a == SheenRowSumScalar(ndf, part));
+              CHECK(b == SheenRowSumScalar(ndf, other));
+            }
+          dielectric_simd::SetEnabled(true);
           for (size_t j = 0; j < n; ++j) {
             SheenRow one = row;
             one.cosPhi += j;

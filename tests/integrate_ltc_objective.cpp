@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/ltc_fit.h"
 #include "baker/integrate/ltc_objective.h"
 #include "baker/math/constants.h"
@@ -59,23 +60,27 @@ std::vector<LtcMatrix> Matrices() {
 TEST_CASE("The LTC objective's sums in lanes give the bits of one point at a time",
           "[integrate][ltc][ltc-objective]") {
   int checked = 0;
-  for (size_t n :
-       {size_t(0), size_t(1), size_t(2), size_t(3), size_t(64), size_t(255), size_t(256)}) {
+  for (size_t n : {size_t(0), size_t(1), size_t(2), size_t(3), size_t(64), size_t(255), size_t(256),
+                   size_t(30)}) {
     const Points p = RandomPoints(n, 17 + n);
     for (const LtcMatrix& m : Matrices()) {
-      const double cross = LtcCrossSum(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
       const double crossRef =
           LtcCrossSumScalar(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
-      REQUIRE(test::Bits(cross) == test::Bits(crossRef));
-      for (int power : {2, 3}) {
-        const double own = LtcOwnSum(m, p.x.data(), p.y.data(), p.z.data(), n, power);
-        const double ownRef = LtcOwnSumScalar(m, p.x.data(), p.y.data(), p.z.data(), n, power);
-        REQUIRE(test::Bits(own) == test::Bits(ownRef));
+      for (bool avx512 : {true, false}) {  // the AVX-512F lanes on and off
+        dielectric_simd::SetEnabled(avx512);
+        const double cross = LtcCrossSum(m, p.x.data(), p.y.data(), p.z.data(), p.w.data(), n);
+        REQUIRE(test::Bits(cross) == test::Bits(crossRef));
+        for (int power : {2, 3}) {
+          const double own = LtcOwnSum(m, p.x.data(), p.y.data(), p.z.data(), n, power);
+          const double ownRef = LtcOwnSumScalar(m, p.x.data(), p.y.data(), p.z.data(), n, power);
+          REQUIRE(test::Bits(own) == test::Bits(ownRef));
+        }
       }
+      dielectric_simd::SetEnabled(true);
       ++checked;
     }
   }
-  CHECK(checked == 7 * 135);
+  CHECK(checked == 8 * 135);
 }
 
 TEST_CASE(

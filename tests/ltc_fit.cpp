@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "baker/bake/bake.h"
@@ -214,4 +215,28 @@ TEST_CASE("A Charlie sheen lobe's proposal samples its albedo: Sample and Pdf ag
       INFO("r " << r << " mu " << mu << " samples " << norm << " albedo " << e);
       CHECK(std::fabs(norm - e) < 2e-3 * std::max(1.0, e));
     }
+}
+
+TEST_CASE("A lobe's sample grid is its n x n stratified samples, bit for bit", "[ltc]") {
+  // Every proposal kind: the microfacet ones (GGX, Beckmann, Blinn-Phong), the Charlie sheens
+  // (each of their three branches of u1), and kinds the grid takes sample by sample.
+  int compared = 0;
+  for (const char* model : {"ggx", "beckmann", "blinn-phong", "charlie", "charlie-smith",
+                            "ashikhmin-velvet", "lafortune", "lambert"})
+    for (double r : {0.05, 0.4, 1.0})
+      for (double mu : {LtcFitMu(0), 0.3, 1.0})
+        for (int n : {1, 7, 16}) {
+          const LtcLobe lobe(model, r, mu);
+          const std::vector<Vec3> grid = lobe.SampleGrid(n);
+          REQUIRE(grid.size() == size_t(n) * n);
+          for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+              const Vec3 want = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
+              const Vec3 got = grid[size_t(i) + size_t(n) * j];
+              INFO(model << " r " << r << " mu " << mu << " n " << n << " i " << i << " j " << j);
+              CHECK(std::memcmp(&got, &want, sizeof got) == 0);
+              ++compared;
+            }
+        }
+  CHECK(compared == 8 * 3 * 3 * (1 + 49 + 256));
 }

@@ -3,7 +3,9 @@
 // same operations in the same order (each lane's arithmetic is IEEE double, as the scalar's):
 // ExpFast2, Log1pNonNegative2 and BeckmannPsi2 give their scalar forms' bits in each lane, and a
 // branch becomes a mask where both sides are computed on clamped arguments and each lane keeps
-// its own (Blinn-Phong's exp below ExpFast's table, r < 1e-304, is taken lane by lane).
+// its own (Blinn-Phong's exp below ExpFast's table, r < 1e-304, is taken lane by lane). The AVX2
+// and AVX-512F forms do the same four and eight nodes at a time (-ffp-contract=off: no fused
+// multiply-add), each lane's terms added in node order.
 #include "baker/integrate/fixed_rule_beckmann_nodes.h"
 
 #include <cmath>
@@ -14,7 +16,9 @@
 #include <emmintrin.h>
 #endif
 #if defined(__x86_64__)
+#include "baker/integrate/dielectric_simd.h"
 #include "baker/math/fast_exp_log_avx2.h"
+#include "baker/math/fast_exp_log_avx512.h"
 #endif
 
 namespace kiln {
@@ -124,7 +128,9 @@ KILN_AVX2 inline __m256d BeckmannPsi4(__m256d x) {
 
 /// The SSE2 loop's body four nodes at a time; returns how many nodes it took (a multiple of 4).
 KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const double* t,
-                                   const double* weight, int n, double& sumV, double& sumB) {
+                                   const double* weight, int n, double& sumVOut, double& sumBOut) {
+  // (the sums in registers: through the references they would be stored and reloaded each node)
+  double sumV = sumVOut, sumB = sumBOut;
   const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1), two = _mm256_set1_pd(2);
   const __m256d a = _mm256_set1_pd(v.a), mu = _mm256_set1_pd(v.mu), cc = _mm256_set1_pd(c);
   const __m256d twoSt = _mm256_set1_pd(2 * v.st), st = _mm256_set1_pd(v.st);
@@ -210,7 +216,169 @@ KILN_AVX2 int AddBeckmannNodesAvx2(const BeckmannNodeView& v, double c, const do
         sumB += bv[l];
       }
   }
+  sumVOut = sumV;
+  sumBOut = sumB;
   return i;
+}
+
+/// kBeckmannPsiCoeffs transposed, term k of the pieces 8 g .. 8 g + 7 at [k][g] (g = 0, 1, 2):
+/// what BeckmannPsi8's permutes pick from.
+struct PsiColumns {
+  alignas(64) double c[kBeckmannPsiTerms][3][8];
+};
+const PsiColumns& PsiTransposed() {
+  static const PsiColumns t = [] {
+    PsiColumns o{};
+    for (int k = 0; k < kBeckmannPsiTerms; ++k)
+      for (int i = 0; i < kBeckmannPsiPieces; ++i) o.c[k][i / 8][i % 8] = kBeckmannPsiCoeffs[i][k];
+    return o;
+  }();
+  return t;
+}
+static_assert(kBeckmannPsiPieces == 24, "BeckmannPsi8 picks a piece's terms from three registers");
+
+/// Term k of each lane's psi piece i (0..23): the table's value, picked by permutes (a gather's
+/// bits, without one): pieces 0..15 by a two-register permute, 16..23 by a one-register one.
+KILN_AVX512F inline __m512d PsiTerm8(const PsiColumns& t, __m512i i, __mmask8 high, int k) {
+  const __m512d lo =
+      _mm512_permutex2var_pd(_mm512_load_pd(t.c[k][0]), i, _mm512_load_pd(t.c[k][1]));
+  const __m512d hi = _mm512_maskz_permutexvar_pd(0xFF, i, _mm512_load_pd(t.c[k][2]));
+  return _mm512_mask_blend_pd(high, lo, hi);
+}
+
+/// c_k + c_(k+1) z of each lane's psi piece in eight lanes (as PsiPair4).
+KILN_AVX512F inline __m512d PsiPair8(const PsiColumns& t, __m512i i, __mmask8 high, __m512d z,
+                                     int k) {
+  return _mm512_add_pd(PsiTerm8(t, i, high, k), _mm512_mul_pd(PsiTerm8(t, i, high, k + 1), z));
+}
+
+/// BeckmannPsi in eight lanes, x in [0, kBeckmannPsiMaxX] in each: BeckmannPsi4's operations.
+KILN_AVX512F inline __m512d BeckmannPsi8(__m512d x) {
+  const __m256i i =
+      _mm256_min_epi32(_mm512_maskz_cvttpd_epi32(0xFF, _mm512_mul_pd(x, _mm512_set1_pd(4))),
+                       _mm256_set1_epi32(kBeckmannPsiPieces - 1));
+  const __m512d odd = _mm512_maskz_cvtepi32_pd(
+      0xFF, _mm256_add_epi32(_mm256_add_epi32(i, i), _mm256_set1_epi32(1)));
+  const __m512d z = _mm512_sub_pd(_mm512_mul_pd(_mm512_set1_pd(8), x), odd);
+  const __m512i i64 = _mm512_maskz_cvtepi32_epi64(0xFF, i);
+  const __mmask8 high = _mm512_cmp_epi64_mask(i64, _mm512_set1_epi64(16), _MM_CMPINT_NLT);
+  const PsiColumns& t = PsiTransposed();
+  const __m512d z2 = _mm512_mul_pd(z, z), z4 = _mm512_mul_pd(z2, z2);
+  const __m512d q0 =
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 0), _mm512_mul_pd(PsiPair8(t, i64, high, z, 2), z2));
+  const __m512d q1 =
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 4), _mm512_mul_pd(PsiPair8(t, i64, high, z, 6), z2));
+  const __m512d q2 =
+      _mm512_add_pd(PsiPair8(t, i64, high, z, 8), _mm512_mul_pd(PsiPair8(t, i64, high, z, 10), z2));
+  return _mm512_add_pd(q0, _mm512_mul_pd(_mm512_add_pd(q1, _mm512_mul_pd(q2, z4)), z4));
+}
+
+/// r of eight nodes (the AVX2 loop's r, MINPD / MAXPD with its operand order): Beckmann's
+/// exp(-u) (1 + u)^2, Blinn-Phong's qm^2 exp(-K log1p(aS^2 / C^2)), lane by lane
+/// (BeckmannNodeRatio) where an exp falls below ExpFast's table.
+KILN_AVX512F inline __m512d Ratio8(const BeckmannNodeView& v, __m512d S, __m512d q, __m512d C2,
+                                   __m512d aS2, __m512d invM2) {
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+  const __mmask8 live = _mm512_cmp_pd_mask(C2, zero, _CMP_GT_OQ);
+  if (!v.blinnPhong) {
+    const __m512d maxU = _mm512_set1_pd(kBeckmannMaxU);
+    const __m512d sOverC2 = _mm512_div_pd(_mm512_mul_pd(S, S), C2);
+    const __m512d u = _mm512_maskz_min_pd(0xFF, sOverC2, maxU), u1 = _mm512_add_pd(one, u);
+    const __mmask8 keep = live & _mm512_cmp_pd_mask(sOverC2, maxU, _CMP_LT_OQ);
+    return _mm512_maskz_mov_pd(
+        keep, _mm512_mul_pd(_mm512_mul_pd(ExpFast8(_mm512_sub_pd(zero, u)), u1), u1));
+  }
+  const __m512d qm = _mm512_mul_pd(_mm512_mul_pd(q, q), invM2), qm2 = _mm512_mul_pd(qm, qm);
+  if (v.blinnK == 0) return qm2;
+  const __m512d minArg = _mm512_set1_pd(-kExpFastMaxAbs);
+  const __m512d y = _mm512_maskz_mov_pd(
+      live, _mm512_maskz_min_pd(0xFF, _mm512_div_pd(aS2, C2), _mm512_set1_pd(1e300)));
+  const __m512d arg = _mm512_mul_pd(_mm512_set1_pd(-v.blinnK), Log1pNonNegative8(y));
+  const __mmask8 low = live & _mm512_cmp_pd_mask(arg, minArg, _CMP_LT_OQ);
+  const __m512d r = _mm512_maskz_mov_pd(
+      live, _mm512_mul_pd(qm2, ExpFast8(_mm512_maskz_max_pd(0xFF, arg, minArg))));
+  if (low == 0) return r;
+  alignas(64) double c2[8], qmv[8], ao[8], rv[8];  // exp below ExpFast's table: lane by lane
+  _mm512_store_pd(c2, C2);
+  _mm512_store_pd(qmv, qm);
+  _mm512_store_pd(ao, _mm512_div_pd(aS2, C2));
+  for (int l = 0; l < 8; ++l) rv[l] = BeckmannNodeRatio(v, c2[l], 0, qmv[l], ao[l]);
+  return _mm512_load_pd(rv);
+}
+
+/// The AVX2 loop's body eight nodes at a time (AVX-512F, where dielectric_simd::Enabled()): the
+/// same operations, masks for its compares, the last block masked; takes all n nodes.
+KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, const double* t,
+                                        const double* weight, int n, double& sumVOut,
+                                        double& sumBOut) {
+  // (the sums in registers: through the references they would be stored and reloaded each node)
+  double sumV = sumVOut, sumB = sumBOut;
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1), two = _mm512_set1_pd(2);
+  const __m512d a = _mm512_set1_pd(v.a), mu = _mm512_set1_pd(v.mu), cc = _mm512_set1_pd(c);
+  const __m512d twoSt = _mm512_set1_pd(2 * v.st), st = _mm512_set1_pd(v.st);
+  const __m512d twoOxs = _mm512_set1_pd(2 * v.oxs), ozs = _mm512_set1_pd(v.ozs);
+  const __m512d psiMax = _mm512_set1_pd(kBeckmannLambdaNegligibleX);
+  const __m512d gNum = _mm512_set1_pd(v.gNum), gDenO = _mm512_set1_pd(v.gDenO);
+  const __m512d gRatio = _mm512_set1_pd(v.gRatio);
+  int i = 0;
+  for (; i < n; i += 8) {
+    // The last block's lanes beyond n load 0 and add nothing (`in`).
+    const __mmask8 in = n - i >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - i)) - 1);
+    const __m512d tt = _mm512_maskz_loadu_pd(in, t + i);
+    const __m512d t2 = _mm512_mul_pd(tt, tt), C = _mm512_sub_pd(one, t2);
+    const __m512d q = _mm512_add_pd(one, t2);
+    const __m512d S = _mm512_mul_pd(two, tt), aS = _mm512_mul_pd(a, S);
+    const __m512d C2 = _mm512_mul_pd(C, C), aS2 = _mm512_mul_pd(aS, aS);
+    const __m512d M2 = _mm512_add_pd(aS2, C2);
+    const __m512d N1 = _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(twoSt, aS), C), cc),
+                                     _mm512_mul_pd(mu, _mm512_sub_pd(C2, aS2)));
+    const __m512d invM2 = _mm512_div_pd(one, M2);
+    const __m512d rootL =
+        _mm512_maskz_sqrt_pd(0xFF, _mm512_mul_pd(_mm512_sub_pd(M2, N1), _mm512_add_pd(M2, N1)));
+    const __m512d r = Ratio8(v, S, q, C2, aS2, invM2);
+    const int add =
+        in & _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ) & _mm512_cmp_pd_mask(r, zero, _CMP_NEQ_UQ);
+    if (add == 0) continue;
+    const __m512d x = _mm512_div_pd(N1, _mm512_mul_pd(a, rootL));
+    // g = gN / gD: gRatio / 1 where Lambda(l) vanishes (x >= 6), else MaskingQuotient's form; a
+    // block none of whose added lanes has Lambda(l) takes no exp and no psi.
+    const __mmask8 lam = _mm512_cmp_pd_mask(x, psiMax, _CMP_LT_OQ);
+    __m512d gN = gRatio, gD = one;
+    if ((lam & add) != 0) {
+      const __m512d xc = _mm512_maskz_max_pd(0xFF, _mm512_maskz_min_pd(0xFF, x, psiMax), zero);
+      const __m512d ePsi =
+          _mm512_mul_pd(ExpFast8(_mm512_sub_pd(zero, _mm512_mul_pd(xc, xc))), BeckmannPsi8(xc));
+      const __m512d x2 = _mm512_mul_pd(two, xc);
+      const __m512d gNl = _mm512_mul_pd(v.separable ? gRatio : gNum, x2);
+      const __m512d gDl = v.separable
+                              ? _mm512_add_pd(x2, ePsi)
+                              : _mm512_add_pd(_mm512_mul_pd(gDenO, x2), _mm512_mul_pd(mu, ePsi));
+      gN = _mm512_mask_blend_pd(lam, gRatio, gNl);
+      gD = _mm512_mask_blend_pd(lam, one, gDl);
+    }
+    const __m512d shape = _mm512_mul_pd(
+        _mm512_mul_pd(_mm512_maskz_loadu_pd(in, weight + i), tt),
+        _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(twoOxs, cc), tt), _mm512_mul_pd(ozs, C)));
+    const __m512d q3 = _mm512_mul_pd(_mm512_mul_pd(q, q), q);
+    const __m512d val =
+        _mm512_div_pd(_mm512_mul_pd(_mm512_mul_pd(shape, r), gN), _mm512_mul_pd(q3, gD));
+    const __m512d oh =
+        _mm512_mul_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(st, aS), cc), _mm512_mul_pd(mu, C)),
+                      _mm512_maskz_sqrt_pd(0xFF, invM2));
+    const __m512d w = _mm512_sub_pd(one, oh), w2 = _mm512_mul_pd(w, w);
+    const __m512d b = _mm512_mul_pd(val, _mm512_mul_pd(_mm512_mul_pd(w2, w2), w));
+    alignas(64) double vv[8], bv[8];
+    _mm512_store_pd(vv, val);
+    _mm512_store_pd(bv, b);
+    for (int l = 0; l < 8; ++l)
+      if (add & (1 << l)) {
+        sumV += vv[l];
+        sumB += bv[l];
+      }
+  }
+  sumVOut = sumV;
+  sumBOut = sumB;
+  return n;
 }
 
 }  // namespace
@@ -231,6 +399,10 @@ void AddBeckmannNodes(const BeckmannNodeView& v, double c, const double* t, cons
   const __m128d maxY = _mm_set1_pd(1e300), minArg = _mm_set1_pd(-kExpFastMaxAbs);
   int i = 0;
 #if defined(__x86_64__)
+  if (dielectric_simd::Enabled()) {  // (takes every node)
+    AddBeckmannNodesAvx512(v, c, t, weight, n, sumV, sumB);
+    return;
+  }
   if (HasAvx2()) i = AddBeckmannNodesAvx2(v, c, t, weight, n, sumV, sumB);
 #endif
   for (; i + 2 <= n; i += 2) {

@@ -1,9 +1,10 @@
 // The inner nodes of the microfacet fixed rule (fixed_rule_microfacet.cpp) for Beckmann and
-// Blinn-Phong, a panel at a time: four nodes per AVX2 instruction where the CPU has it, else two
-// per SSE2 instruction, the exp, log and log1p inline (math/fast_exp_log.h), Lambda(l) in its
-// one-exp form (models/beckmann_lambda.h). Each lane does the scalar form's operations in its
-// order, without fused multiply-adds, so every path gives the same bits
-// (tests/integrate_fixed_rule_beckmann_nodes.cpp).
+// Blinn-Phong, a panel at a time: eight nodes per AVX-512F instruction where those paths run
+// (dielectric_simd::Enabled(): the CPU has it and KILN_NO_AVX512 is not set), then four per AVX2
+// instruction where the CPU has it, then two per SSE2 instruction, the exp, log and log1p inline
+// (math/fast_exp_log.h), Lambda(l) in its one-exp form (models/beckmann_lambda.h). Each lane does
+// the scalar form's operations in its order, without fused multiply-adds, so every path gives the
+// same bits (tests/integrate_fixed_rule_beckmann_nodes.cpp).
 //
 // A node is t = tan(t'/2) on the azimuth with cos p = c, t' the polar angle of the GGX-stretched
 // normal (fixed_rule_microfacet.cpp, "Derivation"); it adds weight times

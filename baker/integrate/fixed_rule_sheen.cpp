@@ -154,19 +154,35 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
   // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
   // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
   // once per node (fixed_rule_sheen_row.h: the model's Parts' products D * V with the inline exp
-  // and log, four nodes at a time).
+  // and log, eight or four nodes at a time).
+  // The rows are summed two at a time (SheenRowSum2: two independent chains of additions), their
+  // terms added to the texel's sum in row order.
   const double lambdaO = LambdaOf(m, mu_o);
   const SheenRowNdf ndf = RowNdf(m);
-  double sum = 0;
+  struct Row {
+    SheenRow in;
+    double scale;  ///< 2 mu_l tw_i e_i
+  };
+  std::vector<Row> rows;
+  rows.reserve(tx.size());
   for (size_t i = 0; i < tx.size(); ++i) {
     double e = std::exp(tx[i]), mu_l = Clamp(e - c, 0.0, 1.0);
     if (!(mu_o + mu_l > 0)) continue;
     double sinT = std::sqrt(std::max(0.0, 1 - mu_l * mu_l));
     const double v = Visibility(m, mu_o, mu_l, lambdaO);
-    const SheenRow rowIn{wo.x,          wo.z,          sinT,      mu_l,     v,
-                         cosPhi.data(), sinPhi.data(), ws.data(), sx.size()};
-    const double row = SheenRowSum(ndf, rowIn);
-    sum += 2 * mu_l * tw[i] * e * row;
+    rows.push_back({{wo.x, wo.z, sinT, mu_l, v, cosPhi.data(), sinPhi.data(), ws.data(), sx.size()},
+                    2 * mu_l * tw[i] * e});
+  }
+  double sum = 0;
+  for (size_t k = 0; k < rows.size(); k += 2) {
+    double a = 0, b = 0;
+    if (k + 1 < rows.size()) {
+      SheenRowSum2(ndf, rows[k].in, rows[k + 1].in, &a, &b);
+      sum += rows[k].scale * a;
+      sum += rows[k + 1].scale * b;
+    } else {
+      sum += rows[k].scale * SheenRowSum(ndf, rows[k].in);
+    }
   }
   if (evals) *evals += static_cast<long long>(tx.size() * sx.size());
   return sum;

@@ -1,6 +1,7 @@
 // One row of the sheen fixed rule (fixed_rule_sheen.cpp): at a light cosine mu_l, the sum over
 // the azimuth nodes psi_j of ws_j D(h_j) V, D the Charlie or velvet NDF (models/sheen.h) with the
-// inline exp and log (math/fast_exp_log.h), four nodes per AVX2 instruction where the CPU has it.
+// inline exp and log (math/fast_exp_log.h), eight nodes per AVX-512F instruction where those paths
+// run (dielectric_simd::Enabled()), then four per AVX2 instruction where the CPU has it.
 // The lanes give the scalar form's bits (tests/integrate_fixed_rule_sheen_row.cpp).
 #pragma once
 #include <cstddef>
@@ -30,6 +31,12 @@ struct SheenRow {
 /// sin^2(theta_h) = |(wo + wi)_xy|^2 / |wo + wi|^2 clamped to [0, 1], wi = (sinT cosPhi_j,
 /// sinT sinPhi_j, muL), as HalfSin2 (models/sheen.h).
 double SheenRowSum(const SheenRowNdf& ndf, const SheenRow& row);
+
+/// SheenRowSum of two rows that share their azimuth nodes (the same n, cosPhi, sinPhi and ws),
+/// into *sumA and *sumB: the same bits, the two rows' additions interleaved on the AVX-512F path
+/// (two independent chains of additions where one row's would be the loop's limit).
+void SheenRowSum2(const SheenRowNdf& ndf, const SheenRow& a, const SheenRow& b, double* sumA,
+                  double* sumB);
 
 /// The same one node at a time in scalar arithmetic (the lanes' reference).
 double SheenRowSumScalar(const SheenRowNdf& ndf, const SheenRow& row);

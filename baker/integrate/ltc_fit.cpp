@@ -288,6 +288,49 @@ Vec3 LtcLobe::Sample(double u1, double u2) const {
   return Reflect(wo_, wm);
 }
 
+std::vector<Vec3> LtcLobe::SampleGrid(int n) const {
+  std::vector<Vec3> out;
+  out.reserve(size_t(std::max(n, 0)) * size_t(std::max(n, 0)));
+  if (!(kind_ >= 1 && kind_ <= 4)) {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) out.push_back(Sample((i + 0.5) / n, (j + 0.5) / n));
+    return out;
+  }
+  // Sample's direction of column i is {a cos(phi), a sin(phi), b} (SphericalDirection or
+  // CosineSample) at phi = 2 pi u2, reflected about o where `reflect`.
+  struct Column {
+    double a, b;
+    bool reflect;
+  };
+  std::vector<Column> cols(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const double u1 = (i + 0.5) / n;
+    Column& c = cols[size_t(i)];
+    if (kind_ == 4 && u1 < 0.25) {  // Sample's branches, in its order
+      c = {std::sqrt(4 * u1), SafeSqrt(1 - 4 * u1), false};
+    } else if (kind_ == 4 && u1 < 0.5) {
+      const double u = 4 * u1 - 1, mu = u * u * u;
+      c = {SafeSqrt(1 - mu * mu), mu, false};
+    } else if (kind_ == 4) {
+      const double sn = std::pow(2 * u1 - 1, 1 / (1 / alpha_ + 2));
+      c = {sn, SafeSqrt(1 - sn * sn), true};
+    } else {
+      const PolarParam h = kind_ == 1   ? GGXDistribution{alpha_}.FromV(1 - u1)
+                           : kind_ == 2 ? BeckmannDistribution{alpha_}.FromV(1 - u1)
+                                        : BlinnPhongDistribution{alpha_}.FromV(1 - u1);
+      c = {h.sinTheta, h.cosTheta, true};
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    const double phi = 2 * Pi * ((j + 0.5) / n), cp = std::cos(phi), sp = std::sin(phi);
+    for (const Column& c : cols) {
+      const Vec3 d{c.a * cp, c.a * sp, c.b};
+      out.push_back(c.reflect ? Reflect(wo_, d) : d);
+    }
+  }
+  return out;
+}
+
 double LtcLobe::Pdf(Vec3 wi) const {
   if (kind_ == 0) return std::max(0.0, wi.z) * kInvPi;
   if (kind_ == 5) {
@@ -482,16 +525,14 @@ double NelderMead(const std::function<double(const double*)>& f, int dim, double
 void LtcLobeMoments(const LtcLobe& lobe, int n, double* norm, Vec3* averageDir) {
   double sum = 0;
   Vec3 dir{0, 0, 0};
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      double p, f;
-      lobe.EvalPdf(l, &f, &p);
-      if (!(p > 0) || f <= 0) continue;
-      double w = f / p;
-      sum += w;
-      dir = dir + w * l;
-    }
+  for (Vec3 l : lobe.SampleGrid(n)) {
+    double p, f;
+    lobe.EvalPdf(l, &f, &p);
+    if (!(p > 0) || f <= 0) continue;
+    double w = f / p;
+    sum += w;
+    dir = dir + w * l;
+  }
   *norm = sum / (double(n) * n);
   dir.y = 0;
   *averageDir = Length(dir) > 0 ? Normalize(dir) : Vec3{0, 0, 1};
@@ -508,13 +549,11 @@ struct LobeSample {
 std::vector<LobeSample> LobeSamples(const LtcLobe& lobe, int n) {
   std::vector<LobeSample> ls;
   ls.reserve(size_t(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      Vec3 l = lobe.Sample((i + 0.5) / n, (j + 0.5) / n);
-      LobeSample s{l, 0, 0};
-      lobe.EvalPdf(l, &s.f, &s.pl);
-      ls.push_back(s);
-    }
+  for (Vec3 l : lobe.SampleGrid(n)) {
+    LobeSample s{l, 0, 0};
+    lobe.EvalPdf(l, &s.f, &s.pl);
+    ls.push_back(s);
+  }
   return ls;
 }
 

@@ -44,6 +44,10 @@ class LtcLobe {
   double Eval(Vec3 wi) const;
   /// The proposal's direction at (u1, u2) in [0, 1)^2 (may be below the horizon).
   Vec3 Sample(double u1, double u2) const;
+  /// The proposal's n x n stratified directions Sample((i + 0.5) / n, (j + 0.5) / n) at index
+  /// i + n j, the bits of those n^2 calls: the microfacet and Charlie proposals take each
+  /// column's part (of u1) and each row's cos and sin of 2 pi u2 once.
+  std::vector<Vec3> SampleGrid(int n) const;
   /// The proposal's density over solid angle at wi.
   double Pdf(Vec3 wi) const;
   /// Eval(wi) and Pdf(wi) together, the same bits as the two calls (a microfacet lobe shares

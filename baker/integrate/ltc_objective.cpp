@@ -9,7 +9,10 @@
 #endif
 #if defined(__x86_64__)
 #include <immintrin.h>
+
+#include "baker/integrate/dielectric_simd.h"
 #define KILN_AVX2 __attribute__((target("avx2")))
+#define KILN_LTC_AVX512 __attribute__((target("avx512f")))
 #endif
 
 namespace kiln {
@@ -119,6 +122,72 @@ KILN_AVX2 size_t LtcOwnSumAvx2(const LtcMatrix& ltc, const double* cx, const dou
   return j;
 }
 
+/// The AVX-512F paths' sums (where dielectric_simd::Enabled()): eight points' terms at a time,
+/// added to the four partial sums as the AVX2 paths add them (points k..k+3, then k+4..k+7).
+KILN_LTC_AVX512 inline __m256d AddEight(__m256d sum, __m512d term) {
+  // (the masked extracts with every element set: GCC 12's unmasked ones start from an undefined
+  // register, which -Wmaybe-uninitialized flags)
+  sum = _mm256_add_pd(sum, _mm512_maskz_extractf64x4_pd(0xF, term, 0));
+  return _mm256_add_pd(sum, _mm512_maskz_extractf64x4_pd(0xF, term, 1));
+}
+
+/// LtcCrossSumAvx2's terms eight at a time, the last block masked; takes all n points.
+KILN_LTC_AVX512 size_t LtcCrossSumAvx512(const LtcMatrix& ltc, const double* px, const double* py,
+                                         const double* pz, const double* pc, size_t n,
+                                         double* acc) {
+  const __m512d i0 = _mm512_set1_pd(ltc.inv[0]), i2 = _mm512_set1_pd(ltc.inv[2]);
+  const __m512d i4 = _mm512_set1_pd(ltc.inv[4]), i6 = _mm512_set1_pd(ltc.inv[6]);
+  const __m512d i8 = _mm512_set1_pd(ltc.inv[8]);
+  const __m512d scale = _mm512_set1_pd(kLtcInvPi * ltc.detInv), zero = _mm512_setzero_pd();
+  __m256d sum = _mm256_loadu_pd(acc);
+  size_t k = 0;
+  for (; k < n; k += 8) {
+    // The last block's lanes beyond n load 0 and add +0 (a partial sum is never -0: every term
+    // is >= +0 or NaN).
+    const __mmask8 in = n - k >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - k)) - 1);
+    const __m512d x = _mm512_maskz_loadu_pd(in, px + k), y = _mm512_maskz_loadu_pd(in, py + k);
+    const __m512d z = _mm512_maskz_loadu_pd(in, pz + k);
+    const __m512d qx = _mm512_add_pd(_mm512_mul_pd(i0, x), _mm512_mul_pd(i2, z));
+    const __m512d qy = _mm512_mul_pd(i4, y);
+    const __m512d qz = _mm512_add_pd(_mm512_mul_pd(i6, x), _mm512_mul_pd(i8, z));
+    const __m512d len2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(qx, qx), _mm512_mul_pd(qy, qy)),
+                                       _mm512_mul_pd(qz, qz));
+    const __m512d d = _mm512_maskz_div_pd(
+        in, _mm512_mul_pd(_mm512_maskz_max_pd(0xFF, zero, qz), scale), _mm512_mul_pd(len2, len2));
+    sum = AddEight(sum, _mm512_mul_pd(_mm512_maskz_loadu_pd(in, pc + k), d));
+  }
+  _mm256_storeu_pd(acc, sum);
+  return n;
+}
+
+/// LtcOwnSumAvx2's terms eight at a time (as LtcCrossSumAvx512).
+KILN_LTC_AVX512 size_t LtcOwnSumAvx512(const LtcMatrix& ltc, const double* cx, const double* cy,
+                                       const double* cz, size_t n, int p, double* acc) {
+  const __m512d m0 = _mm512_set1_pd(ltc.m[0]), m2 = _mm512_set1_pd(ltc.m[2]);
+  const __m512d m4 = _mm512_set1_pd(ltc.m[4]), m6 = _mm512_set1_pd(ltc.m[6]);
+  const __m512d m8 = _mm512_set1_pd(ltc.m[8]);
+  const __m512d kk = _mm512_set1_pd(kLtcInvPi * ltc.detInv);
+  __m256d sum = _mm256_loadu_pd(acc);
+  size_t j = 0;
+  for (; j < n; j += 8) {
+    // (the last block as LtcCrossSumAvx512's: its missing terms are +0)
+    const __mmask8 in = n - j >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - j)) - 1);
+    const __m512d x = _mm512_maskz_loadu_pd(in, cx + j), y = _mm512_maskz_loadu_pd(in, cy + j);
+    const __m512d z = _mm512_maskz_loadu_pd(in, cz + j);
+    const __m512d ax = _mm512_add_pd(_mm512_mul_pd(m0, x), _mm512_mul_pd(m2, z));
+    const __m512d ay = _mm512_mul_pd(m4, y);
+    const __m512d az = _mm512_add_pd(_mm512_mul_pd(m6, x), _mm512_mul_pd(m8, z));
+    const __m512d len2 = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(ax, ax), _mm512_mul_pd(ay, ay)),
+                                       _mm512_mul_pd(az, az));
+    __m512d d =
+        _mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(z, kk), len2), _mm512_maskz_sqrt_pd(0xFF, len2));
+    if (p != 2) d = _mm512_mul_pd(d, d);
+    sum = AddEight(sum, d);
+  }
+  _mm256_storeu_pd(acc, sum);
+  return n;
+}
+
 }  // namespace
 
 #endif
@@ -162,7 +231,8 @@ double LtcCrossSum(const LtcMatrix& ltc, const double* px, const double* py, con
   alignas(16) double acc[kLtcSumLanes] = {0, 0, 0, 0};
   size_t k = 0;
 #if defined(__x86_64__)
-  if (LtcHasAvx2()) k = LtcCrossSumAvx2(ltc, px, py, pz, pc, n, acc);
+  if (dielectric_simd::Enabled()) k = LtcCrossSumAvx512(ltc, px, py, pz, pc, n, acc);
+  if (LtcHasAvx2()) k += LtcCrossSumAvx2(ltc, px + k, py + k, pz + k, pc + k, n - k, acc);
 #endif
   // Two points at a time into acc[0..1] or acc[2..3] (k even: k % 4 is 0 or 2).
   __m128d sum[2] = {_mm_load_pd(acc), _mm_load_pd(acc + 2)};
@@ -189,7 +259,8 @@ double LtcOwnSum(const LtcMatrix& ltc, const double* cx, const double* cy, const
   alignas(16) double acc[kLtcSumLanes] = {0, 0, 0, 0};
   size_t j = 0;
 #if defined(__x86_64__)
-  if (LtcHasAvx2()) j = LtcOwnSumAvx2(ltc, cx, cy, cz, n, p, acc);
+  if (dielectric_simd::Enabled()) j = LtcOwnSumAvx512(ltc, cx, cy, cz, n, p, acc);
+  if (LtcHasAvx2()) j += LtcOwnSumAvx2(ltc, cx + j, cy + j, cz + j, n - j, p, acc);
 #endif
   __m128d sum[2] = {_mm_load_pd(acc), _mm_load_pd(acc + 2)};
   for (; j + 2 <= n; j += 2) {

@@ -1,8 +1,9 @@
 // The two sums of the LTC fit's objective (ltc_fit.cpp, FitLtc): the LTC's density at the lobe's
-// fixed points and at its own cosine points, four points at a time where the CPU has AVX2, else
-// two (SSE2 lanes where the compiler has them, x86-64 always). Each point's term is the same IEEE
-// arithmetic as one point at a time (add, mul, div, sqrt correctly rounded in either lane, no
-// fused multiply-add without -march), and the terms are summed in one fixed order on every path:
+// fixed points and at its own cosine points, eight points at a time where the AVX-512F paths run
+// (dielectric_simd::Enabled()), then four where the CPU has AVX2, then two (SSE2 lanes where the
+// compiler has them, x86-64 always). Each point's term is the same IEEE arithmetic as one point
+// at a time (add, mul, div, sqrt correctly rounded in every lane, no fused multiply-add: the file
+// is compiled with -ffp-contract=off), and the terms are summed in one fixed order on every path:
 // point k into the partial sum k % 4, the four partial sums added as (s0 + s1) + (s2 + s3) (four
 // independent additions per step rather than one chain through every point). The lanes give the
 // scalar loops' bits (tests/integrate_ltc_objective.cpp holds them to those loops).
