@@ -229,6 +229,9 @@ class LookupSearch {
   /// table is over mu and more (Sample::inCorner) and its axis 1.
   decltype(QuantityInfo::verifyReference) verifyReference_ = nullptr;
   bool overMu_ = false;
+  /// The reference is a fixed rule that spreads each point over the threads
+  /// (QuantityInfo::parallelPoint).
+  bool pointsParallel_ = false;
   Axis axis1_{};
   std::vector<size_t> order_, fullOrder_;
   std::vector<std::array<double, 3>> probes_;
@@ -263,6 +266,7 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
   // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
   first_ = Describe(spec.quantity).firstIntegralChannel;
   if (opt.verifyReference) verifyReference_ = Describe(spec.quantity).verifyReference;
+  pointsParallel_ = Describe(spec.quantity).parallelPoint && opt.refTol <= 0 && UsesFixedRule(spec);
   overMu_ = dims_ >= 2 && spec.axes[0].name == "mu";
   if (dims_ >= 2) axis1_ = spec.axes[1].ToAxis();
   probes_ = ProbePoints(D_);
@@ -662,8 +666,10 @@ void LookupSearch::Climbs() {
                 : std::min<size_t>(chunk, static_cast<size_t>((callBudget_ - calls_) / C_));
     size_t base = climbed_.size();
     climbed_.resize(base + chunk);
-    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell).
-    const bool speculate = chunk < static_cast<size_t>(arena_.max_concurrency());
+    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell), unless
+    // the kind's rule spreads each point over them already (QuantityInfo::parallelPoint).
+    const bool speculate =
+        chunk < static_cast<size_t>(arena_.max_concurrency()) && !pointsParallel_;
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
