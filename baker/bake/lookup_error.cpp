@@ -88,6 +88,8 @@ std::array<uint64_t, 3> MemoKey(const double* x) {
 
 void SearchMemo::Add(const double* x, Entry entry) { map_.emplace(MemoKey(x), std::move(entry)); }
 
+void SearchMemo::Reserve(size_t n) { map_.reserve(n); }
+
 const SearchMemo::Entry* SearchMemo::Find(const double* x) const {
   auto it = map_.find(MemoKey(x));
   return it == map_.end() ? nullptr : &it->second;
@@ -729,13 +731,17 @@ LookupErrorReport LookupSearch::Report() {
 
 void LookupSearch::Record() {
   if (!opt_.record || !DefaultReference()) return;
-  auto add = [&](const Sample& s) {
+  // The references move into the memo (Report reads no sample's `exact`).
+  size_t n = probeSamples_.size();
+  for (const Climb& cl : climbed_) n += cl.visited.size();
+  opt_.record->Reserve(opt_.record->size() + n);
+  auto add = [&](Sample& s) {
     if (!s.exact.empty())
-      opt_.record->Add(s.x, SearchMemo::Entry{s.exact, s.integrand, s.refError});
+      opt_.record->Add(s.x, SearchMemo::Entry{std::move(s.exact), s.integrand, s.refError});
   };
-  for (const Sample& s : probeSamples_) add(s);
-  for (const Climb& cl : climbed_)
-    for (const Sample& s : cl.visited) add(s);
+  for (Sample& s : probeSamples_) add(s);
+  for (Climb& cl : climbed_)
+    for (Sample& s : cl.visited) add(s);
 }
 
 }  // namespace
