@@ -5,7 +5,10 @@
 // the mu rule over E_R walks (the route it replaced, itself held to adaptive quadrature) and
 // with adaptive quadrature of the average on held-out points, within kDielectricKernelBound;
 // and a roughness row of the exit table's 24 eta' costs under a tenth of the mu rule's
-// evaluations.
+// evaluations. A kernel row and an entering average column, whose nodes run on the arena's
+// threads, have the bits and counts of one thread's for any thread count.
+#include <tbb/task_arena.h>
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -100,4 +103,43 @@ TEST_CASE("a kernel row gives every eta' the same bits, remembered or not, and c
   CHECK(static_cast<double>(kernelEvals) < 0.1 * 8 * static_cast<double>(muEvals));
   std::printf("glass E_avg_R exit: kernel row %lld evaluations, mu rule ~%lld for 24 eta'\n",
               kernelEvals, 8 * muEvals);
+}
+
+TEST_CASE("a kernel row and an average column have one thread's bits on any thread count",
+          "[dielectric][glass-rule][threads]") {
+  const double alpha = AlphaOf(0.43);
+  const double etas[3] = {1.1, 1.52, 2.9};
+  auto row = [&](int threads) {
+    tbb::task_arena arena(threads);
+    DielectricReflectanceKernelRow r;
+    arena.execute([&] { r = MakeDielectricReflectanceKernelRow(alpha); });
+    return r;
+  };
+  auto column = [&](int threads, long long* evals) {
+    tbb::task_arena arena(threads);
+    std::array<std::array<double, 2>, 3> out{};
+    arena.execute([&] {
+      FixedRuleDielectricAlbedoAverageColumn(alpha, etas, 3, kDielectricAverageNodes, out.data(),
+                                             evals);
+    });
+    return out;
+  };
+  const DielectricReflectanceKernelRow one = row(1);
+  long long oneEvals = 0;
+  const std::array<std::array<double, 2>, 3> oneColumn = column(1, &oneEvals);
+  REQUIRE(one.evals > 0);
+  REQUIRE(oneEvals > 0);
+  for (int threads : {2, 4}) {
+    INFO(threads << " threads");
+    const DielectricReflectanceKernelRow r = row(threads);
+    CHECK(r.evals == one.evals);
+    CHECK(std::memcmp(&r.lowIntegral, &one.lowIntegral, sizeof r.lowIntegral) == 0);
+    REQUIRE(r.k.size() == one.k.size());
+    CHECK(std::memcmp(r.k.data(), one.k.data(), r.k.size() * sizeof(double)) == 0);
+    CHECK(std::memcmp(r.t.data(), one.t.data(), r.t.size() * sizeof(double)) == 0);
+    long long evals = 0;
+    const std::array<std::array<double, 2>, 3> c = column(threads, &evals);
+    CHECK(evals == oneEvals);
+    CHECK(std::memcmp(c.data(), oneColumn.data(), sizeof c) == 0);
+  }
 }

@@ -54,9 +54,13 @@ void CheckSameForAnyThreads(const TableSpec& spec, long long budget) {
 
 TEST_CASE("A climb that evaluates ahead climbs as the serial climb does",
           "[lookup][search][speculative-climb]") {
-  // A closed form, a fixed rule with a search form, and a glass average whose points are whole
-  // mu integrals (its one climb runs alone once the budget is spent).
+  // A closed form, a fixed rule with a search form, and glass averages whose points are whole
+  // mu integrals spread over the threads (their one climb runs alone once the budget is spent).
   CheckSameForAnyThreads(test::SmallSpec(Quantity::FresnelConductor, "none", 6), 3000);
   CheckSameForAnyThreads(test::SmallSpec(Quantity::Dfg, "beckmann", 9), 900);
   CheckSameForAnyThreads(test::SmallSpec(Quantity::DielectricAlbedoRAvg, "ggx-dielectric", 6), 120);
+  // Its kernel-route exit side, whose points spread over the threads (QuantityInfo::parallelPoint):
+  // its lone climb takes the threads, no point ahead.
+  CheckSameForAnyThreads(test::SmallSpec(Quantity::DielectricAlbedoRExitAvg, "ggx-dielectric", 6),
+                         120);
 }

@@ -88,6 +88,8 @@ std::array<uint64_t, 3> MemoKey(const double* x) {
 
 void SearchMemo::Add(const double* x, Entry entry) { map_.emplace(MemoKey(x), std::move(entry)); }
 
+void SearchMemo::Reserve(size_t n) { map_.reserve(n); }
+
 const SearchMemo::Entry* SearchMemo::Find(const double* x) const {
   auto it = map_.find(MemoKey(x));
   return it == map_.end() ? nullptr : &it->second;
@@ -229,6 +231,9 @@ class LookupSearch {
   /// table is over mu and more (Sample::inCorner) and its axis 1.
   decltype(QuantityInfo::verifyReference) verifyReference_ = nullptr;
   bool overMu_ = false;
+  /// The reference is a fixed rule that spreads each point over the threads
+  /// (QuantityInfo::parallelPoint).
+  bool pointsParallel_ = false;
   Axis axis1_{};
   std::vector<size_t> order_, fullOrder_;
   std::vector<std::array<double, 3>> probes_;
@@ -263,6 +268,7 @@ LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
   // A fitted table's coefficient channels are not integrals (QuantityInfo::firstIntegralChannel).
   first_ = Describe(spec.quantity).firstIntegralChannel;
   if (opt.verifyReference) verifyReference_ = Describe(spec.quantity).verifyReference;
+  pointsParallel_ = Describe(spec.quantity).parallelPoint && opt.refTol <= 0 && UsesFixedRule(spec);
   overMu_ = dims_ >= 2 && spec.axes[0].name == "mu";
   if (dims_ >= 2) axis1_ = spec.axes[1].ToAxis();
   probes_ = ProbePoints(D_);
@@ -662,8 +668,10 @@ void LookupSearch::Climbs() {
                 : std::min<size_t>(chunk, static_cast<size_t>((callBudget_ - calls_) / C_));
     size_t base = climbed_.size();
     climbed_.resize(base + chunk);
-    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell).
-    const bool speculate = chunk < static_cast<size_t>(arena_.max_concurrency());
+    // Fewer climbs than threads: each climb evaluates ahead on the idle ones (ClimbCell), unless
+    // the kind's rule spreads each point over them already (QuantityInfo::parallelPoint).
+    const bool speculate =
+        chunk < static_cast<size_t>(arena_.max_concurrency()) && !pointsParallel_;
     arena_.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(base, climbed_.size(), 1),
                         [&](const tbb::blocked_range<size_t>& r) {
@@ -723,13 +731,17 @@ LookupErrorReport LookupSearch::Report() {
 
 void LookupSearch::Record() {
   if (!opt_.record || !DefaultReference()) return;
-  auto add = [&](const Sample& s) {
+  // The references move into the memo (Report reads no sample's `exact`).
+  size_t n = probeSamples_.size();
+  for (const Climb& cl : climbed_) n += cl.visited.size();
+  opt_.record->Reserve(opt_.record->size() + n);
+  auto add = [&](Sample& s) {
     if (!s.exact.empty())
-      opt_.record->Add(s.x, SearchMemo::Entry{s.exact, s.integrand, s.refError});
+      opt_.record->Add(s.x, SearchMemo::Entry{std::move(s.exact), s.integrand, s.refError});
   };
-  for (const Sample& s : probeSamples_) add(s);
-  for (const Climb& cl : climbed_)
-    for (const Sample& s : cl.visited) add(s);
+  for (Sample& s : probeSamples_) add(s);
+  for (Climb& cl : climbed_)
+    for (Sample& s : cl.visited) add(s);
 }
 
 }  // namespace

@@ -54,6 +54,8 @@ class SearchMemo {
   };
   /// Keeps the reference at x (the first one kept for a point stays). Not thread-safe.
   void Add(const double* x, Entry entry);
+  /// Room for n references in all, so that adding them does not rehash. Not thread-safe.
+  void Reserve(size_t n);
   /// The reference kept at x, or null. Thread-safe while nothing is added.
   const Entry* Find(const double* x) const;
   size_t size() const { return map_.size(); }

@@ -26,6 +26,10 @@
 // graded rule for eta > 1, reciprocity for eta < 1.
 #include "baker/integrate/dielectric_albedo_avg.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -211,18 +215,34 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
     throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
   const GaussRule01& g = CachedGaussLegendre01(nodes);
   const DielectricRuleOptions opt = TunedDielectricRuleOptions();
-  for (int e = 0; e < n; ++e) out[e] = {0, 0};
-  std::array<double, 2> col[kMaxDielectricColumn];
   // Entering (every eta >= kDielectricTableEtaMin, which the E column checks): the mu panels do
-  // not depend on eta.
-  for (const Panel& p : Panels(alpha, etas[0]))
-    for (size_t k = 0; k < g.x.size(); ++k) {
-      double dmu;
-      const double mu = PanelPoint(p, g.x[k], &dmu);
-      FixedRuleDielectricAlbedoColumn(mu, alpha, etas, n, opt, col, evals);
-      for (int e = 0; e < n; ++e)
-        for (int c = 0; c < 2; ++c) out[e][c] += 2 * g.w[k] * dmu * mu * col[e][c];
-    }
+  // not depend on eta. The E columns of the mu nodes are independent: they are walked on the
+  // calling arena's threads (isolated: a thread waiting for them takes no other task of its
+  // arena, which could need this column's memo entry), then summed in the nodes' order (the
+  // bits of one thread's sum, for any thread count).
+  const std::vector<Panel> panels = Panels(alpha, etas[0]);
+  const size_t K = g.x.size(), count = panels.size() * K;
+  std::vector<std::array<double, 2>> cols(count * static_cast<size_t>(n));
+  std::vector<double> mus(count), dmus(count);
+  std::vector<long long> nodeEvals(count, 0);
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, count, 1), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i != r.end(); ++i) {
+            mus[i] = PanelPoint(panels[i / K], g.x[i % K], &dmus[i]);
+            FixedRuleDielectricAlbedoColumn(mus[i], alpha, etas, n, opt,
+                                            &cols[i * static_cast<size_t>(n)], &nodeEvals[i]);
+          }
+        });
+  });
+  for (int e = 0; e < n; ++e) out[e] = {0, 0};
+  for (size_t i = 0; i < count; ++i) {
+    const double w = g.w[i % K];
+    const std::array<double, 2>* col = &cols[i * static_cast<size_t>(n)];
+    for (int e = 0; e < n; ++e)
+      for (int c = 0; c < 2; ++c) out[e][c] += 2 * w * dmus[i] * mus[i] * col[e][c];
+    if (evals) *evals += nodeEvals[i];
+  }
 }
 
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,

@@ -32,8 +32,10 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
 
 /// {E_avg_R, E_avg_T} at n etas at once (1 <= n <= kMaxDielectricColumn, every eta >=
 /// kDielectricTableEtaMin: the entering side, where the mu panels do not depend on eta), into
-/// out: one E column (FixedRuleDielectricAlbedoColumn) per mu node. Each out[e] has the bits
-/// FixedRuleDielectricAlbedoAverage(alpha, etas[e], nodes) gives; evals: one eta's.
+/// out: one E column (FixedRuleDielectricAlbedoColumn) per mu node, the nodes on the calling
+/// oneTBB arena's threads and summed in their order. Each out[e] has the bits
+/// FixedRuleDielectricAlbedoAverage(alpha, etas[e], nodes) gives, for any thread count; evals:
+/// one eta's.
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
                                             std::array<double, 2>* out, long long* evals);
 /// The same at kDielectricAverageNodes, remembering recent columns (the bake's: r-avg and t-avg

@@ -26,6 +26,10 @@
 // analytic in sqrt(c - c_crit) above) and in t towards c = 1, with the interpolant's values.
 #include "baker/integrate/dielectric_kernel.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -33,6 +37,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "baker/integrate/dielectric_walk.h"
 #include "baker/math/quadrature.h"
@@ -244,30 +249,49 @@ double DielectricReflectanceKernelRow::At(double c) const {
 DielectricReflectanceKernelRow MakeDielectricReflectanceKernelRow(double alpha) {
   DielectricReflectanceKernelRow row;
   row.alpha = alpha;
-  // [0, cSplit]: geometric panels from alpha / 16 by 4 (the grazing layer), Gauss in c.
+  // The nodes in c: [0, cSplit] on geometric panels from alpha / 16 by 4 (the grazing layer),
+  // Gauss in c; [cSplit, 1] at Chebyshev points (second kind) in t = sqrt(1 - c) over [0, tMax].
   std::vector<double> cs = {0};
   for (double b = std::max(alpha, MinAlpha) / 16; b < kDielectricKernelSplit; b *= 4)
     cs.push_back(b);
   cs.push_back(kDielectricKernelSplit);
+  std::vector<double> at;  // every node's c: the panels' in order, then the Chebyshev points
+  std::vector<size_t> first = {0};
   for (size_t i = 0; i + 1 < cs.size(); ++i) {
     const GaussRule01& g =
         CachedGaussLegendre01(dielectric_walk::NodesOf(kLowNodes, kLowEnd, cs[i + 1]));
-    double part = 0;
-    for (size_t q = 0; q < g.x.size(); ++q) {
-      const double c = cs[i] + (cs[i + 1] - cs[i]) * g.x[q];
-      part += g.w[q] * c * FixedRuleDielectricReflectanceKernel(c, alpha, &row.evals);
-    }
-    row.lowIntegral += part * (cs[i + 1] - cs[i]);
+    for (size_t q = 0; q < g.x.size(); ++q) at.push_back(cs[i] + (cs[i + 1] - cs[i]) * g.x[q]);
+    first.push_back(at.size());
   }
-  // [cSplit, 1]: Chebyshev points (second kind) in t = sqrt(1 - c) over [0, tMax].
   const double tMax = std::sqrt(1 - kDielectricKernelSplit);
   const int n = kChebyshevPoints;
   for (int j = 0; j < n; ++j) {
     const double t = tMax * (1 - std::cos(Pi * j / (n - 1))) / 2;
     row.t.push_back(t);
-    row.k.push_back(FixedRuleDielectricReflectanceKernel(1 - t * t, alpha, &row.evals));
     row.weights.push_back((j % 2 ? -1.0 : 1.0) * (j == 0 || j == n - 1 ? 0.5 : 1.0));
+    at.push_back(1 - t * t);
   }
+  // K at every node on the calling arena's threads (isolated: a thread waiting for them takes no
+  // other task, which could wait for this row in CachedDielectricReflectanceKernelRow), then
+  // summed in the nodes' order: the bits of one thread's sums, for any thread count.
+  std::vector<double> k(at.size());
+  std::vector<long long> evals(at.size(), 0);
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, at.size(), 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t i = r.begin(); i != r.end(); ++i)
+                          k[i] = FixedRuleDielectricReflectanceKernel(at[i], alpha, &evals[i]);
+                      });
+  });
+  for (size_t i = 0; i + 1 < cs.size(); ++i) {
+    const GaussRule01& g =
+        CachedGaussLegendre01(dielectric_walk::NodesOf(kLowNodes, kLowEnd, cs[i + 1]));
+    double part = 0;
+    for (size_t q = 0; q < g.x.size(); ++q) part += g.w[q] * at[first[i] + q] * k[first[i] + q];
+    row.lowIntegral += part * (cs[i + 1] - cs[i]);
+  }
+  row.k.assign(k.begin() + static_cast<std::ptrdiff_t>(first.back()), k.end());
+  for (long long e : evals) row.evals += e;
   return row;
 }
 

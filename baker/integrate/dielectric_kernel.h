@@ -39,7 +39,8 @@ struct DielectricReflectanceKernelRow {
   double At(double c) const;
 };
 
-/// The kernel row of GGX alpha by the fixed rule (deterministic).
+/// The kernel row of GGX alpha by the fixed rule: its nodes on the calling oneTBB arena's threads,
+/// summed in their order (deterministic: the same bits for any thread count).
 DielectricReflectanceKernelRow MakeDielectricReflectanceKernelRow(double alpha);
 
 /// The same row through a memo by the bits of alpha (thread-safe; a thread asking for a row

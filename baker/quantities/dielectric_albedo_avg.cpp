@@ -262,6 +262,9 @@ QuantityInfo MakeInfo(const char* name, const char* description) {
     q.bakeTable = BakeTable;
     q.prepareSearch = PrepareSearch;
   }
+  // The mu nodes' E columns (integrate/dielectric_albedo_avg.cpp) and the kernel row's nodes
+  // (integrate/dielectric_kernel.cpp) on the arena's threads.
+  q.parallelPoint = true;
   q.evaluate = Evaluate;
   q.verifyReference = VerifyReference;
   q.smoothLimit = SmoothLimit;

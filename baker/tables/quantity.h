@@ -134,6 +134,10 @@ struct QuantityInfo {
   /// point at a time, only sooner. Called only when the search evaluates the fixed rule. Null:
   /// none.
   void (*prepareSearch)(const TableSpec& spec, const double* points, size_t n) = nullptr;
+  /// The fixed rule spreads one point's integral over the calling oneTBB arena's threads (a
+  /// glass average's mu nodes, its kernel's nodes): the lookup-error search's climbs then give
+  /// a lone climb the threads instead of evaluating its next point ahead on them.
+  bool parallelPoint = false;
   // --- Tables derived from another table's nodes (issue #13) ------------------------------
   /// A kind whose node values follow from another table's at the same nodes (a microfacet
   /// albedo is A + B of its dfg table): fills `source` with that table's spec and returns true
