@@ -54,6 +54,7 @@ struct Slots {
 KILN_AVX512 inline void AddSlot(Slots* s, V c0, M where, V A, V inv, V phiMax) {
   const V cp = Mul(Sub(c0, A), inv);
   const M in = where & Gt(cp, Set(-1)) & Lt(cp, Set(1));
+  if (!in) return;  // no lane's boundary: its acos is not needed
   const V q = Acos8(cp);
   const M keep = in & Gt(q, _mm512_setzero_pd()) & Lt(q, phiMax);
   if (!keep) return;

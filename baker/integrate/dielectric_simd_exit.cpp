@@ -24,43 +24,40 @@ KILN_AVX512 inline V Fms(V a, V b, V c) { return _mm512_fmsub_pd(a, b, c); }
 /// c - a b, rounded once.
 KILN_AVX512 inline V Fnma(V a, V b, V c) { return _mm512_fnmadd_pd(a, b, c); }
 
-/// dielectric_walk::CosHalfTurn's series (cos phi = -sin(phi - pi/2) to x^21), its Horner steps
-/// fused.
+/// dielectric_walk::CosHalfTurn's series (cos phi = -sin(phi - pi/2) to x^21) by Estrin's scheme
+/// in y = x^2, its steps fused: a chain seven operations deep, not thirteen (Horner's).
 KILN_AVX512 inline V CosHalfTurnFused(V phi) {
-  const V x = Sub(phi, Set(1.5707963267948966)), x2 = Mul(x, x);
-  const double* k = kCosHalfTurnSeries;
-  V p = Set(k[0]);
-  p = Fma(p, x2, Set(k[1]));
-  p = Fma(p, x2, Set(k[2]));
-  p = Fma(p, x2, Set(k[3]));
-  p = Fma(p, x2, Set(k[4]));
-  p = Fma(p, x2, Set(k[5]));
-  p = Fma(p, x2, Set(k[6]));
-  p = Fma(p, x2, Set(k[7]));
-  p = Fma(p, x2, Set(k[8]));
-  p = Fma(p, x2, Set(k[9]));
-  p = Fma(p, x2, Set(k[10]));
-  return Mul(Neg(x), p);
+  const V x = Sub(phi, Set(1.5707963267948966)), y = Mul(x, x);
+  const V y2 = Mul(y, y), y4 = Mul(y2, y2), y8 = Mul(y4, y4);
+  const double* k = kCosHalfTurnSeries;  // k[10 - i]: y^i's coefficient
+  const V e01 = Fma(Set(k[9]), y, Set(k[10])), e23 = Fma(Set(k[7]), y, Set(k[8]));
+  const V e45 = Fma(Set(k[5]), y, Set(k[6])), e67 = Fma(Set(k[3]), y, Set(k[4]));
+  const V e89 = Fma(Set(k[1]), y, Set(k[2]));
+  const V f03 = Fma(e23, y2, e01), f47 = Fma(e67, y2, e45), f810 = Fma(Set(k[0]), y2, e89);
+  return Mul(Neg(x), Fma(f810, y8, Fma(f47, y4, f03)));
 }
 
 /// A FastRing's constants, broadcast.
 struct Consts {
-  V A, B, cosM, invCosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, gDen;
+  V A, B, cosM, invCosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
 };
 
 KILN_AVX512 inline Consts ConstsOf(const FastRing& r) {
-  return {Set(r.A),      Set(r.B),    Set(r.cosM),     Set(1 / r.cosM), Set(r.mu),
-          Set(r.invEta), Set(r.eta2), Set(r.eta2 + 1), Set(r.eta2m1),   Set(r.eta2m1 * r.eta2m1),
-          Set(r.a2),     Set(r.gDen)};
+  return {Set(r.A),      Set(r.B),      Set(r.cosM),     Set(1 / r.cosM), Set(r.mu),
+          Set(r.invEta), Set(r.eta2),   Set(r.eta2 + 1), Set(r.eta2m1),   Set(r.eta2m1 * r.eta2m1),
+          Set(r.a2),     Set(1 - r.a2), Set(r.gDen)};
 }
 
-/// One ray's weighted term, FastView's weigh: wb f p / (gDen p + mu a2 s_i^2), p = 2 mu_i
-/// (sqrt(mu_i^2 + a2 s_i^2) + mu_i), s_i^2 = max(0, 1 - mu_i^2); wb the node's weight times c /
-/// cos_m.
-KILN_AVX512 inline V Weigh(V wb, V mi, V f, const Consts& q) {
+/// One ray's weighted term, FastView's weigh with F = fn / fd: wb fn p / (fd (gDen p + mu a2
+/// s_i^2)), p = 2 mu_i (sqrt(X) + mu_i), X = mu_i^2 + a2 s_i^2 = max(mu_i^2, a2 + (1 - a2) mu_i^2),
+/// s_i^2 = max(0, 1 - mu_i^2); wb the node's weight times c / cos_m. fd (gDen p + mu a2 s_i^2) as
+/// one fused step (fd gDen) p + fd mu a2 s_i^2, whose factors wait on no root.
+KILN_AVX512 inline V Weigh(V wb, V mi, V fn, V fd, const Consts& q) {
+  const V mi2 = Mul(mi, mi);
   const V a2s2 = Mul(q.a2, StdMax(_mm512_setzero_pd(), Fnma(mi, mi, Set(1))));
-  const V p = Mul(Add(mi, mi), Add(Sqrt(Fma(mi, mi, a2s2)), mi));
-  return Div(Mul(Mul(wb, f), p), Fma(q.gDen, p, Mul(q.mu, a2s2)));
+  const V X = Max(mi2, Fma(q.oneMinusA2, mi2, q.a2));
+  const V p = Mul(Add(mi, mi), Add(Sqrt(X), mi));
+  return Div(Mul(Mul(wb, fn), p), Fma(Mul(fd, q.gDen), p, Mul(fd, Mul(q.mu, a2s2))));
 }
 
 /// The weighted terms {R, T} of U vectors of nodes (phi[u], w[u]) in lanes k[u], added to
@@ -71,8 +68,8 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
                                                                 const V* phi, const V* w,
                                                                 const M* k, V* accR, V* accT) {
   const V zero = _mm512_setzero_pd(), one = Set(1);
-  V wb[U], cc[U], g[U], F[U], muR[U];
-  M ok[U], rok[U];
+  V wb[U], cc[U], g[U], Fn[U], Fd[U], muR[U];
+  M ok[U], rok[U], part[U];
   M anyR = 0;
 #pragma GCC unroll 4
   for (int u = 0; u < U; ++u) {
@@ -83,21 +80,25 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
     const V g2 = Fma(cc[u], cc[u], q.eta2m1);
     const M gok = Gt(g2, zero);
     g[u] = _mm512_mask_sqrt_pd(zero, gok, g2);
-    // F by FrDielectric's cancellation-free form over one denominator (FastView).
+    // F = Fn / Fd by FrDielectric's cancellation-free form over one denominator (FastView), its
+    // division left to the weights; F = 1 (Fn = Fd = 1) under total internal reflection and
+    // where Fn < Fd fails (also for a NaN).
     const V a = Add(cc[u], g[u]), b = Fma(q.eta2, cc[u], g[u]);
     const V aa = Mul(a, a), bb = Mul(b, b);
     const V x = Fms(Mul(q.eta2p1, cc[u]), cc[u], one);
     const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-    const V Fv = StdMin(one, Div(Mul(q.e2m1sq, Fma(Mul(x, x), a4, b4)), Mul(Add(a4, a4), b4)));
-    F[u] = _mm512_mask_blend_pd(gok, one, Fv);
+    const V n = Mul(q.e2m1sq, Fma(Mul(x, x), a4, b4)), d = Mul(Add(a4, a4), b4);
+    part[u] = gok & Lt(n, d);
+    Fn[u] = _mm512_mask_blend_pd(part[u], one, n);
+    Fd[u] = _mm512_mask_blend_pd(part[u], one, d);
     muR[u] = Fms(Add(c, c), q.cosM, q.mu);
-    rok[u] = ok[u] & Gt(muR[u], zero) & Gt(F[u], zero);
+    rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
     anyR |= rok[u];
   }
   if (anyR) {
 #pragma GCC unroll 4
     for (int u = 0; u < U; ++u)
-      accR[u] = Add(accR[u], _mm512_maskz_mov_pd(rok[u], Weigh(wb[u], muR[u], F[u], q)));
+      accR[u] = Add(accR[u], _mm512_maskz_mov_pd(rok[u], Weigh(wb[u], muR[u], Fn[u], Fd[u], q)));
   }
   if (reflectOnly) return;
   V muT[U];
@@ -106,13 +107,14 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
 #pragma GCC unroll 4
   for (int u = 0; u < U; ++u) {
     muT[u] = Mul(Fnma(Sub(cc[u], g[u]), q.cosM, q.mu), q.invEta);
-    tok[u] = ok[u] & Lt(F[u], one) & Gt(muT[u], zero);
+    tok[u] = ok[u] & part[u] & Gt(muT[u], zero);
     anyT |= tok[u];
   }
   if (anyT) {
 #pragma GCC unroll 4
     for (int u = 0; u < U; ++u)
-      accT[u] = Add(accT[u], _mm512_maskz_mov_pd(tok[u], Weigh(wb[u], muT[u], Sub(one, F[u]), q)));
+      accT[u] = Add(accT[u],
+                    _mm512_maskz_mov_pd(tok[u], Weigh(wb[u], muT[u], Sub(Fd[u], Fn[u]), Fd[u], q)));
   }
 }
 
