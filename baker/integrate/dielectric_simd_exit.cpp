@@ -68,30 +68,46 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
                                                                 const V* phi, const V* w,
                                                                 const M* k, V* accR, V* accT) {
   const V zero = _mm512_setzero_pd(), one = Set(1);
-  V wb[U], cc[U], g[U], Fn[U], Fd[U], muR[U];
-  M ok[U], rok[U], part[U];
-  M anyR = 0;
+  V wb[U], cc[U], g[U], Fn[U], Fd[U], muR[U], g2[U];
+  M ok[U], rok[U], part[U], gok[U];
+  M anyR = 0, anyG = 0;
 #pragma GCC unroll 4
   for (int u = 0; u < U; ++u) {
     const V c = Fma(q.B, CosHalfTurnFused(phi[u]), q.A);
     ok[u] = Gt(c, zero) & k[u];
     wb[u] = Mul(w[u], Mul(c, q.invCosM));
     cc[u] = StdMin(c, one);
-    const V g2 = Fma(cc[u], cc[u], q.eta2m1);
-    const M gok = Gt(g2, zero);
-    g[u] = _mm512_mask_sqrt_pd(zero, gok, g2);
-    // F = Fn / Fd by FrDielectric's cancellation-free form over one denominator (FastView), its
-    // division left to the weights; F = 1 (Fn = Fd = 1) under total internal reflection and
-    // where Fn < Fd fails (also for a NaN).
-    const V a = Add(cc[u], g[u]), b = Fma(q.eta2, cc[u], g[u]);
-    const V aa = Mul(a, a), bb = Mul(b, b);
-    const V x = Fms(Mul(q.eta2p1, cc[u]), cc[u], one);
-    const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
-    const V n = Mul(q.e2m1sq, Fma(Mul(x, x), a4, b4)), d = Mul(Add(a4, a4), b4);
-    part[u] = gok & Lt(n, d);
-    Fn[u] = _mm512_mask_blend_pd(part[u], one, n);
-    Fd[u] = _mm512_mask_blend_pd(part[u], one, d);
+    g2[u] = Fma(cc[u], cc[u], q.eta2m1);
+    gok[u] = Gt(g2[u], zero);
+    anyG |= gok[u];
     muR[u] = Fms(Add(c, c), q.cosM, q.mu);
+  }
+  // F = Fn / Fd by FrDielectric's cancellation-free form over one denominator (FastView), its
+  // division left to the weights; F = 1 (Fn = Fd = 1) under total internal reflection and
+  // where Fn < Fd fails (also for a NaN): wholly so where no lane has g^2 > 0 (a panel past the
+  // critical angle), its operations then skipped.
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u) {
+    g[u] = zero;
+    Fn[u] = Fd[u] = one;
+    part[u] = 0;
+  }
+  if (anyG) {
+#pragma GCC unroll 4
+    for (int u = 0; u < U; ++u) {
+      g[u] = _mm512_mask_sqrt_pd(zero, gok[u], g2[u]);
+      const V a = Add(cc[u], g[u]), b = Fma(q.eta2, cc[u], g[u]);
+      const V aa = Mul(a, a), bb = Mul(b, b);
+      const V x = Fms(Mul(q.eta2p1, cc[u]), cc[u], one);
+      const V a4 = Mul(aa, aa), b4 = Mul(bb, bb);
+      const V n = Mul(q.e2m1sq, Fma(Mul(x, x), a4, b4)), d = Mul(Add(a4, a4), b4);
+      part[u] = gok[u] & Lt(n, d);
+      Fn[u] = _mm512_mask_blend_pd(part[u], one, n);
+      Fd[u] = _mm512_mask_blend_pd(part[u], one, d);
+    }
+  }
+#pragma GCC unroll 4
+  for (int u = 0; u < U; ++u) {
     rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
     anyR |= rok[u];
   }
@@ -101,6 +117,7 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
       accR[u] = Add(accR[u], _mm512_maskz_mov_pd(rok[u], Weigh(wb[u], muR[u], Fn[u], Fd[u], q)));
   }
   if (reflectOnly) return;
+  if (!anyG) return;  // no lane transmits
   V muT[U];
   M tok[U];
   M anyT = 0;
