@@ -597,11 +597,18 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
       innerShares[q] = &SmoothNodesOf(innerCount[q]);
     }
     int m = 0;
-    for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &hs[m], &wos[m])) continue;
-      cosM[m] = hs[m].cosTheta;
-      sinM[m] = hs[m].sinTheta;
-      ++m;
+    if (simd) {
+      m = dielectric_simd::FastOuterRings(vs[i], vs[i + 1], Sqr(p.dist.alpha), go.x.data(),
+                                          go.w.data(), static_cast<int>(go.x.size()), sinM, cosM,
+                                          wos);
+      for (int r = 0; r < m; ++r) hs[r] = {sinM[r], cosM[r]};
+    } else {
+      for (size_t ko = 0; ko < go.x.size(); ++ko) {
+        if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &hs[m], &wos[m])) continue;
+        cosM[m] = hs[m].cosTheta;
+        sinM[m] = hs[m].sinTheta;
+        ++m;
+      }
     }
     if (simd)
       for (int r = 0; r < m; r += 8)

@@ -25,29 +25,26 @@ namespace {
 /// The lanes of one vector of partial sums.
 constexpr int kLanes = 8;
 
-/// CosHalfTurnFused of dielectric_simd_exit.cpp: dielectric_walk::CosHalfTurn's series (cos phi
-/// = -sin(phi - pi/2) to x^21) by Estrin's scheme in y = x^2, its steps fused.
-KILN_RING_INLINE double CosHalfTurnFused(double phi) {
+/// CosRing of dielectric_simd_exit.cpp: cos phi = -x P(x^2), x = phi - pi/2, P by
+/// kRingSinSeries in Estrin's scheme, its steps fused.
+KILN_RING_INLINE double CosRing(double phi) {
   const double x = phi - 1.5707963267948966, y = x * x;
   const double y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
-  const double* k = kCosHalfTurnSeries;  // k[10 - i]: y^i's coefficient
-  const double e01 = std::fma(k[9], y, k[10]), e23 = std::fma(k[7], y, k[8]);
-  const double e45 = std::fma(k[5], y, k[6]), e67 = std::fma(k[3], y, k[4]);
-  const double e89 = std::fma(k[1], y, k[2]);
-  const double f03 = std::fma(e23, y2, e01), f47 = std::fma(e67, y2, e45),
-               f810 = std::fma(k[0], y2, e89);
-  return -x * std::fma(f810, y8, std::fma(f47, y4, f03));
+  const double* k = kRingSinSeries;
+  const double e01 = std::fma(k[1], y, k[0]), e23 = std::fma(k[3], y, k[2]);
+  const double e45 = std::fma(k[5], y, k[4]), e67 = std::fma(k[7], y, k[6]);
+  const double f03 = std::fma(e23, y2, e01), f47 = std::fma(e67, y2, e45);
+  return -x * std::fma(k[8], y8, std::fma(f47, y4, f03));
 }
 
 /// A FastRing's constants as dielectric_simd_exit.cpp's ConstsOf makes them.
 struct Consts {
-  double A, B, cosM, invCosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
+  double A, B, cosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
 };
 
 KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
-  return {r.A,      r.B,      r.cosM,     1 / r.cosM, r.mu,
-          r.invEta, r.eta2,   r.eta2 + 1, r.eta2m1,   r.eta2m1 * r.eta2m1,
-          r.a2,     1 - r.a2, r.gDen};
+  return {r.A,  r.B,      r.cosM, r.mu, r.invEta, r.eta2, r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1,
+          r.a2, 1 - r.a2, r.gDen};
 }
 
 /// std::max(0, x) as MAXPD(x, 0): (x > 0) ? x : 0.
@@ -55,15 +52,12 @@ KILN_RING_INLINE double MaxZero(double x) { return x > 0 ? x : 0.0; }
 /// std::min(c, 1) as MINPD(1, c): (1 < c) ? 1 : c.
 KILN_RING_INLINE double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
 
-/// MAXPD(a, b): (a > b) ? a : b.
-KILN_RING_INLINE double MaxPd(double a, double b) { return a > b ? a : b; }
-
 /// Weigh of dielectric_simd_exit.cpp: wb fn p / (fd (gDen p + mu a2 s_i^2)), p = 2 mu_i
-/// (sqrt(X) + mu_i), X = max(mu_i^2, a2 + (1 - a2) mu_i^2), s_i^2 = max(0, 1 - mu_i^2).
+/// (sqrt(X) + mu_i), X = a2 + (1 - a2) mu_i^2, s_i^2 = max(0, 1 - mu_i^2).
 KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const Consts& q) {
   const double mi2 = mi * mi;
   const double a2s2 = q.a2 * MaxZero(std::fma(-mi, mi, 1.0));
-  const double X = MaxPd(mi2, std::fma(q.oneMinusA2, mi2, q.a2));
+  const double X = std::fma(q.oneMinusA2, mi2, q.a2);
   const double p = (mi + mi) * (std::sqrt(X) + mi);
   return (wb * fn) * p / std::fma(fd * q.gDen, p, fd * (q.mu * a2s2));
 }
@@ -72,9 +66,9 @@ KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const 
 /// of dielectric_simd_exit.cpp, one lane).
 KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, double phi, double w,
                                double* accR, double* accT) {
-  const double c = std::fma(q.B, CosHalfTurnFused(phi), q.A);
+  const double c = std::fma(q.B, CosRing(phi), q.A);
   if (!(c > 0)) return;
-  const double wb = w * (c * q.invCosM), cc = MinOneOf(c);
+  const double wb = w * c, cc = MinOneOf(c);
   const double g2 = std::fma(cc, cc, q.eta2m1);
   const bool gok = g2 > 0;
   const double g = gok ? std::sqrt(g2) : 0.0;
@@ -119,8 +113,9 @@ KILN_RING_INLINE void RingSums(const FastRing& r, const double* phi, const doubl
     for (int i = 0; i < kLanes; ++i) l[i] = acc[0][i] + acc[1][i];
     return ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
   };
-  *sumR = laneSum(accR);
-  *sumT = laneSum(accT);
+  const double invCosM = 1 / r.cosM;
+  *sumR = laneSum(accR) * invCosM;
+  *sumT = laneSum(accT) * invCosM;
 }
 
 void RingSumsBaseline(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
