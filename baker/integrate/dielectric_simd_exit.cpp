@@ -84,6 +84,7 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
     gok[u] = Gt(g2[u], zero);
     anyG |= gok[u];
     muR[u] = Fms(Add(c, c), q.cosM, q.mu);
+    anyR |= ok[u] & Gt(muR[u], zero);  // rok's lanes and more, known before F
   }
   // F = Fn / Fd by FrDielectric's cancellation-free form over one denominator (FastView), its
   // division left to the weights; F = 1 (Fn = Fd = 1) under total internal reflection and
@@ -110,10 +111,7 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
     }
   }
 #pragma GCC unroll 4
-  for (int u = 0; u < U; ++u) {
-    rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
-    anyR |= rok[u];
-  }
+  for (int u = 0; u < U; ++u) rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
   if (anyR) {
 #pragma GCC unroll 4
     for (int u = 0; u < U; ++u)
@@ -127,8 +125,9 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
 #pragma GCC unroll 4
   for (int u = 0; u < U; ++u) {
     muT[u] = Mul(Fnma(Sub(cc[u], g[u]), q.cosM, q.mu), q.invEta);
-    tok[u] = ok[u] & part[u] & Gt(muT[u], zero);
-    anyT |= tok[u];
+    const M up = ok[u] & Gt(muT[u], zero);
+    tok[u] = up & part[u];
+    anyT |= up & gok[u];  // tok's lanes and more, known before F
   }
   if (anyT) {
 #pragma GCC unroll 4
