@@ -47,17 +47,14 @@ KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
           r.a2, 1 - r.a2, r.gDen};
 }
 
-/// std::max(0, x) as MAXPD(x, 0): (x > 0) ? x : 0.
-KILN_RING_INLINE double MaxZero(double x) { return x > 0 ? x : 0.0; }
 /// std::min(c, 1) as MINPD(1, c): (1 < c) ? 1 : c.
 KILN_RING_INLINE double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
 
 /// Weigh of dielectric_simd_exit.cpp: wb fn p / (fd (gDen p + mu a2 s_i^2)), p = 2 mu_i
-/// (sqrt(X) + mu_i), X = a2 + (1 - a2) mu_i^2, s_i^2 = max(0, 1 - mu_i^2).
+/// (sqrt(X) + mu_i), X = a2 + (1 - a2) mu_i^2, a2 s_i^2 = X - mu_i^2.
 KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const Consts& q) {
   const double mi2 = mi * mi;
-  const double a2s2 = q.a2 * MaxZero(std::fma(-mi, mi, 1.0));
-  const double X = std::fma(q.oneMinusA2, mi2, q.a2);
+  const double X = std::fma(q.oneMinusA2, mi2, q.a2), a2s2 = X - mi2;
   const double p = (mi + mi) * (std::sqrt(X) + mi);
   return (wb * fn) * p / std::fma(fd * q.gDen, p, fd * (q.mu * a2s2));
 }

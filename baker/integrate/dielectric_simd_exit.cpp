@@ -50,15 +50,14 @@ KILN_AVX512 inline Consts ConstsOf(const FastRing& r) {
 }
 
 /// One ray's weighted term, FastView's weigh with F = fn / fd, times cos_m: wb fn p / (fd (gDen p
-/// + mu a2 s_i^2)), p = 2 mu_i (sqrt(X) + mu_i), s_i^2 = max(0, 1 - mu_i^2) and X = mu_i^2 + a2
-/// s_i^2 as a2 + (1 - a2) mu_i^2 (one fused step; the same for mu_i <= 1, and mu_i exceeds 1 by
-/// rounding only); wb = w c, the node's weight times c (the factor 1 / cos_m is the ring's).
-/// fd (gDen p + mu a2 s_i^2) as one fused step (fd gDen) p + fd mu a2 s_i^2, whose factors wait
-/// on no root.
+/// + mu a2 s_i^2)), p = 2 mu_i (sqrt(X) + mu_i), X = mu_i^2 + a2 s_i^2 = a2 + (1 - a2) mu_i^2
+/// (s_i^2 = 1 - mu_i^2; mu_i exceeds 1 by rounding only) in one fused step, and a2 s_i^2 as X -
+/// mu_i^2 (within an ulp of X, which is below an ulp of the denominator); wb = w c, the node's
+/// weight times c (the factor 1 / cos_m is the ring's). fd (gDen p + mu a2 s_i^2) as one fused step
+/// (fd gDen) p + fd mu a2 s_i^2, whose factors wait on no root.
 KILN_AVX512 inline V Weigh(V wb, V mi, V fn, V fd, const Consts& q) {
   const V mi2 = Mul(mi, mi);
-  const V a2s2 = Mul(q.a2, StdMax(_mm512_setzero_pd(), Fnma(mi, mi, Set(1))));
-  const V X = Fma(q.oneMinusA2, mi2, q.a2);
+  const V X = Fma(q.oneMinusA2, mi2, q.a2), a2s2 = Sub(X, mi2);
   const V p = Mul(Add(mi, mi), Add(Sqrt(X), mi));
   return Div(Mul(Mul(wb, fn), p), Fma(Mul(fd, q.gDen), p, Mul(fd, Mul(q.mu, a2s2))));
 }
