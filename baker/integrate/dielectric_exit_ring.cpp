@@ -39,12 +39,13 @@ KILN_RING_INLINE double CosRing(double phi) {
 
 /// A FastRing's constants as dielectric_simd_exit.cpp's ConstsOf makes them.
 struct Consts {
-  double A, B, cosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
+  double A, B, cosM, mu, muHalf, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
 };
 
 KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
-  return {r.A,  r.B,      r.cosM, r.mu, r.invEta, r.eta2, r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1,
-          r.a2, 1 - r.a2, r.gDen};
+  return {r.A,      r.B,      r.cosM,     r.mu,     0.5 * r.mu,
+          r.invEta, r.eta2,   r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1,
+          r.a2,     1 - r.a2, r.gDen};
 }
 
 /// std::min(c, 1) as MINPD(1, c): (1 < c) ? 1 : c.
@@ -55,8 +56,8 @@ KILN_RING_INLINE double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
 KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const Consts& q) {
   const double mi2 = mi * mi;
   const double X = std::fma(q.oneMinusA2, mi2, q.a2), a2s2 = X - mi2;
-  const double p = (mi + mi) * (std::sqrt(X) + mi);
-  return (wb * fn) * p / std::fma(fd * q.gDen, p, fd * (q.mu * a2s2));
+  const double h = mi * (std::sqrt(X) + mi);  // p / 2
+  return (wb * fn) * h / (fd * std::fma(q.gDen, h, q.muHalf * a2s2));
 }
 
 /// The weighted terms {R, T} of node (phi, w), added to *accR, *accT where they count (AddTerms

@@ -39,14 +39,13 @@ KILN_AVX512 inline V CosRing(V phi) {
 
 /// A FastRing's constants, broadcast.
 struct Consts {
-  V A, B, cosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
+  V A, B, cosM, mu, muHalf, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
 };
 
 KILN_AVX512 inline Consts ConstsOf(const FastRing& r) {
-  return {Set(r.A),        Set(r.B),      Set(r.cosM),
-          Set(r.mu),       Set(r.invEta), Set(r.eta2),
-          Set(r.eta2 + 1), Set(r.eta2m1), Set(r.eta2m1 * r.eta2m1),
-          Set(r.a2),       Set(1 - r.a2), Set(r.gDen)};
+  return {Set(r.A),      Set(r.B),      Set(r.cosM),     Set(r.mu),     Set(0.5 * r.mu),
+          Set(r.invEta), Set(r.eta2),   Set(r.eta2 + 1), Set(r.eta2m1), Set(r.eta2m1 * r.eta2m1),
+          Set(r.a2),     Set(1 - r.a2), Set(r.gDen)};
 }
 
 /// One ray's weighted term, FastView's weigh with F = fn / fd, times cos_m: wb fn p / (fd (gDen p
@@ -58,8 +57,8 @@ KILN_AVX512 inline Consts ConstsOf(const FastRing& r) {
 KILN_AVX512 inline V Weigh(V wb, V mi, V fn, V fd, const Consts& q) {
   const V mi2 = Mul(mi, mi);
   const V X = Fma(q.oneMinusA2, mi2, q.a2), a2s2 = Sub(X, mi2);
-  const V p = Mul(Add(mi, mi), Add(Sqrt(X), mi));
-  return Div(Mul(Mul(wb, fn), p), Fma(Mul(fd, q.gDen), p, Mul(fd, Mul(q.mu, a2s2))));
+  const V h = Mul(mi, Add(Sqrt(X), mi));  // p / 2
+  return Div(Mul(Mul(wb, fn), h), Mul(fd, Fma(q.gDen, h, Mul(q.muHalf, a2s2))));
 }
 
 /// The weighted terms {R, T} of U vectors of nodes (phi[u], w[u]) in lanes k[u], added to
