@@ -825,7 +825,7 @@ class RuleMemo {
   static constexpr int kShards = 16;
   static constexpr size_t kMemoPerShard = 16384;  // 262,144 points
   // An open-addressed table per shard, at most half full (a lookup reads one or two slots, where
-  // a node-based map followed two pointers): 24 MB once every shard holds a point.
+  // a node-based map followed two pointers): about 29 MB once every shard holds a point.
   static constexpr size_t kSlotsPerShard = 2 * kMemoPerShard;
   struct Slot {
     Key k;
