@@ -59,7 +59,7 @@ constexpr double kRingSinSeries[kRingSinTerms] = {1.0,
                                                   2.7215821926997076e-15};
 
 /// The ring's sums of FastView's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
-/// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
+/// w[j] R(phi[j]), *sumT likewise (cos phi by kRingSinSeries). Fused multiply-add and
 /// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums
 /// gives its bits. Needs Enabled().
 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,

@@ -3,9 +3,12 @@
 // instruction, with fused multiply-add (AVX-512F has it) and the ring's sums kept in vector
 // accumulators. PortableRingSums (dielectric_exit_ring.cpp) does these operations one node at a
 // time with std::fma and the same lanes, for the same bits (tests/integrate_dielectric_simd.cpp):
-// change one, change the other. FastView's formulas, rearranged where a fused form is shorter:
-// c = A + B cos phi and the x^2 Horner steps of CosHalfTurn as fused steps, 1 - mu_i^2 by one
-// fused step, c / cos_m as c (1 / cos_m) and mu_t's division by eta as a product with 1 / eta.
+// change one, change the other. FastView's formulas, rearranged for a short chain of dependent
+// operations (the ring is bound by it, not by the divider: docs/design/glass-tables.md, "The exit
+// ring's dependency chain"): cos phi by an economised series in Estrin's form (CosRing), c = A +
+// B cos phi fused, F = Fn / Fd with its division folded into the weights' (Weigh), mu_t's
+// division by eta as a product with 1 / eta, and the factor 1 / cos_m of every weight applied
+// once to the ring's sums.
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/math/constants.h"
 #include "baker/integrate/dielectric_simd_ops.h"
