@@ -97,7 +97,6 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "baker/integrate/dielectric_column_memo.h"
@@ -600,11 +599,18 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
       innerShares[q] = &SmoothNodesOf(innerCount[q]);
     }
     int m = 0;
-    for (size_t ko = 0; ko < go.x.size(); ++ko) {
-      if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &hs[m], &wos[m])) continue;
-      cosM[m] = hs[m].cosTheta;
-      sinM[m] = hs[m].sinTheta;
-      ++m;
+    if (simd) {
+      m = dielectric_simd::FastOuterRings(vs[i], vs[i + 1], Sqr(p.dist.alpha), go.x.data(),
+                                          go.w.data(), static_cast<int>(go.x.size()), sinM, cosM,
+                                          wos);
+      for (int r = 0; r < m; ++r) hs[r] = {sinM[r], cosM[r]};
+    } else {
+      for (size_t ko = 0; ko < go.x.size(); ++ko) {
+        if (!OuterRing(p, vs[i], vs[i + 1], go.x[ko], go.w[ko], &hs[m], &wos[m])) continue;
+        cosM[m] = hs[m].cosTheta;
+        sinM[m] = hs[m].sinTheta;
+        ++m;
+      }
     }
     if (simd)
       for (int r = 0; r < m; r += 8)
@@ -785,18 +791,25 @@ class RuleMemo {
   };
   bool Find(double mu, double alpha, double eta, Value& out) {
     const Key k = KeyOf(mu, alpha, eta);
-    Shard& s = shards_[ShardOf(k)];
+    const size_t h = KeyHash()(k);
+    Shard& s = shards_[ShardOf(h)];
     std::lock_guard<std::mutex> lock(s.mutex);
-    auto it = s.map.find(k);
-    if (it == s.map.end()) return false;
-    out = it->second;
+    const Slot* slot = s.Probe(k, h);
+    if (!slot || !slot->used) return false;
+    out = slot->v;
     return true;
   }
   void Keep(double mu, double alpha, double eta, const Value& v) {
     const Key k = KeyOf(mu, alpha, eta);
-    Shard& s = shards_[ShardOf(k)];
+    const size_t h = KeyHash()(k);
+    Shard& s = shards_[ShardOf(h)];
     std::lock_guard<std::mutex> lock(s.mutex);
-    if (s.map.size() < kMemoPerShard) s.map.emplace(k, v);
+    if (s.count >= kMemoPerShard) return;
+    if (s.slots.empty()) s.slots.resize(kSlotsPerShard);
+    Slot* slot = s.Probe(k, h);
+    if (slot->used) return;
+    *slot = {k, v, true};
+    ++s.count;
   }
 
  private:
@@ -813,10 +826,26 @@ class RuleMemo {
     }
   };
   static constexpr int kShards = 16;
-  static constexpr size_t kMemoPerShard = 16384;  // 262,144 points: about 20 MB at most
+  static constexpr size_t kMemoPerShard = 16384;  // 262,144 points
+  // An open-addressed table per shard, at most half full (a lookup reads one or two slots, where
+  // a node-based map followed two pointers): about 29 MB once every shard holds a point.
+  static constexpr size_t kSlotsPerShard = 2 * kMemoPerShard;
+  struct Slot {
+    Key k;
+    Value v;
+    bool used;
+  };
   struct Shard {
     std::mutex mutex;
-    std::unordered_map<Key, Value, KeyHash> map;
+    std::vector<Slot> slots;  // kSlotsPerShard once the first point is kept
+    size_t count = 0;
+    /// The slot that holds k, or the free slot where it would go (linear probing from the
+    /// hash's bits 16 and up: ShardOf took bits 7 .. 10); null while the table is empty.
+    Slot* Probe(const Key& k, size_t h) {
+      if (slots.empty()) return nullptr;
+      for (size_t i = (h >> 16) & (kSlotsPerShard - 1);; i = (i + 1) & (kSlotsPerShard - 1))
+        if (!slots[i].used || slots[i].k == k) return &slots[i];
+    }
   };
   static std::uint64_t Bits(double x) {
     std::uint64_t b;
@@ -826,7 +855,7 @@ class RuleMemo {
   static Key KeyOf(double mu, double alpha, double eta) {
     return {Bits(mu), Bits(alpha), Bits(eta)};
   }
-  static int ShardOf(const Key& k) { return static_cast<int>((KeyHash()(k) >> 7) % kShards); }
+  static int ShardOf(size_t hash) { return static_cast<int>((hash >> 7) % kShards); }
   Shard shards_[kShards];
 };
 

@@ -41,32 +41,44 @@ KILN_AVX512 inline V Acos8(V x) {
   return _mm512_mask_blend_pd(big, small, large);
 }
 
-/// The boundaries of eight rings between 0 and phiMax, sorted lane by lane as they come: slot
-/// k holds each lane's k-th smallest (+inf past a lane's count); count the lanes' counts.
+/// The boundaries of eight rings between 0 and phiMax: the candidates in the thresholds' order
+/// (their acos, the lanes that keep each), then sorted lane by lane (Sort): slot k holds each
+/// lane's k-th smallest (+inf past a lane's count); count the lanes' counts.
 struct Slots {
-  int n = 0;
+  int nCand = 0, n = 0;
+  V cand[kMaxSlots];
+  M candKeep[kMaxSlots];
   V phi[kMaxSlots];
   V count;
 };
 
-/// Adds threshold c0 (lanes `where`) to s: cp = (c0 - A) / (sin_o sin_m), kept where it is in
-/// (-1, 1) and its acos in (0, phiMax).
+/// Adds threshold c0 (lanes `where`) to s's candidates: cp = (c0 - A) / (sin_o sin_m), kept
+/// where it is in (-1, 1) and its acos in (0, phiMax). No branch waits on an acos here: the
+/// thresholds' acos overlap.
 KILN_AVX512 inline void AddSlot(Slots* s, V c0, M where, V A, V inv, V phiMax) {
   const V cp = Mul(Sub(c0, A), inv);
   const M in = where & Gt(cp, Set(-1)) & Lt(cp, Set(1));
+  if (!in) return;  // no lane's boundary: its acos is not needed
   const V q = Acos8(cp);
-  const M keep = in & Gt(q, _mm512_setzero_pd()) & Lt(q, phiMax);
-  if (!keep) return;
-  // Insertion into each lane's sorted column by min and max (the values are neither NaN nor
-  // signed zeros: the same order as SortSmall's).
-  V x = _mm512_mask_blend_pd(keep, Set(INFINITY), q);
-  for (int k = 0; k < s->n; ++k) {
-    const V lo = Min(s->phi[k], x);
-    x = Max(s->phi[k], x);
-    s->phi[k] = lo;
+  s->cand[s->nCand] = q;
+  s->candKeep[s->nCand++] = in & Gt(q, _mm512_setzero_pd()) & Lt(q, phiMax);
+}
+
+/// Inserts s's kept candidates in their order into each lane's sorted column by min and max (the
+/// values are neither NaN nor signed zeros: the same order as SortSmall's).
+KILN_AVX512 inline void Sort(Slots* s) {
+  for (int c = 0; c < s->nCand; ++c) {
+    const M keep = s->candKeep[c];
+    if (!keep) continue;
+    V x = _mm512_mask_blend_pd(keep, Set(INFINITY), s->cand[c]);
+    for (int k = 0; k < s->n; ++k) {
+      const V lo = Min(s->phi[k], x);
+      x = Max(s->phi[k], x);
+      s->phi[k] = lo;
+    }
+    s->phi[s->n++] = x;
+    s->count = _mm512_mask_add_pd(s->count, keep, s->count, Set(1));
   }
-  s->phi[s->n++] = x;
-  s->count = _mm512_mask_add_pd(s->count, keep, s->count, Set(1));
 }
 
 }  // namespace
@@ -105,6 +117,7 @@ KILN_AVX512 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const doub
       counts = _mm512_mask_add_pd(counts, in, counts, one);
     }
   }
+  Sort(&s);
   alignas(64) double maxes[8], as[8], counts[8], sorted[kMaxSlots][8];
   _mm512_store_pd(maxes, phiMax);
   _mm512_store_pd(as, A);

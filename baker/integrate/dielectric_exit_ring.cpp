@@ -25,73 +25,70 @@ namespace {
 /// The lanes of one vector of partial sums.
 constexpr int kLanes = 8;
 
-/// CosHalfTurnFused of dielectric_simd_exit.cpp: dielectric_walk::CosHalfTurn's series (cos phi
-/// = -sin(phi - pi/2) to x^21), its Horner steps fused.
-KILN_RING_INLINE double CosHalfTurnFused(double phi) {
-  const double x = phi - 1.5707963267948966, x2 = x * x;
-  const double* k = kCosHalfTurnSeries;
-  double p = k[0];
-  p = std::fma(p, x2, k[1]);
-  p = std::fma(p, x2, k[2]);
-  p = std::fma(p, x2, k[3]);
-  p = std::fma(p, x2, k[4]);
-  p = std::fma(p, x2, k[5]);
-  p = std::fma(p, x2, k[6]);
-  p = std::fma(p, x2, k[7]);
-  p = std::fma(p, x2, k[8]);
-  p = std::fma(p, x2, k[9]);
-  p = std::fma(p, x2, k[10]);
-  return -x * p;
+/// CosRing of dielectric_simd_exit.cpp: cos phi = -x P(x^2), x = phi - pi/2, P by
+/// kRingSinSeries in Estrin's scheme, its steps fused.
+KILN_RING_INLINE double CosRing(double phi) {
+  const double x = phi - 1.5707963267948966, y = x * x;
+  const double y2 = y * y, y4 = y2 * y2, y8 = y4 * y4;
+  const double* k = kRingSinSeries;
+  const double e01 = std::fma(k[1], y, k[0]), e23 = std::fma(k[3], y, k[2]);
+  const double e45 = std::fma(k[5], y, k[4]), e67 = std::fma(k[7], y, k[6]);
+  const double f03 = std::fma(e23, y2, e01), f47 = std::fma(e67, y2, e45);
+  return -x * std::fma(k[8], y8, std::fma(f47, y4, f03));
 }
 
 /// A FastRing's constants as dielectric_simd_exit.cpp's ConstsOf makes them.
 struct Consts {
-  double A, B, cosM, invCosM, mu, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, gDen;
+  double A, B, cosM, mu, muHalf, invEta, eta2, eta2p1, eta2m1, e2m1sq, a2, oneMinusA2, gDen;
 };
 
 KILN_RING_INLINE Consts ConstsOf(const FastRing& r) {
-  return {r.A,    r.B,        r.cosM,   1 / r.cosM,          r.mu, r.invEta,
-          r.eta2, r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1, r.a2, r.gDen};
+  return {r.A,      r.B,      r.cosM,     r.mu,     0.5 * r.mu,
+          r.invEta, r.eta2,   r.eta2 + 1, r.eta2m1, r.eta2m1 * r.eta2m1,
+          r.a2,     1 - r.a2, r.gDen};
 }
 
-/// std::max(0, x) as MAXPD(x, 0): (x > 0) ? x : 0.
-KILN_RING_INLINE double MaxZero(double x) { return x > 0 ? x : 0.0; }
 /// std::min(c, 1) as MINPD(1, c): (1 < c) ? 1 : c.
 KILN_RING_INLINE double MinOneOf(double c) { return 1 < c ? 1.0 : c; }
-/// std::min(1, x) as MINPD(x, 1): (x < 1) ? x : 1 (1 for a NaN x, as the vector path's).
-KILN_RING_INLINE double MinWithOne(double x) { return x < 1 ? x : 1.0; }
 
-/// Weigh of dielectric_simd_exit.cpp: wb f p / (gDen p + mu a2 s_i^2), p = 2 mu_i (sqrt(mu_i^2
-/// + a2 s_i^2) + mu_i), s_i^2 = max(0, 1 - mu_i^2).
-KILN_RING_INLINE double Weigh(double wb, double mi, double f, const Consts& q) {
-  const double a2s2 = q.a2 * MaxZero(std::fma(-mi, mi, 1.0));
-  const double p = (mi + mi) * (std::sqrt(std::fma(mi, mi, a2s2)) + mi);
-  return (wb * f) * p / std::fma(q.gDen, p, q.mu * a2s2);
+/// Weigh of dielectric_simd_exit.cpp: wb fn p / (fd (gDen p + mu a2 s_i^2)), p = 2 mu_i
+/// (sqrt(X) + mu_i), X = a2 + (1 - a2) mu_i^2, a2 s_i^2 = X - mu_i^2.
+KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const Consts& q) {
+  const double mi2 = mi * mi;
+  const double X = std::fma(q.oneMinusA2, mi2, q.a2), a2s2 = X - mi2;
+  const double h = mi * (std::sqrt(X) + mi);  // p / 2
+  return (wb * fn) * h / (fd * std::fma(q.gDen, h, q.muHalf * a2s2));
 }
 
 /// The weighted terms {R, T} of node (phi, w), added to *accR, *accT where they count (AddTerms
 /// of dielectric_simd_exit.cpp, one lane).
 KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, double phi, double w,
                                double* accR, double* accT) {
-  const double c = std::fma(q.B, CosHalfTurnFused(phi), q.A);
+  const double c = std::fma(q.B, CosRing(phi), q.A);
   if (!(c > 0)) return;
-  const double wb = w * (c * q.invCosM), cc = MinOneOf(c);
+  const double wb = w * c, cc = MinOneOf(c);
   const double g2 = std::fma(cc, cc, q.eta2m1);
   const bool gok = g2 > 0;
   const double g = gok ? std::sqrt(g2) : 0.0;
-  double F = 1;
+  double Fn = 1, Fd = 1;  // F = Fn / Fd
+  bool part = false;      // 0 <= F < 1
   if (gok) {
     const double a = cc + g, b = std::fma(q.eta2, cc, g);
     const double aa = a * a, bb = b * b;
     const double x = std::fma(q.eta2p1 * cc, cc, -1.0);
     const double a4 = aa * aa, b4 = bb * bb;
-    F = MinWithOne(q.e2m1sq * std::fma(x * x, a4, b4) / ((a4 + a4) * b4));
+    const double n = q.e2m1sq * std::fma(x * x, a4, b4), d = (a4 + a4) * b4;
+    part = n < d;
+    if (part) {
+      Fn = n;
+      Fd = d;
+    }
   }
   const double muR = std::fma(c + c, q.cosM, -q.mu);
-  if (muR > 0 && F > 0) *accR = *accR + Weigh(wb, muR, F, q);
+  if (muR > 0 && Fn > 0) *accR = *accR + Weigh(wb, muR, Fn, Fd, q);
   if (reflectOnly) return;
   const double muT = std::fma(-(cc - g), q.cosM, q.mu) * q.invEta;
-  if (F < 1 && muT > 0) *accT = *accT + Weigh(wb, muT, 1 - F, q);
+  if (part && muT > 0) *accT = *accT + Weigh(wb, muT, Fd - Fn, Fd, q);
 }
 
 /// PortableRingSums' body (inlined into each of its compiled forms).
@@ -114,8 +111,9 @@ KILN_RING_INLINE void RingSums(const FastRing& r, const double* phi, const doubl
     for (int i = 0; i < kLanes; ++i) l[i] = acc[0][i] + acc[1][i];
     return ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
   };
-  *sumR = laneSum(accR);
-  *sumT = laneSum(accT);
+  const double invCosM = 1 / r.cosM;
+  *sumR = laneSum(accR) * invCosM;
+  *sumT = laneSum(accT) * invCosM;
 }
 
 void RingSumsBaseline(const FastRing& r, const double* phi, const double* w, int J, double* sumR,

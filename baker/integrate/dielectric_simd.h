@@ -41,22 +41,25 @@ struct FastRing {
   bool reflectOnly;
 };
 
-/// dielectric_walk::CosHalfTurn's coefficients in its Horner order (x^20's first): the exit
-/// ring's fused forms of it (FastRingSums, PortableRingSums) read them here.
-constexpr double kCosHalfTurnSeries[11] = {1.9572941063391263e-20,
-                                           -8.2206352466243295e-18,
-                                           2.8114572543455206e-15,
-                                           -7.6471637318198164e-13,
-                                           1.6059043836821613e-10,
-                                           -2.505210838544172e-08,
-                                           2.7557319223985893e-06,
-                                           -0.00019841269841269841,
-                                           0.0083333333333333332,
-                                           -0.16666666666666666,
-                                           1};
+/// The exit ring's cos phi = -sin(x), x = phi - pi/2 in [-pi/2, pi/2]: sin x = x P(x^2), P of
+/// degree 8 with kRingSinSeries[i] y^i's coefficient: sin's Taylor series (to x^33, exact
+/// rationals) economised by shifted Chebyshev polynomials on y in [0, pi^2 / 4] to degree 8, then
+/// rounded; |x P(x^2) - sin x| below 2.4e-17 over [-pi/2, pi/2] (exact arithmetic, a scratch
+/// check at 20,001 points; dielectric_walk::CosHalfTurn's Taylor series to x^21 has 2 more terms).
+/// The exit ring's forms (FastRingSums, PortableRingSums) evaluate it by Estrin's scheme.
+constexpr int kRingSinTerms = 9;
+constexpr double kRingSinSeries[kRingSinTerms] = {1.0,
+                                                  -0.16666666666666666,
+                                                  0.008333333333333186,
+                                                  -0.0001984126984120872,
+                                                  2.755731921123654e-06,
+                                                  -2.5052106891168703e-08,
+                                                  1.6058940907182887e-10,
+                                                  -7.643027273612204e-13,
+                                                  2.7215821926997076e-15};
 
 /// The ring's sums of FastView's terms at its J nodes (phi[j], w[j]): *sumR = sum_j
-/// w[j] R(phi[j]), *sumT likewise (cos phi by CosHalfTurn's series). Fused multiply-add and
+/// w[j] R(phi[j]), *sumT likewise (cos phi by kRingSinSeries). Fused multiply-add and
 /// eight lanes of partial sums in one fixed order (dielectric_simd_exit.cpp); PortableRingSums
 /// gives its bits. Needs Enabled().
 void FastRingSums(const FastRing& r, const double* phi, const double* w, int J, double* sumR,
@@ -70,6 +73,14 @@ void PortableRingSums(const FastRing& r, const double* phi, const double* w, int
 /// PortableRingSums by the CPU's FMA instructions where it has them (true, the default) or by
 /// libm's std::fma (false): the same bits either way (tests compare them).
 void SetPortableFmaInstructions(bool on);
+
+/// dielectric_walk::OuterRing for the n Gauss nodes (t[k], w[k]) of the outer panel [va, vb] of
+/// a GGX problem with alpha^2 = a2, eight nodes per instruction (Smooth's and FromV's IEEE
+/// operations in their order: their bits): the rings that exist (v and the Jacobian positive), in
+/// order, into sinM, cosM (the ring's normal) and wo (its outer weight); returns their count.
+/// Needs Enabled().
+int FastOuterRings(double va, double vb, double a2, const double* t, const double* w, int n,
+                   double* sinM, double* cosM, double* wo);
 
 /// The inner breaks' view constants of the exit walk (dielectric_exit_breaks.h, PhiBreaks): the
 /// thresholds c0 in its order (mu / (2 cos_m), cs, the reflected layer's (m + mu) / (2 cos_m),
