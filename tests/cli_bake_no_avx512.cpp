@@ -10,15 +10,19 @@
 
 using namespace kiln::stress;
 
-TEST_CASE("a bake with KILN_NO_AVX512=1 gives the glass tables' bytes", "[cli][bake][glass-rule]") {
+namespace {
+
+/// Bakes `tables` (a comma-separated --only list) at `size` twice on one thread, with
+/// KILN_NO_AVX512=0 and =1, into two scratch folders named after `scratch`, and requires the
+/// same folder entries and, for each of the `files` .exr files, the same bytes.
+void RequireSameBytesWithoutAvx512(const std::string& tables, int size, int files,
+                                   const std::string& scratch) {
   kiln::dielectric_simd::SetEnabled(true);
   if (!kiln::dielectric_simd::Enabled())
     WARN("no AVX-512F on this CPU: both bakes take the portable paths (compared with themselves)");
-  const std::string tables =
-      "ggx-dielectric-albedo-r-exit,ggx-dielectric-albedo-t-exit,"
-      "ggx-dielectric-albedo-r-exit-avg,ggx-dielectric-albedo-r";
-  ScratchDir fast("bake_avx512"), portable("bake_no_avx512");
-  const std::string args = "bake --size 8 -j 1 --no-lookup-error -q --only " + tables + " --out ";
+  ScratchDir fast(scratch + "_avx512"), portable(scratch + "_no_avx512");
+  const std::string args = "bake --size " + std::to_string(size) +
+                           " -j 1 --no-lookup-error -q --only " + tables + " --out ";
   const auto a = RunKilnFor(120, args + Quote(fast.path.string()), "KILN_NO_AVX512=0");
   const auto b = RunKilnFor(120, args + Quote(portable.path.string()), "KILN_NO_AVX512=1");
   INFO("stderr: " << a.err << " / " << b.err);
@@ -32,35 +36,27 @@ TEST_CASE("a bake with KILN_NO_AVX512=1 gives the glass tables' bytes", "[cli][b
     CHECK(kiln::test::ReadFile(fast / name) == kiln::test::ReadFile(portable / name));
     ++compared;
   }
-  CHECK(compared == 4);
+  CHECK(compared == files);
+}
+
+}  // namespace
+
+TEST_CASE("a bake with KILN_NO_AVX512=1 gives the glass tables' bytes", "[cli][bake][glass-rule]") {
+  RequireSameBytesWithoutAvx512(
+      "ggx-dielectric-albedo-r-exit,ggx-dielectric-albedo-t-exit,"
+      "ggx-dielectric-albedo-r-exit-avg,ggx-dielectric-albedo-r",
+      8, 4, "bake");
 }
 
 TEST_CASE(
     "a bake with KILN_NO_AVX512=1 gives the bytes of the tables whose fixed rules and LTC fits "
     "take AVX-512F lanes",
     "[cli][bake][fixed-rule]") {
-  kiln::dielectric_simd::SetEnabled(true);
-  if (!kiln::dielectric_simd::Enabled())
-    WARN("no AVX-512F on this CPU: both bakes take the portable paths (compared with themselves)");
   // Beckmann and Blinn-Phong nodes, sheen rows (Charlie, charlie-smith, velvet), the LTC
-  // objective's sums (ltc-beckmann: its norm by the Beckmann nodes too).
-  const std::string tables =
+  // objective's sums (ltc-beckmann: its norm by the Beckmann nodes too); the LTC tables are two
+  // files each.
+  RequireSameBytesWithoutAvx512(
       "beckmann-dfg,blinn-phong-dfg,beckmann-separable-dfg,charlie-dfg,charlie-smith-dfg,"
-      "ashikhmin-velvet-albedo,ltc-beckmann,ltc-charlie-smith";
-  ScratchDir fast("bake_rules_avx512"), portable("bake_rules_no_avx512");
-  const std::string args = "bake --size 12 -j 1 --no-lookup-error -q --only " + tables + " --out ";
-  const auto a = RunKilnFor(120, args + Quote(fast.path.string()), "KILN_NO_AVX512=0");
-  const auto b = RunKilnFor(120, args + Quote(portable.path.string()), "KILN_NO_AVX512=1");
-  INFO("stderr: " << a.err << " / " << b.err);
-  REQUIRE(a.exitCode == 0);
-  REQUIRE(b.exitCode == 0);
-  REQUIRE(fast.Entries() == portable.Entries());
-  int compared = 0;
-  for (const std::string& name : fast.Entries()) {
-    if (name.size() < 4 || name.substr(name.size() - 4) != ".exr") continue;
-    INFO(name);
-    CHECK(kiln::test::ReadFile(fast / name) == kiln::test::ReadFile(portable / name));
-    ++compared;
-  }
-  CHECK(compared == 10);  // the LTC tables are two files each
+      "ashikhmin-velvet-albedo,ltc-beckmann,ltc-charlie-smith",
+      12, 10, "bake_rules");
 }
