@@ -44,24 +44,26 @@
 // eta only through the Fresnel layer's thresholds c0 = eps, 4 eps (eps = sqrt(eta^2 - 1)); the
 // reflected ray's geometry (c, i_r, Lambda(i_r)) and the weight c / cos_m not at all. So the rule
 // there fixes those thresholds at eta = 1.1's (eps = 0.458, 4 eps > 1: one threshold), whatever
-// eta: then one walk of (v, phi_m) serves every eta of a table's eta axis (ColumnWalk), with per
-// node the shared part once (cos phi_m, c, the reflected ray and its masking) and per eta only
-// Fresnel's transmittance and the refracted ray. With g = sqrt(c^2 + eta^2 - 1) = eta cos_t,
-// a = c + g, b = eta^2 c + g: 1 - R_s = 4 c g / a^2, 1 - R_p = 4 eta^2 c g / b^2, so
-//     T_f = 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2),   F = 1 - T_f
-// (every term positive: no cancellation; T_f <= 0.998 for eta >= 1.1). The refracted ray
-// mu_t = (mu - (c - g) cos_m) / eta (always down for eta > 1) and its masking mu Lambda(t) =
-// mu alpha^2 s_t^2 / (2 p), p = mu_t (sqrt(alpha^2 + (1 - alpha^2) mu_t^2) + mu_t) (s_t^2 =
-// 1 - mu_t^2), so the weight w (c / cos_m) / (gDen + mu Lambda(t)) = wb p / (p + kh s_t^2), wb =
-// w (c / cos_m) / gDen per node and kh = mu alpha^2 / (2 gDen) per view
-// (dielectric_lanes::EtaTerms): 2 square roots, 2 divisions and 17 multiplications per eta (25
-// with F over the one denominator 2 a^4 b^4 before), two etas per SSE2 lane pair. Each eta's
-// sums are its own, in the walk's order: a column of one (a single
-// point: the lookup-error search, kiln verify) gives the bits the column gives. Evaluations per
-// texel 10,354 counted per eta (8,953 before: the extra threshold for eta > 1.1), of which a
-// 24-eta column walks ~430 per texel; measured cost in docs/catalogue.md ("Tables on request").
-// On the held-out grid (tests/integrate_dielectric_rule_heldout.cpp) the entering points stay
-// within 2.7e-7 of adaptive, as before.
+// eta, and takes each channel where it is cheapest:
+//  - E_R by Fresnel moments. The reflected term is wR F(c, eta), wR = w (c / cos_m) / (gDen +
+//    mu Lambda(i_r)) independent of eta, and F(., eta) is a Chebyshev series of degree 26 in
+//    2c - 1 within 1.1e-11 (dielectric_fresnel_moments.h: analytic on [0, 1], its nearest
+//    singularities the branch points c = +-i eps and, for large eta, the pole c = -1 /
+//    sqrt(eta^2 + 1)). So one walk of (v, phi_m) gathers the moments M_k = sum of wR T_k(2c - 1)
+//    (ReflectedMoments: per node the geometry and 27 terms of the recurrence, eight nodes per
+//    instruction), and E_R(eta) = sum_k a_k(eta) M_k: 27 multiply-adds per eta. By linearity this
+//    is the rule applied to F_N, within 1.1e-11 E_1 of the rule applied to F (E_1 <= 1).
+//  - E_T = T_lobe - T_F by the BTDF pair's column (dielectric_btdf.h: the refracted ray's panels
+//    only, 2,083 evaluations a texel against the walk's 10,354; its memo lets the BTDF table and
+//    these share one walk per column). Per eta there, with g = sqrt(c^2 + eta^2 - 1) = eta cos_t,
+//    a = c + g, b = eta^2 c + g: 1 - F = 2 c g (b^2 + eta^2 a^2) / (a^2 b^2) and the refracted
+//    ray's masking folded into one division (dielectric_lanes::EtaTerms).
+// Each eta's value depends on that eta alone: a column of one (a single point: the lookup-error
+// search, kiln verify) gives the bits the column gives. Evaluations per texel: the walk's 10,354
+// plus the BTDF column's 2,083. On the held-out grid (tests/integrate_dielectric_rule_heldout.cpp)
+// the entering points stay within 3e-7 of adaptive; on 1,100 entering points (10 eta 1.1 .. 3,
+// 11 mu 0 .. 1, 10 roughness 1e-3 .. 1) E_R within 1.8e-8 and E_T within 6.2e-8 of adaptive at
+// 1e-10 (docs/design/glass-tables.md, "The entering columns by Fresnel moments").
 // The exit side (eta < 1.1) keeps the per-point walk, with the same integrand in fewer
 // operations (FastView: F and mu_t from one g, each ray's masking folded into one division) and
 // every walk's cos phi_m by a polynomial (dielectric_walk.h, CosHalfTurn). The exit averages'
@@ -70,13 +72,12 @@
 // and its masking layer; 4,450 evaluations per point against 7,580, within 3.9e-7 of adaptive on
 // the exit held-out grid, tests/integrate_dielectric_reflectance.cpp) and E_avg_T by reciprocity
 // from the entering side's column (integrate/dielectric_albedo_avg.cpp).
-// Eight lanes (issue #15). Where the CPU has AVX-512F (dielectric_simd.h, checked at run time)
-// both walks keep each ring's nodes and evaluate them at the ring's end: the column walk's shared
-// part eight nodes at a time, its per-eta part eight etas at a time (columns of 8 or more: the
-// bake's) or eight nodes at a time (fewer etas: the search's points); then every eta's terms are
-// summed in the walk's order. Same operations lane by lane, no fused multiply-add: the same bits
-// as the portable path (tests/integrate_dielectric_simd.cpp), 2.3x faster for the nine glass
-// tables (docs/design/glass-tables.md, "The rule's cost").
+// Eight lanes. Where the CPU has AVX-512F (dielectric_simd.h, checked at run time) the walks
+// keep each ring's nodes and evaluate them at the ring's end: the column walk's reflected part
+// and its moments eight nodes at a time (ReflectedRing, RingMoments8; the BTDF column's per-eta
+// part eight etas at a time, or eight nodes at a time for fewer etas). Same operations lane by
+// lane, no fused multiply-add, the lanes' sums in one order: the same bits as the portable path
+// (tests/integrate_dielectric_simd.cpp; docs/design/glass-tables.md, "The rule's cost").
 // The exit walk's own counts (eta < 1, kTuned's exit fields): 22 / 12 / 4 / 2 outer nodes, and the
 // azimuth nodes of a ring by its outer panel's class too (ExitClassesOf): 7,254 evaluations per
 // texel of the exit E pair against 8,535. The walk (FastWalk: the exit side, the entering side
@@ -100,7 +101,9 @@
 #include <vector>
 
 #include "baker/integrate/dielectric_column_memo.h"
+#include "baker/integrate/dielectric_btdf.h"
 #include "baker/integrate/dielectric_exit_breaks.h"
+#include "baker/integrate/dielectric_fresnel_moments.h"
 #include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
@@ -402,49 +405,31 @@ dielectric_walk::NodeClasses ExitClassesOf(const DielectricRuleOptions& opt) {
   return c;
 }
 
-using namespace dielectric_lanes;  // Pair: two etas per lane pair
-
-/// The per-eta constants of the entering side's column walk (eta >= kDielectricTableEtaMin),
-/// two etas per lane pair (Pair, dielectric_lanes.h), the last pair padded with a copy of the last
-/// eta.
-struct EtaConsts {
-  double eta2m1[kMaxDielectricColumn], eta2[kMaxDielectricColumn], inv[kMaxDielectricColumn];
-  int pairs;
-  int n;  ///< the column's etas (the AVX-512F path pads to a multiple of 8 with the last)
-};
-
-/// The fixed rule's walk for a column of etas >= kDielectricTableEtaMin at once: the panels of
-/// view v (made at eta = kDielectricTableEtaMin: on the entering side they depend on eta only
-/// through the Fresnel layer's thresholds, fixed here at that eta's), and at every node the
-/// geometry shared by the column (cos phi, c, the reflected ray and its masking) and per eta
-/// only F, the refracted ray and its masking. The same panels, nodes and summation order as
-/// dielectric_walk::FixedWalk; each eta's sums are independent of the others' (a column of one
-/// gives the same bits). out: 2 * ks.pairs entries. evals (optional): the nodes walked (each
-/// eta's evaluations).
-void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeClasses& rule,
-                std::array<double, 2>* out, long long* evals) {
+/// The fixed rule's E_R moments for the entering side's columns (eta >= kDielectricTableEtaMin):
+/// the panels of view v (made at eta = kDielectricTableEtaMin: on the entering side they depend
+/// on eta only through the Fresnel layer's thresholds, fixed here at that eta's), and at every
+/// node only the geometry (cos phi, c, the reflected ray's weight wR with its masking): into M[k]
+/// the rule's sum of wR T_k(2 c - 1), k < dielectric_moments::kTerms, so that E_R(eta) =
+/// sum_k a_k(eta) M[k] (file comment, "Columns"). The same panels, nodes and weights as
+/// dielectric_walk::FixedWalk; a ring's nodes with wR > 0 are kept in order and their moments
+/// taken at the ring's end (dielectric_moments::RingMoments), added with the ring's weight.
+/// Returns the nodes walked.
+long long ReflectedMoments(const View& v, const dielectric_walk::NodeClasses& rule, double* M) {
   struct Sums {
     const View& v;
-    const EtaConsts& ks;
-    const int np2;
+    double* M;
     const dielectric_lanes::RingConsts k =
         dielectric_lanes::RingConstsOf(v.mu, v.gDen, v.dist.alpha);
-    const Pair one = Splat(1), mu = Splat(v.mu), a2 = Splat(k.a2), oma2 = Splat(k.oma2),
-               kh = Splat(k.kh);
-    dielectric_lanes::ColumnSums<kMaxDielectricColumn / 2> sums{np2};
-    Pair cosM = Splat(0);
-    // The AVX-512F path (dielectric_simd.h): the ring's nodes kept, their terms at EndRing.
+    // The AVX-512F path (dielectric_simd.h) computes the shared part eight nodes at a time.
     const bool simd = dielectric_simd::Enabled();
     dielectric_simd::RingBuffer* buf = nullptr;
     PolarParam ring{};
+    int kept = 0;  ///< the ring's nodes with wR > 0, in order
+    double wR[dielectric_simd::kMaxRingNodes] = {}, cc[dielectric_simd::kMaxRingNodes] = {};
     void BeginRing(const PolarParam& h) {
-      if (simd) {
-        buf->J = 0;
-        ring = h;
-        return;
-      }
-      sums.ClearRing();
-      cosM = Splat(h.cosTheta);
+      buf->J = 0;
+      kept = 0;
+      ring = h;
     }
     void Node(const PolarParam& h, double phi, double w) {
       if (simd) {
@@ -454,65 +439,40 @@ void ColumnWalk(const View& v, const EtaConsts& ks, const dielectric_walk::NodeC
       }
       const double c = v.mu * h.cosTheta + v.st * h.sinTheta * dielectric_walk::CosHalfTurn(phi);
       if (!(c > 0) || !(h.cosTheta > 0)) return;
-      // The node's weight times c / cos_m, and the reflected ray's masking (shared).
+      // The node's weight times c / cos_m over the view's and the reflected ray's masking.
       const double wbs = w * (c / h.cosTheta);
       const double muR = 2 * c * h.cosTheta - v.mu;
-      const Pair wR = Splat(muR > 0 ? wbs / (v.gDen + v.mu * (v.dist.MuLambda(muR) / muR)) : 0);
-      const Pair cc = Splat(std::min(c, 1.0)), wb = Splat(wbs / v.gDen);
-      // Per eta (file comment, "Columns"): Tf = 1 - F, the refracted ray's p and denominator.
-      for (int e = 0; e < np2; ++e) {
-        Pair tf, p, den;
-        dielectric_lanes::EtaTerms(cc, Load(ks.eta2m1 + 2 * e), Load(ks.eta2 + 2 * e),
-                                   Load(ks.inv + 2 * e), cosM, mu, a2, oma2, kh, &tf, &p, &den);
-        sums.ring0[e] = sums.ring0[e] + wR * (one - tf);
-        sums.ring1[e] = sums.ring1[e] + wb * tf * p / den;
+      const double r = muR > 0 ? wbs / (v.gDen + v.mu * (v.dist.MuLambda(muR) / muR)) : 0;
+      if (r != 0) {
+        wR[kept] = r;
+        cc[kept++] = std::min(c, 1.0);
       }
     }
     void EndRing(double wo) {
-      if (simd) {
-        SimdRing(wo);
-        return;
+      if (simd && ring.cosTheta > 0) {
+        dielectric_simd::RingBuffer& b = *buf;
+        const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
+                                            v.st * ring.sinTheta,
+                                            ring.cosTheta,
+                                            v.mu,
+                                            v.gDen,
+                                            k.a2,
+                                            k.oma2,
+                                            k.kh};
+        kept = dielectric_simd::ReflectedRing(r, b.phi, b.w, b.J, wR, cc);
       }
-      sums.EndRing(wo);
+      if (kept == 0) return;
+      double m[dielectric_moments::kTerms];
+      if (simd)
+        dielectric_simd::RingMoments8(wR, cc, kept, m);
+      else
+        dielectric_moments::RingMoments(wR, cc, kept, m);
+      for (int q = 0; q < dielectric_moments::kTerms; ++q) M[q] = M[q] + wo * m[q];
     }
-    // The same sums by dielectric_simd: the shared part eight nodes at a time, then eight etas
-    // at a time (a column of eight or more), or one eta and eight nodes at a time (fewer), each
-    // eta's terms added in the nodes' order.
-    void SimdRing(double wo) {
-      dielectric_simd::RingBuffer& b = *buf;
-      const int J = b.J, n = ks.n;
-      if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
-      const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
-                                          v.st * ring.sinTheta,
-                                          ring.cosTheta,
-                                          v.mu,
-                                          v.gDen,
-                                          k.a2,
-                                          k.oma2,
-                                          k.kh};
-      dielectric_simd::ColumnRingShared(r, b.phi, b.w, J, b.valid, b.wR, b.wb, b.cc);
-      dielectric_simd::AddColumnRing(
-          n, b, wo,
-          [&](double* ring0, double* ring1) {
-            dielectric_simd::ColumnRingEtas(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1, ks.eta2,
-                                            ks.inv, (n + 7) / 8, ring0, ring1);
-          },
-          [&](int e) {
-            dielectric_simd::ColumnRingOneEta(r, b.valid, b.wR, b.wb, b.cc, J, ks.eta2m1[e],
-                                              ks.eta2[e], ks.inv[e], b.tR, b.tT);
-          },
-          total0, total1);
-    }
-    double total0[kMaxDielectricColumn] = {}, total1[kMaxDielectricColumn] = {};
-  } s{v, ks, ks.pairs};
+  } s{v, M};
   dielectric_simd::RingBuffer buffer;
   s.buf = &buffer;
-  const long long count = dielectric_walk::WalkNodes(v, rule, s);
-  if (s.simd)
-    for (int e = 0; e < ks.n; ++e) out[e] = {s.total0[e], s.total1[e]};
-  else
-    s.sums.Write(out);
-  if (evals) *evals += count;
+  return dielectric_walk::WalkNodes(v, rule, s);
 }
 
 /// The smoothstep's share of a panel's Gauss nodes, per node count n: node j of the n-point rule
@@ -724,19 +684,18 @@ void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas
                                      const DielectricRuleOptions& opt, std::array<double, 2>* out,
                                      long long* evals) {
   CheckColumn(etas, n);
-  View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
-  EtaConsts ks;
-  ks.pairs = (n + 1) / 2;
-  ks.n = n;
-  for (int e = 0; e < kMaxDielectricColumn; ++e) {
-    const double eta = etas[std::min(e, n - 1)];
-    ks.eta2m1[e] = (eta - 1) * (eta + 1);
-    ks.eta2[e] = eta * eta;
-    ks.inv[e] = 1 / eta;
-  }
-  std::array<double, 2> all[kMaxDielectricColumn];
-  ColumnWalk(v, ks, dielectric_walk::ClassesOf(opt), all, evals);
-  std::copy(all, all + n, out);
+  // E_R by the reflected ray's moments on this rule's panels; E_T = T_lobe - T_F by the BTDF
+  // pair's column (its bake's rule, remembered: the BTDF table and these share its walk).
+  const View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
+  double M[dielectric_moments::kTerms] = {};
+  const long long walked = ReflectedMoments(v, dielectric_walk::ClassesOf(opt), M);
+  std::array<double, 2> btdf[kMaxDielectricColumn];
+  long long btdfEvals = 0;
+  FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, btdf, &btdfEvals);
+  for (int e = 0; e < n; ++e)
+    out[e] = {dielectric_moments::Contract(dielectric_moments::FresnelChebyshev(etas[e]), M),
+              btdf[e][0] - btdf[e][1]};
+  if (evals) *evals += walked + btdfEvals;
 }
 
 std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {

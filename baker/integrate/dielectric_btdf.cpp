@@ -49,6 +49,7 @@
 #include <string>
 
 #include "baker/integrate/dielectric_albedo.h"
+#include "baker/integrate/dielectric_column_memo.h"
 #include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
@@ -324,7 +325,16 @@ void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, 
 
 void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
                                    std::array<double, 2>* out, long long* evals) {
-  FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, kTuned, out, evals);
+  static DielectricColumnMemo memo;
+  const DielectricColumnMemo::Key key = DielectricColumnMemo::KeyOf(mu, alpha, etas, n);
+  DielectricColumnMemo::Value v;
+  if (!memo.Find(key, v)) {
+    v.e.resize(n);
+    FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, kTuned, v.e.data(), &v.evals);
+    memo.Keep(key, v);
+  }
+  std::copy(v.e.begin(), v.e.end(), out);
+  if (evals) *evals += v.evals;
 }
 
 std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,

@@ -56,7 +56,10 @@ std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, doubl
 void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
                                    const DielectricBtdfRuleOptions& opt, std::array<double, 2>* out,
                                    long long* evals = nullptr);
-/// The same with the bake's node counts (TunedDielectricBtdfRuleOptions).
+/// The same with the bake's node counts (TunedDielectricBtdfRuleOptions), remembering its recent
+/// columns (by the bits of the arguments; dielectric_column_memo.h): the BTDF table and the
+/// entering E tables' E_T (FixedRuleDielectricAlbedoColumn) baked in one process walk each
+/// column once.
 void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
                                    std::array<double, 2>* out, long long* evals = nullptr);
 

@@ -1,6 +1,6 @@
-// Two doubles per lane pair for the glass rules' eta columns (dielectric_albedo.cpp,
-// dielectric_btdf.cpp: two etas at once): SSE2 where the compiler has it (x86-64 always), plain
-// doubles otherwise.
+// Two doubles per lane pair for the glass rules' columns (dielectric_btdf.cpp: two etas at once;
+// dielectric_fresnel_moments.h: two nodes at once): SSE2 where the compiler has it (x86-64
+// always), plain doubles otherwise.
 #pragma once
 #include <array>
 #include <cmath>
@@ -62,8 +62,8 @@ inline RingConsts RingConstsOf(double mu, double gDen, double alpha) {
   return {a2, 1 - a2, mu * a2 / (2 * gDen)};
 }
 
-/// The column walks' per-eta quantities at cosine c = min(o.m, 1) for two etas (eta2m1 = eta^2 -
-/// 1, eta2 = eta^2, inv = 1 / eta), as derived in dielectric_albedo.cpp ("Columns"): Fresnel's
+/// The BTDF column walk's per-eta quantities at cosine c = min(o.m, 1) for two etas (eta2m1 = eta^2
+/// - 1, eta2 = eta^2, inv = 1 / eta), as derived in dielectric_albedo.cpp ("Columns"): Fresnel's
 /// transmittance Tf = 1 - F into *tf, the refracted ray's p into *p and den = p + kh s_t^2 into
 /// *den (kh, oma2, a2: RingConstsOf), so that wb p / den is the refracted term's weight for wb =
 /// w (c / cos_m) / gDen. dielectric_simd.cpp's EtaTerms does the same operations in the same order.

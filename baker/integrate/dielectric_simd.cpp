@@ -1,7 +1,8 @@
 // The glass walks' AVX-512F column paths (dielectric_simd.h; the exit walk's is
 // dielectric_simd_exit.cpp). Each function mirrors, operation for operation and in the same
 // order, the portable code it stands for in dielectric_albedo.cpp and dielectric_btdf.cpp
-// (ColumnWalk's and BtdfColumnWalk's node; their per-eta part dielectric_lanes::EtaTerms):
+// (ReflectedMoments' ring and moments, dielectric_fresnel_moments.h's RingMoments; BtdfColumnWalk's
+// node and its per-eta part dielectric_lanes::EtaTerms):
 // std::min(a, b) is (b < a ? b : a), which MINPD(b, a) computes ((b < a) ? b : a), likewise max; a
 // branch becomes a mask and a select. Compiled for AVX-512F only (no FMA: no contraction of a * b +
 // c), so every lane's result has the portable code's bits.
@@ -11,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "baker/integrate/dielectric_fresnel_moments.h"
 #include "baker/integrate/dielectric_simd_ops.h"
 
 namespace kiln {
@@ -45,11 +47,12 @@ void SetEnabled(bool on) { Switch().store(on && CpuHasAvx512()); }
 #if defined(KILN_HAVE_AVX512_PATH)
 using namespace ops;
 
-KILN_AVX512 void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
-                                  unsigned char* valid, double* wR, double* wb, double* cc) {
+KILN_AVX512 int ReflectedRing(const ColumnRing& r, const double* phi, const double* w, int J,
+                              double* wR, double* cc) {
   const V zero = _mm512_setzero_pd(), one = Set(1), two = Set(2);
   const V A = Set(r.A), B = Set(r.B), cosM = Set(r.cosM), mu = Set(r.mu), gDen = Set(r.gDen),
           a2 = Set(r.a2);
+  int kept = 0;
   for (int j = 0; j < J; j += 8) {
     const int m = J - j < 8 ? J - j : 8;
     const M k = static_cast<M>((1u << m) - 1);
@@ -62,12 +65,13 @@ KILN_AVX512 void ColumnRingShared(const ColumnRing& r, const double* phi, const 
     const V den = Mul(two, Add(Sqrt(Add(Mul(muR, muR), Mul(a2, s2))), muR));
     const V ml = _mm512_maskz_mov_pd(Gt(den, zero), Div(Mul(a2, s2), den));
     const V wr = Div(wbs, Add(gDen, Mul(mu, Div(ml, muR))));
-    // Nodes not visited: zero weights and a benign cc (their terms are then exactly 0).
-    _mm512_mask_storeu_pd(wR + j, k, _mm512_maskz_mov_pd(ok & Gt(muR, zero), wr));
-    _mm512_mask_storeu_pd(wb + j, k, _mm512_maskz_mov_pd(ok, Div(wbs, gDen)));
-    _mm512_mask_storeu_pd(cc + j, k, _mm512_mask_blend_pd(ok, Set(0.5), StdMin(c, one)));
-    for (int i = 0; i < m; ++i) valid[j + i] = (ok >> i) & 1;
+    // The portable walk keeps a node where c > 0, mu_R > 0 and its weight is not 0, in order.
+    const M keep = ok & Gt(muR, zero) & _mm512_cmp_pd_mask(wr, zero, _CMP_NEQ_UQ);
+    _mm512_mask_compressstoreu_pd(wR + kept, keep, wr);
+    _mm512_mask_compressstoreu_pd(cc + kept, keep, StdMin(c, one));
+    kept += __builtin_popcount(keep);
   }
+  return kept;
 }
 
 /// The ring's and a group of eight etas' constants, as EtaTerms takes them.
@@ -96,41 +100,44 @@ KILN_AVX512 inline void EtaTerms(V c, const EtaV& e, const RingV& rv, V* tf, V* 
   *den = Add(*p, Mul(rv.kh, s2));
 }
 
-KILN_AVX512 void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
-                                const double* wb, const double* cc, int J, const double* eta2m1,
-                                const double* eta2, const double* inv, int groups, double* ring0,
-                                double* ring1) {
-  const V one = Set(1);
-  const RingV rv = RingVOf(r);
-  for (int q = 0; q < groups; ++q) {
-    const EtaV e{_mm512_loadu_pd(eta2m1 + 8 * q), _mm512_loadu_pd(eta2 + 8 * q),
-                 _mm512_loadu_pd(inv + 8 * q)};
-    V r0 = _mm512_loadu_pd(ring0 + 8 * q), r1 = _mm512_loadu_pd(ring1 + 8 * q);
-    for (int j = 0; j < J; ++j) {
-      if (!valid[j]) continue;
-      V tf, p, den;
-      EtaTerms(Set(cc[j]), e, rv, &tf, &p, &den);
-      r0 = Add(r0, Mul(Set(wR[j]), Sub(one, tf)));
-      r1 = Add(r1, Div(Mul(Mul(Set(wb[j]), tf), p), den));
+KILN_AVX512 void RingMoments8(const double* wR, const double* cc, int J, double* ring) {
+  constexpr int kTerms = dielectric_moments::kTerms;
+  V acc[kTerms];
+  for (int k = 0; k < kTerms; ++k) acc[k] = _mm512_setzero_pd();
+  const V one = Set(1), two = Set(2);
+  // Two groups of eight nodes at a time (two independent recurrences in flight), the first's
+  // terms added before the second's: each lane's sums in the nodes' order.
+  for (int j = 0; j < J; j += 16) {
+    V x2[2], u0[2], u1[2];
+    for (int h = 0; h < 2; ++h) {
+      const int left = J - j - 8 * h, m = left < 0 ? 0 : left < 8 ? left : 8;
+      const M in = static_cast<M>((1u << m) - 1);
+      // Lanes past the ring's end: w = 0 and x = 0, as the portable form pads them.
+      const V x =
+          _mm512_maskz_mov_pd(in, Sub(Mul(two, _mm512_maskz_loadu_pd(in, cc + j + 8 * h)), one));
+      x2[h] = Add(x, x);
+      u0[h] = _mm512_maskz_loadu_pd(in, wR + j + 8 * h);
+      u1[h] = Mul(u0[h], x);
     }
-    _mm512_storeu_pd(ring0 + 8 * q, r0);
-    _mm512_storeu_pd(ring1 + 8 * q, r1);
+    const int groups = J - j > 8 ? 2 : 1;
+    for (int h = 0; h < groups; ++h) {
+      acc[0] = Add(acc[0], u0[h]);
+      acc[1] = Add(acc[1], u1[h]);
+    }
+    for (int k = 2; k < kTerms; ++k) {
+      const V a = Sub(Mul(x2[0], u1[0]), u0[0]), b = Sub(Mul(x2[1], u1[1]), u0[1]);
+      acc[k] = Add(acc[k], a);
+      if (groups == 2) acc[k] = Add(acc[k], b);
+      u0[0] = u1[0];
+      u1[0] = a;
+      u0[1] = u1[1];
+      u1[1] = b;
+    }
   }
-}
-
-KILN_AVX512 void ColumnRingOneEta(const ColumnRing& r, const unsigned char*, const double* wR,
-                                  const double* wb, const double* cc, int J, double eta2m1,
-                                  double eta2, double inv, double* tR, double* tT) {
-  const V one = Set(1);
-  const RingV rv = RingVOf(r);
-  const EtaV e{Set(eta2m1), Set(eta2), Set(inv)};
-  for (int j = 0; j < J; j += 8) {
-    const int m = J - j < 8 ? J - j : 8;
-    const M k = static_cast<M>((1u << m) - 1);
-    V tf, p, den;
-    EtaTerms(_mm512_mask_loadu_pd(Set(0.5), k, cc + j), e, rv, &tf, &p, &den);
-    _mm512_mask_storeu_pd(tR + j, k, Mul(_mm512_maskz_loadu_pd(k, wR + j), Sub(one, tf)));
-    _mm512_mask_storeu_pd(tT + j, k, Div(Mul(Mul(_mm512_maskz_loadu_pd(k, wb + j), tf), p), den));
+  for (int k = 0; k < kTerms; ++k) {
+    double s[8];
+    _mm512_storeu_pd(s, acc[k]);
+    ring[k] = ((s[0] + s[1]) + (s[2] + s[3])) + ((s[4] + s[5]) + (s[6] + s[7]));
   }
 }
 
@@ -190,13 +197,10 @@ KILN_AVX512 void BtdfRingOneEta(const ColumnRing& r, const double* wb, const dou
 
 #else  // no AVX-512F path on this target: Enabled() is false, these are never called
 
-void ColumnRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
-                      double*, double*) {}
-void ColumnRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*,
-                    const double*, int, const double*, const double*, const double*, int, double*,
-                    double*) {}
-void ColumnRingOneEta(const ColumnRing&, const unsigned char*, const double*, const double*,
-                      const double*, int, double, double, double, double*, double*) {}
+int ReflectedRing(const ColumnRing&, const double*, const double*, int, double*, double*) {
+  return 0;
+}
+void RingMoments8(const double*, const double*, int, double*) {}
 void BtdfRingShared(const ColumnRing&, const double*, const double*, int, unsigned char*, double*,
                     double*) {}
 void BtdfRingEtas(const ColumnRing&, const unsigned char*, const double*, const double*, int,

@@ -102,7 +102,8 @@ constexpr int kMaxRingPhis = 40;
 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const double* sinM, int m,
                 double (*phis)[kMaxRingPhis], int* np);
 
-/// One ring of the entering side's column walk (dielectric_albedo.cpp, ColumnWalk): the view's
+/// One ring of the entering side's column walks (dielectric_albedo.cpp, ReflectedMoments;
+/// dielectric_btdf.cpp, BtdfColumnWalk): the view's
 /// and the ring's constants (cosM > 0).
 struct ColumnRing {
   double A, B, cosM, mu, gDen, a2;
@@ -110,30 +111,22 @@ struct ColumnRing {
   double kh;    ///< mu a2 / (2 gDen): the refracted ray's masking over the view's (EtaTerms)
 };
 
-/// The column walk's per-node shared part at the J nodes (phi, w) of ring r: c > 0 marks the
-/// node visited (valid[j] = 1, else 0 and the rest unset), wR the reflected term's weight (0
-/// where the reflected ray goes down), wb = w (c / cos_m) / gDen, cc = min(c, 1). Needs Enabled().
-void ColumnRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
-                      unsigned char* valid, double* wR, double* wb, double* cc);
-/// The same without wR (the BTDF pair follows the refracted ray only).
+/// The column walk's reflected part at the J nodes (phi, w) of ring r (dielectric_albedo.cpp,
+/// ReflectedMoments): the nodes with c > 0 and a reflected ray above the horizon (a weight wR !=
+/// 0), in order, their wR (w (c / cos_m) over the view's and the reflected ray's masking) into
+/// wR[0 ..] and cc = min(c, 1) into cc[0 ..]; returns how many. Needs Enabled().
+int ReflectedRing(const ColumnRing& r, const double* phi, const double* w, int J, double* wR,
+                  double* cc);
+/// The BTDF pair's per-node shared part at the J nodes (phi, w) of ring r: c > 0 marks the node
+/// visited (valid[j] = 1, else 0 and the rest unset), wb = w (c / cos_m) / gDen, cc = min(c, 1).
+/// Needs Enabled().
 void BtdfRingShared(const ColumnRing& r, const double* phi, const double* w, int J,
                     unsigned char* valid, double* wb, double* cc);
 
-/// The column walk's per-eta terms of one ring, eight etas per instruction: for every valid node
-/// j in order and every eta e < 8 * groups, ring0[e] += wR (1 - Tf), ring1[e] += wb Tf p / den
-/// (Tf = 1 - F, p and den by dielectric_lanes::EtaTerms, ColumnWalk's expressions). eta2m1,
-/// eta2, inv: 8 * groups entries each. Needs Enabled().
-void ColumnRingEtas(const ColumnRing& r, const unsigned char* valid, const double* wR,
-                    const double* wb, const double* cc, int J, const double* eta2m1,
-                    const double* eta2, const double* inv, int groups, double* ring0,
-                    double* ring1);
-
-/// The same terms for one eta at every node of the ring, eight nodes per instruction (a column of
-/// one: the lookup-error search's points), into tR[j], tT[j] (0 at invalid nodes). Needs
-/// Enabled().
-void ColumnRingOneEta(const ColumnRing& r, const unsigned char* valid, const double* wR,
-                      const double* wb, const double* cc, int J, double eta2m1, double eta2,
-                      double inv, double* tR, double* tT);
+/// dielectric_moments::RingMoments (dielectric_fresnel_moments.h: the column walk's E_R moments of
+/// one ring's J kept nodes) with one eight-lane instruction where the portable form takes four
+/// lane pairs: the same lanes, operations and order, its bits. Needs Enabled().
+void RingMoments8(const double* wR, const double* cc, int J, double* ring);
 
 /// The BTDF pair's column walk (dielectric_btdf.cpp, BtdfColumnWalk) likewise: per valid node
 /// j in order and eta e < 8 * groups, t = wb p / den, ring0[e] += t, ring1[e] += t (1 - Tf).
