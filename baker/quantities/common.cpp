@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <variant>
@@ -316,9 +317,35 @@ bool DiffuseFixedRuleApplies(const TableSpec& spec) {
   return RuleOf(spec) == RuleFamily::Diffuse && OverMuAndRoughness(spec);
 }
 
+namespace {
+
+/// ModelAt(model, r), kept per thread for the last (model, r) asked: the points of an average
+/// (every mu node at one roughness) and of a table's row take the model built once, not looked
+/// up by name and built again at each point. The same model: MakeModel is a function of its
+/// arguments.
+const AnyModel& LastModelAt(const std::string& model, double r) {
+  struct Last {
+    std::string model;
+    double r = 0;
+    AnyModel m;
+    bool valid = false;
+  };
+  thread_local Last last;
+  if (!last.valid || std::memcmp(&last.r, &r, sizeof r) != 0 || last.model != model) {
+    last.valid = false;
+    last.m = ModelAt(model, r);  // (throws for an unknown model: nothing kept)
+    last.model = model;
+    last.r = r;
+    last.valid = true;
+  }
+  return last.m;
+}
+
+}  // namespace
+
 std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
                                        IntegrationStats& stats) {
-  RhoParts e = FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
+  RhoParts e = FixedRuleDiffuseAlbedo(LastModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
   stats.errorEstimate = kDiffuseRuleBound;
   return RhoChannels(spec, e);
 }
@@ -326,8 +353,8 @@ std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
 std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
                                         IntegrationStats& stats) {
   long long evals = 0;
-  RhoParts e =
-      FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], kSearchDiffuseRuleOptions, &evals);
+  RhoParts e = FixedRuleDiffuseAlbedo(LastModelAt(spec.model, x[1]), x[0],
+                                      kSearchDiffuseRuleOptions, &evals);
   stats.evals += std::llround(static_cast<double>(evals) * kSearchDiffuseCharge);
   stats.errorEstimate = kSearchRuleBound;
   return RhoChannels(spec, e);
