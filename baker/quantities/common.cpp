@@ -320,21 +320,25 @@ bool DiffuseFixedRuleApplies(const TableSpec& spec) {
 namespace {
 
 /// ModelAt(model, r), kept per thread for the last (model, r) asked: the points of an average
-/// (every mu node at one roughness) and of a table's row take the model built once, not looked
-/// up by name and built again at each point. The same model: MakeModel is a function of its
-/// arguments.
+/// (every mu node at one roughness) and of a table's row take the model built once instead of
+/// building it again at each point (its parameters checked, its factory called). The same
+/// model: MakeModel is a function of its arguments and of the registry, which does not change
+/// while a bake runs (registry.h: RegisterModel before any bake starts). The registry's entry is
+/// looked up each time (one map look-up, no parameter checks, no factory call) and must be the
+/// one the kept model was built from.
 const AnyModel& LastModelAt(const std::string& model, double r) {
   struct Last {
-    std::string model;
+    const ModelInfo* info = nullptr;
     double r = 0;
     AnyModel m;
     bool valid = false;
   };
   thread_local Last last;
-  if (!last.valid || std::memcmp(&last.r, &r, sizeof r) != 0 || last.model != model) {
+  const ModelInfo* info = FindModel(model);
+  if (!last.valid || info != last.info || std::memcmp(&last.r, &r, sizeof r) != 0) {
     last.valid = false;
     last.m = ModelAt(model, r);  // (throws for an unknown model: nothing kept)
-    last.model = model;
+    last.info = info;
     last.r = r;
     last.valid = true;
   }
