@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "baker/integrate/fixed_rule_diffuse.h"
@@ -168,4 +169,48 @@ TEST_CASE("The diffuse rule is deterministic and refuses a specular model",
     CHECK(e1 > 0);
   }
   CHECK_THROWS_AS(FixedRuleDiffuseAlbedo(ModelAtRoughness("ggx", 0.5), 0.5), std::invalid_argument);
+}
+
+TEST_CASE(
+    "The diffuse rule's per-thread node memo changes no bit: models of every grading and node "
+    "counts interleaved, in either order, on a fresh thread each",
+    "[integrate][fixed-rule-diffuse]") {
+  // hammon grades theta and phi, oren-nayar theta alone, burley neither: the same mu with each.
+  const char* const models[] = {"hammon", "oren-nayar", "burley"};
+  const DiffuseRuleOptions counts[] = {{}, {6, 4}};
+  const std::vector<double> mus = {0.0, 1e-6, 0.02, 0.5, 0.02, 1.0, 0.5, 0.0};
+  struct Got {
+    double lin, quad;
+    long long evals;
+  };
+  auto run = [&](bool reversed) {
+    std::vector<Got> out;
+    std::thread worker([&] {  // a fresh thread: a cold memo
+      for (size_t k = 0; k < mus.size(); ++k) {
+        const double mu = mus[reversed ? mus.size() - 1 - k : k];
+        for (const char* name : models)
+          for (const DiffuseRuleOptions& opt : counts) {
+            long long e = 0;
+            RhoParts p = FixedRuleDiffuseAlbedo(ModelAtRoughness(name, 0.6), mu, opt, &e);
+            out.push_back({p.lin, p.quad, e});
+          }
+      }
+    });
+    worker.join();
+    return out;
+  };
+  const std::vector<Got> forward = run(false), backward = run(true);
+  const size_t per = std::size(models) * std::size(counts);
+  REQUIRE(forward.size() == mus.size() * per);
+  for (size_t k = 0; k < mus.size(); ++k)
+    for (size_t i = 0; i < per; ++i) {
+      const Got& a = forward[k * per + i];
+      const Got& b = backward[(mus.size() - 1 - k) * per + i];
+      INFO("mu " << mus[k] << " case " << i);
+      CHECK(a.lin == b.lin);
+      CHECK(a.quad == b.quad);
+      CHECK(a.evals == b.evals);
+    }
+  // The node counts reach the result (the memo keys on them): 6 x 4 differs from 8 x 8.
+  CHECK(forward[2 * per].lin != forward[2 * per + 1].lin);
 }

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "baker/integrate/fixed_rule_sheen.h"
@@ -166,4 +167,46 @@ TEST_CASE("The sheen fixed rule is deterministic and refuses a non-sheen model",
   CHECK(FixedRuleSheenAlbedo(m, 0.2) == FixedRuleSheenAlbedo(m, 0.2));
   CHECK_THROWS_WITH(FixedRuleSheenAlbedo(MakeModel("ggx", {}), 0.5),
                     Catch::Contains("needs a sheen model"));
+}
+
+TEST_CASE(
+    "The sheen rule's per-thread azimuth memo changes no bit: models, roughness and node counts "
+    "interleaved, in either order, on a fresh thread each",
+    "[sheen][fixed-rule]") {
+  const char* const models[] = {"charlie", "charlie-smith", "ashikhmin-velvet"};
+  const SheenRuleOptions counts[] = {SheenRuleOptionsFor(SheenRule::Neubelt, false),
+                                     SheenRuleOptionsFor(SheenRule::Neubelt, true)};
+  const std::vector<double> mus = {0.0, 1e-8, 0.03, 0.5, 0.03, 1.0, 0.5, 0.0};
+  struct Got {
+    double e;
+    long long evals;
+  };
+  auto run = [&](bool reversed) {
+    std::vector<Got> out;
+    std::thread worker([&] {  // a fresh thread: a cold memo
+      for (size_t k = 0; k < mus.size(); ++k) {
+        const double mu = mus[reversed ? mus.size() - 1 - k : k];
+        for (const char* name : models)
+          for (double r : {0.2, 0.9})
+            for (const SheenRuleOptions& opt : counts) {
+              long long e = 0;
+              const double v = FixedRuleSheenAlbedo(Sheen(name, r), mu, opt, &e);
+              out.push_back({v, e});
+            }
+      }
+    });
+    worker.join();
+    return out;
+  };
+  const std::vector<Got> forward = run(false), backward = run(true);
+  const size_t per = std::size(models) * 2 * std::size(counts);
+  REQUIRE(forward.size() == mus.size() * per);
+  for (size_t k = 0; k < mus.size(); ++k)
+    for (size_t i = 0; i < per; ++i) {
+      INFO("mu " << mus[k] << " case " << i);
+      CHECK(forward[k * per + i].e == backward[(mus.size() - 1 - k) * per + i].e);
+      CHECK(forward[k * per + i].evals == backward[(mus.size() - 1 - k) * per + i].evals);
+    }
+  // The node counts reach the result (the memo keys on them): the search's differ from the bake's.
+  CHECK(forward[2 * per].evals != forward[2 * per + 1].evals);
 }

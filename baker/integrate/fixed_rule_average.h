@@ -16,6 +16,7 @@
 // rule's own error (below kFixedRuleBound) is the larger part.
 #pragma once
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "baker/math/quadrature.h"
@@ -38,15 +39,22 @@ constexpr double kMinAngleLayer = 0.1;
 /// panels; tests/lookup_search_reference.cpp holds it within kSearchRuleBound of the bake's).
 constexpr int kSearchAverageNodes = 6;
 
-/// Calls visit(mu, weight) at every node of the rule above, in ascending mu, with weights that
-/// include the factor 2 mu: E_avg = sum of weight e(mu). `layer` is the width of e's layer at
-/// mu = 0 (alpha for a microfacet albedo); `nodes` per panel. `kink` (in (0, 1)) adds a panel
-/// boundary there; `kinkLayer` > 0 grades panels on both sides of it as at mu = 0 (boundaries at
-/// kink -+ b, b = clamp(kinkLayer, 1e-4, 1e-2) 4^k inside (0, 1)): a kink smoothed over a width
-/// ~kinkLayer (unity-brdf2's E at mu = sqrt(0.1), over ~alpha).
-template <class V>
-void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes,
-                             double kink = -1, double kinkLayer = 0) {
+/// One node of a cosine-average rule: E_avg = sum over the nodes of weight e(mu), the weight
+/// including the factor 2 mu (and the angle form's dmu/dx).
+struct CosineAverageNode {
+  double mu, weight;
+};
+
+/// The nodes of the rule above, in ascending mu, with weights that include the factor 2 mu:
+/// E_avg = sum of weight e(mu). `layer` is the width of e's layer at mu = 0 (alpha for a
+/// microfacet albedo); `nodes` per panel. `kink` (in (0, 1)) adds a panel boundary there;
+/// `kinkLayer` > 0 grades panels on both sides of it as at mu = 0 (boundaries at kink -+ b,
+/// b = clamp(kinkLayer, 1e-4, 1e-2) 4^k inside (0, 1)): a kink smoothed over a width ~kinkLayer
+/// (unity-brdf2's E at mu = sqrt(0.1), over ~alpha).
+inline std::vector<CosineAverageNode> CosineAverageNodeList(double layer,
+                                                            int nodes = kCosineAverageNodes,
+                                                            double kink = -1,
+                                                            double kinkLayer = 0) {
   const GaussRule01& rule = CachedGaussLegendre01(nodes);
   std::vector<double> breaks = {0};
   for (double b = std::clamp(layer, 1e-4, 1e-2); b < 1; b *= 4) breaks.push_back(b);
@@ -60,13 +68,60 @@ void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverage
       }
     std::sort(breaks.begin(), breaks.end());
   }
+  std::vector<CosineAverageNode> out;
+  out.reserve((breaks.size() - 1) * rule.x.size());
   for (size_t k = 0; k + 1 < breaks.size(); ++k) {
     double a = breaks[k], h = breaks[k + 1] - breaks[k];
     for (int i = 0; i < nodes; ++i) {
       double mu = a + h * rule.x[i];
-      visit(mu, 2 * rule.w[i] * h * mu);
+      out.push_back({mu, 2 * rule.w[i] * h * mu});
     }
   }
+  return out;
+}
+
+/// The nodes of the angle form (FixedCosineAverageAngle) in ascending mu: mu = sin(x) over
+/// geometric panels in x from `layer` (clamped to [1e-4, 0.1]) up to pi/2, weight
+/// 2 w h mu cos(x) (w, h: the Gauss weight and the panel's width in x); `nodes` per panel.
+inline std::vector<CosineAverageNode> CosineAverageAngleNodeList(double layer,
+                                                                 int nodes = kCosineAverageNodes) {
+  const GaussRule01& rule = CachedGaussLegendre01(nodes);
+  std::vector<double> breaks = {0};
+  for (double b = std::clamp(layer, 1e-4, 0.1); b < HalfPi; b *= 4) breaks.push_back(b);
+  breaks.push_back(HalfPi);
+  std::vector<CosineAverageNode> out;
+  out.reserve((breaks.size() - 1) * rule.x.size());
+  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
+    double a = breaks[k], h = breaks[k + 1] - breaks[k];
+    for (int i = 0; i < nodes; ++i) {
+      double x = a + h * rule.x[i], mu = std::sin(x);
+      out.push_back({mu, 2 * rule.w[i] * h * mu * std::cos(x)});
+    }
+  }
+  return out;
+}
+
+/// sum over i of nodes[i].weight values[i], channel by channel, added in the nodes' order (the
+/// bits of the rules below for values[i] = e(nodes[i].mu), however the values were computed);
+/// the result has as many channels as the longest value.
+inline std::vector<double> SumCosineAverage(const std::vector<CosineAverageNode>& nodes,
+                                            const std::vector<std::vector<double>>& values) {
+  std::vector<double> sum;
+  for (size_t i = 0; i < nodes.size() && i < values.size(); ++i) {
+    const std::vector<double>& v = values[i];
+    if (sum.size() < v.size()) sum.resize(v.size(), 0.0);
+    for (size_t c = 0; c < v.size(); ++c) sum[c] += nodes[i].weight * v[c];
+  }
+  return sum;
+}
+
+/// Calls visit(mu, weight) at every node of CosineAverageNodeList(layer, nodes, kink,
+/// kinkLayer), in its order.
+template <class V>
+void FixedCosineAverageNodes(double layer, V&& visit, int nodes = kCosineAverageNodes,
+                             double kink = -1, double kinkLayer = 0) {
+  for (const CosineAverageNode& n : CosineAverageNodeList(layer, nodes, kink, kinkLayer))
+    visit(n.mu, n.weight);
 }
 
 /// 2 integral_0^1 e(mu) mu dmu by the fixed rule above; `layer` is the width of e's layer at
@@ -99,23 +154,15 @@ std::vector<double> FixedCosineAverageChannels(E&& e, double layer, int nodes = 
 /// models with kinks at theta_l = theta_o: Oren-Nayar's E has sin(theta_o) = sqrt(1 - mu^2)
 /// terms). With mu = sin(x), E_avg = 2 int_0^{pi/2} E(sin x) sin x cos x dx: analytic at
 /// x = pi/2, and near x = 0 (mu ~ x) the same layer as in mu, so the same geometric panels in
-/// x, from `layer` (clamped to [1e-4, 0.1]) up to pi/2. e is called in ascending mu.
+/// x, from `layer` (clamped to [1e-4, 0.1]) up to pi/2 (CosineAverageAngleNodeList). e is called
+/// in ascending mu.
 template <class E>
 std::vector<double> FixedCosineAverageAngle(E&& e, double layer, int nodes = kCosineAverageNodes) {
-  const GaussRule01& rule = CachedGaussLegendre01(nodes);
-  std::vector<double> breaks = {0};
-  for (double b = std::clamp(layer, 1e-4, 0.1); b < HalfPi; b *= 4) breaks.push_back(b);
-  breaks.push_back(HalfPi);
   std::vector<double> sum;
-  for (size_t k = 0; k + 1 < breaks.size(); ++k) {
-    double a = breaks[k], h = breaks[k + 1] - breaks[k];
-    for (int i = 0; i < nodes; ++i) {
-      double x = a + h * rule.x[i], mu = std::sin(x);
-      std::vector<double> v = e(mu);
-      sum.resize(v.size(), 0.0);
-      double w = 2 * rule.w[i] * h * mu * std::cos(x);
-      for (size_t c = 0; c < v.size(); ++c) sum[c] += w * v[c];
-    }
+  for (const CosineAverageNode& n : CosineAverageAngleNodeList(layer, nodes)) {
+    std::vector<double> v = e(n.mu);
+    sum.resize(v.size(), 0.0);
+    for (size_t c = 0; c < v.size(); ++c) sum[c] += n.weight * v[c];
   }
   return sum;
 }

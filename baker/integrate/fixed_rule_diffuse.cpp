@@ -28,8 +28,11 @@
 // printed there).
 #include "baker/integrate/fixed_rule_diffuse.h"
 
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -88,13 +91,27 @@ constexpr bool kHasPolarFactors<
     M, std::void_t<decltype(std::declval<const M&>().PolarFactors(std::declval<PairGeometry>()))>> =
     true;
 
+/// Which panels a model's view takes (item 2): none, graded towards theta_o (full Oren-Nayar),
+/// or towards theta_o and phi = pi (Hammon).
+enum class Grading { None, Theta, ThetaPhi };
+
 template <class M>
-RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long long* evals) {
-  Vec3 wo = ViewDirection(mu_o);
+constexpr Grading kGrading = std::is_same_v<M, HammonDiffuse> ? Grading::ThetaPhi
+                             : kGrazingPoles<M>               ? Grading::Theta
+                                                              : Grading::None;
+
+/// The nodes of one view: per theta_l node its sin, cos and row weight 2 sin cos w, per azimuth
+/// node its cos, sin and weight. They depend on (mu_o, grading, node counts) alone.
+struct ViewNodes {
+  std::vector<double> sinT, cosT, rowW, cosPhi, sinPhi, pw;
+};
+
+/// ViewNodes of (mu_o, g, opt), computed.
+ViewNodes MakeViewNodes(double mu_o, Grading g, const DiffuseRuleOptions& opt) {
   double theta_o = std::acos(mu_o);
   // Item 2's poles: Hammon and full Oren-Nayar only; the others need no grading (eps = pi/2
   // leaves a single panel on each side of theta_o and of phi = pi/2).
-  double eps = kGrazingPoles<M> ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
+  double eps = g != Grading::None ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
   // theta_l: [0, g0] towards the normal (item 3), then graded towards theta_o, then
   // [theta_o, pi/2].
   std::vector<double> thetaBreaks;
@@ -111,47 +128,98 @@ RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long lon
   if (theta_o < Pi / 2) thetaBreaks.push_back(Pi / 2);
   // phi: graded towards pi only for Hammon's |o + l| (Oren-Nayar's pole does not depend on phi).
   std::vector<double> phiBreaks =
-      GradedTowardsEnd(Pi / 2, Pi, std::is_same_v<M, HammonDiffuse> ? eps : Pi / 2);
+      GradedTowardsEnd(Pi / 2, Pi, g == Grading::ThetaPhi ? eps : Pi / 2);
   phiBreaks.insert(phiBreaks.begin(), 0.0);
 
-  std::vector<double> tx, tw, px, pw;
+  std::vector<double> tx, tw, px;
+  ViewNodes v;
   PanelRule(thetaBreaks, opt.thetaNodes, tx, tw);
-  PanelRule(phiBreaks, opt.phiNodes, px, pw);
-  std::vector<double> cosPhi(px.size()), sinPhi(px.size());
+  PanelRule(phiBreaks, opt.phiNodes, px, v.pw);
+  v.cosPhi.resize(px.size());
+  v.sinPhi.resize(px.size());
   for (size_t j = 0; j < px.size(); ++j) {
-    cosPhi[j] = std::cos(px[j]);
-    sinPhi[j] = std::sin(px[j]);
+    v.cosPhi[j] = std::cos(px[j]);
+    v.sinPhi[j] = std::sin(px[j]);
   }
-  double lin = 0, quad = 0;
+  v.sinT.resize(tx.size());
+  v.cosT.resize(tx.size());
+  v.rowW.resize(tx.size());
   for (size_t i = 0; i < tx.size(); ++i) {
-    double sinT = std::sin(tx[i]), cosT = std::cos(tx[i]);
+    v.sinT[i] = std::sin(tx[i]);
+    v.cosT[i] = std::cos(tx[i]);
+    v.rowW[i] = 2 * v.sinT[i] * v.cosT[i] * tw[i];
+  }
+  return v;
+}
+
+/// Most views a thread keeps (an average's mu nodes, a table's mu axis: a few dozen each).
+constexpr size_t kViewMemoSize = 512;
+
+/// The ViewNodes of (mu_o, g, opt), kept per thread: an average's points evaluate E at the same
+/// mu nodes for every roughness, a table's texels at the same mu for every row. The same bits as
+/// computing them (MakeViewNodes is deterministic); the memo is cleared when full.
+const ViewNodes& ViewNodesOf(double mu_o, Grading g, const DiffuseRuleOptions& opt) {
+  struct Key {
+    double mu;
+    int g, thetaNodes, phiNodes;
+    bool operator==(const Key& o) const {
+      return std::memcmp(&mu, &o.mu, sizeof mu) == 0 && g == o.g && thetaNodes == o.thetaNodes &&
+             phiNodes == o.phiNodes;
+    }
+  };
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h;
+      std::memcpy(&h, &k.mu, sizeof h);
+      h ^= (static_cast<uint64_t>(k.g) << 56) ^ (static_cast<uint64_t>(k.thetaNodes) << 40) ^
+           (static_cast<uint64_t>(k.phiNodes) << 24);
+      h *= 0x9E3779B97F4A7C15ull;
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  thread_local std::unordered_map<Key, ViewNodes, Hash> memo;
+  const Key key{mu_o, static_cast<int>(g), opt.thetaNodes, opt.phiNodes};
+  auto it = memo.find(key);
+  if (it != memo.end()) return it->second;
+  ViewNodes v = MakeViewNodes(mu_o, g, opt);  // (throws on a bad node count: nothing kept)
+  if (memo.size() >= kViewMemoSize) memo.clear();
+  return memo.emplace(key, std::move(v)).first->second;
+}
+
+template <class M>
+RhoParts Albedo(const M& m, double mu_o, const DiffuseRuleOptions& opt, long long* evals) {
+  Vec3 wo = ViewDirection(mu_o);
+  const ViewNodes& v = ViewNodesOf(mu_o, kGrading<M>, opt);
+  const size_t nt = v.sinT.size(), np = v.cosPhi.size();
+  double lin = 0, quad = 0;
+  for (size_t i = 0; i < nt; ++i) {
+    const double sinT = v.sinT[i], cosT = v.cosT[i];
     double rowLin = 0, rowQuad = 0;
     if constexpr (kHasPolarFactors<M>) {
       // A row has one theta_l: the model's polar factors once, then each azimuth's (Parts' own
       // operations, so Parts' bits). Below the horizon Parts is 0 at every azimuth: the row's
       // sums stay 0.
-      const PairGeometry first(wo, Vec3{sinT * cosPhi[0], sinT * sinPhi[0], cosT});
+      const PairGeometry first(wo, Vec3{sinT * v.cosPhi[0], sinT * v.sinPhi[0], cosT});
       if (!first.Below()) {
         const auto polar = m.PolarFactors(first);
-        for (size_t j = 0; j < px.size(); ++j) {
-          RhoParts p =
-              m.PartsAt(polar, PairGeometry(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], cosT}));
-          rowLin += pw[j] * p.lin;
-          rowQuad += pw[j] * p.quad;
+        for (size_t j = 0; j < np; ++j) {
+          RhoParts p = m.PartsAt(
+              polar, PairGeometry(wo, Vec3{sinT * v.cosPhi[j], sinT * v.sinPhi[j], cosT}));
+          rowLin += v.pw[j] * p.lin;
+          rowQuad += v.pw[j] * p.quad;
         }
       }
     } else {
-      for (size_t j = 0; j < px.size(); ++j) {
-        RhoParts p = m.Parts(wo, Vec3{sinT * cosPhi[j], sinT * sinPhi[j], cosT});
-        rowLin += pw[j] * p.lin;
-        rowQuad += pw[j] * p.quad;
+      for (size_t j = 0; j < np; ++j) {
+        RhoParts p = m.Parts(wo, Vec3{sinT * v.cosPhi[j], sinT * v.sinPhi[j], cosT});
+        rowLin += v.pw[j] * p.lin;
+        rowQuad += v.pw[j] * p.quad;
       }
     }
-    double wt = 2 * sinT * cosT * tw[i];
-    lin += wt * rowLin;
-    quad += wt * rowQuad;
+    lin += v.rowW[i] * rowLin;
+    quad += v.rowW[i] * rowQuad;
   }
-  if (evals) *evals += static_cast<long long>(tx.size() * px.size());
+  if (evals) *evals += static_cast<long long>(nt * np);
   return {lin, quad};
 }
 

@@ -43,7 +43,9 @@
 // 3, 10, 12) against adaptive quadrature at 1e-10 on the test grids
 // (tests/integrate_fixed_rule_microfacet.cpp) and keeping a cheaper set whose worst error there
 // stays below 1e-7 (not minimised: a texel costs ~1,000 evaluations, a table a few CPU seconds).
-// Nodes are summed in one fixed order, in scalar double arithmetic: the rule is deterministic.
+// Nodes are summed in one fixed order, in double arithmetic (GGX's eight at a time where the
+// AVX-512F paths run, each lane with the scalar form's operations, no fused multiply-add): the
+// rule is deterministic and has the same bits on either path.
 #include "baker/integrate/fixed_rule_microfacet.h"
 
 #include <algorithm>
@@ -58,6 +60,10 @@
 #include "baker/models/registry.h"
 #include "baker/models/roughness.h"
 #include "baker/models/unity.h"
+#if defined(__x86_64__) && defined(__GNUC__)
+#include "baker/integrate/dielectric_simd.h"
+#include "baker/math/fast_exp_log_avx512.h"
+#endif
 
 namespace kiln {
 namespace {
@@ -194,13 +200,122 @@ inline void Add(Context& k, double c, double t, double weight) {
   }
 }
 
-/// Adds the n nodes (t[i], weight[i]) of the azimuth with cos p = c, in order.
+#if defined(__x86_64__) && defined(__GNUC__)
+
+/// FrDielectric(oh, eta) (models/fresnel.h) in eight lanes: its operations in its order, the
+/// clamp and min as MAXPD / MINPD with its operand order, its branches as blends.
+KILN_AVX512F_INLINE inline __m512d FrDielectric8(__m512d oh, double eta) {
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1);
+  __m512d x = _mm512_maskz_min_pd(0xFF, _mm512_maskz_max_pd(0xFF, oh, _mm512_set1_pd(-1)), one);
+  const __mmask8 neg = _mm512_cmp_pd_mask(x, zero, _CMP_LT_OQ);
+  const __m512d e = _mm512_mask_blend_pd(neg, _mm512_set1_pd(eta), _mm512_set1_pd(1 / eta));
+  x = _mm512_mask_blend_pd(neg, x, _mm512_sub_pd(zero, x));  // x < 0 there: exactly -x
+  const __m512d eta2m1 = _mm512_mul_pd(_mm512_sub_pd(e, one), _mm512_add_pd(e, one));
+  const __m512d e2 = _mm512_mul_pd(e, e), x2 = _mm512_mul_pd(x, x);
+  const __m512d cos2t = _mm512_div_pd(_mm512_add_pd(x2, eta2m1), e2);
+  const __mmask8 tir = _mm512_cmp_pd_mask(cos2t, zero, _CMP_LE_OQ);
+  const __m512d cost = _mm512_maskz_sqrt_pd(0xFF, cos2t);
+  const __m512d s1 = _mm512_add_pd(x, _mm512_mul_pd(e, cost));
+  const __m512d s2 = _mm512_add_pd(_mm512_mul_pd(e, x), cost);
+  // (-eta2m1 / s1^2: the sign of a zero numerator does not survive the square below)
+  const __m512d rPerp = _mm512_div_pd(_mm512_sub_pd(zero, eta2m1), _mm512_mul_pd(s1, s1));
+  const __m512d rParl = _mm512_div_pd(
+      _mm512_mul_pd(eta2m1, _mm512_sub_pd(_mm512_mul_pd(_mm512_add_pd(e2, one), x2), one)),
+      _mm512_mul_pd(e2, _mm512_mul_pd(s2, s2)));
+  const __m512d r = _mm512_div_pd(
+      _mm512_add_pd(_mm512_mul_pd(rParl, rParl), _mm512_mul_pd(rPerp, rPerp)), _mm512_set1_pd(2));
+  return _mm512_mask_blend_pd(tir, _mm512_maskz_min_pd(0xFF, r, one), one);
+}
+
+/// Add's GGX form (not the Unity models) eight nodes at a time, where dielectric_simd::Enabled():
+/// each lane does Add's operations in its order (MuLambdaGGX's branch as a mask), the lanes'
+/// terms are added in node order, the last block masked: Add's bits.
+KILN_AVX512F void AddGgxNodesAvx512(Context& k, double c, const double* t, const double* weight,
+                                    int n) {
+  // (the sums in registers: through the context they would be stored and reloaded each node)
+  double sumV = k.sumV, sumB = k.sumB;
+  const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1), two = _mm512_set1_pd(2);
+  const __m512d a = _mm512_set1_pd(k.a), aa = _mm512_set1_pd(k.a * k.a);
+  const __m512d mu = _mm512_set1_pd(k.mu), cc = _mm512_set1_pd(c);
+  const __m512d twoSt = _mm512_set1_pd(2 * k.st), st = _mm512_set1_pd(k.st);
+  const __m512d twoOxsC = _mm512_set1_pd(2 * k.oxs * c), ozs = _mm512_set1_pd(k.ozs);
+  const __m512d gNum = _mm512_set1_pd(k.gNum), gDenO = _mm512_set1_pd(k.gDenO);
+  const __m512d gRatio = _mm512_set1_pd(k.gNum / k.gDenO);
+  for (int i = 0; i < n; i += 8) {
+    // The last block's lanes beyond n load 0 and add nothing (`in`).
+    const __mmask8 in = n - i >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - i)) - 1);
+    const __m512d tt = _mm512_maskz_loadu_pd(in, t + i);
+    const __m512d t2 = _mm512_mul_pd(tt, tt), C = _mm512_sub_pd(one, t2);
+    const __m512d q = _mm512_add_pd(one, t2);
+    const __m512d S = _mm512_mul_pd(two, tt), aS = _mm512_mul_pd(a, S);
+    const __m512d C2 = _mm512_mul_pd(C, C), aS2 = _mm512_mul_pd(aS, aS);
+    const __m512d M2 = _mm512_add_pd(aS2, C2);
+    const __m512d N1 = _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(twoSt, aS), C), cc),
+                                     _mm512_mul_pd(mu, _mm512_sub_pd(C2, aS2)));
+    const __mmask8 add = in & _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ);
+    if (add == 0) continue;
+    const __m512d invM2 = _mm512_div_pd(one, M2);
+    const __m512d muL = _mm512_mul_pd(N1, invM2);
+    const __m512d sinL = _mm512_mul_pd(
+        _mm512_maskz_sqrt_pd(0xFF, _mm512_mul_pd(_mm512_sub_pd(M2, N1), _mm512_add_pd(M2, N1))),
+        invM2);
+    // MuLambdaGGX(muL, sinL, a)
+    const __m512d a2s2 = _mm512_mul_pd(_mm512_mul_pd(aa, sinL), sinL);
+    const __m512d den = _mm512_mul_pd(
+        two, _mm512_add_pd(_mm512_maskz_sqrt_pd(0xFF, _mm512_add_pd(_mm512_mul_pd(muL, muL), a2s2)),
+                           muL));
+    const __m512d muLambdaL =
+        _mm512_maskz_div_pd(_mm512_cmp_pd_mask(den, zero, _CMP_GT_OQ), a2s2, den);
+    const __m512d g =
+        k.model.separable
+            ? _mm512_mul_pd(gRatio, _mm512_div_pd(muL, _mm512_add_pd(muL, muLambdaL)))
+            : _mm512_div_pd(gNum,
+                            _mm512_add_pd(gDenO, _mm512_mul_pd(mu, _mm512_div_pd(muLambdaL, muL))));
+    const __m512d shape =
+        _mm512_mul_pd(_mm512_mul_pd(_mm512_maskz_loadu_pd(in, weight + i), tt),
+                      _mm512_add_pd(_mm512_mul_pd(twoOxsC, tt), _mm512_mul_pd(ozs, C)));
+    const __m512d q3 = _mm512_mul_pd(_mm512_mul_pd(q, q), q);
+    const __m512d val = _mm512_mul_pd(_mm512_div_pd(shape, q3), g);
+    const __m512d oh =
+        _mm512_mul_pd(_mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(st, aS), cc), _mm512_mul_pd(mu, C)),
+                      _mm512_maskz_sqrt_pd(0xFF, invM2));
+    alignas(64) double vv[8], bv[8];
+    if (k.eta > 0) {
+      _mm512_store_pd(vv, _mm512_mul_pd(val, FrDielectric8(oh, k.eta)));
+      for (int l = 0; l < 8; ++l)
+        if (add & (1 << l)) sumV += vv[l];
+      continue;
+    }
+    const __m512d w = _mm512_sub_pd(one, oh), w2 = _mm512_mul_pd(w, w);
+    _mm512_store_pd(vv, val);
+    _mm512_store_pd(bv, _mm512_mul_pd(val, _mm512_mul_pd(_mm512_mul_pd(w2, w2), w)));
+    for (int l = 0; l < 8; ++l)
+      if (add & (1 << l)) {
+        sumV += vv[l];
+        sumB += bv[l];
+      }
+  }
+  k.sumV = sumV;
+  k.sumB = sumB;
+}
+
+#endif
+
+/// Adds the n nodes (t[i], weight[i]) of the azimuth with cos p = c, in order: Beckmann and
+/// Blinn-Phong by AddBeckmannNodes, GGX eight at a time where the AVX-512F paths run (the same
+/// bits), else one at a time (Add).
 inline void AddNodes(Context& k, double c, const double* t, const double* weight, int n) {
   k.count += n;
   if (k.model.ndf == FixedRuleNdf::Beckmann || k.model.ndf == FixedRuleNdf::BlinnPhong) {
     AddBeckmannNodes(k.view, c, t, weight, n, k.sumV, k.sumB);
     return;
   }
+#if defined(__x86_64__) && defined(__GNUC__)
+  if (k.model.ndf == FixedRuleNdf::GGX && dielectric_simd::Enabled()) {
+    AddGgxNodesAvx512(k, c, t, weight, n);
+    return;
+  }
+#endif
   for (int i = 0; i < n; ++i) Add(k, c, t[i], weight[i]);
 }
 

@@ -53,9 +53,13 @@
 #include "baker/integrate/fixed_rule_sheen.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 #include <vector>
 
 #include "baker/integrate/fixed_rule_sheen_row.h"
@@ -92,6 +96,60 @@ void PanelRule(std::vector<double> breaks, int n, double maxLen, std::vector<dou
 }
 
 /// Lambda(mu_o) of charlie-smith (0 for the others): constant over a texel.
+/// The azimuth nodes of a view: -cos(psi), sin(psi) and the weight ws = w e^s of each node in
+/// s = ln(psi + c2), psi = pi - phi. They depend on (c2, the s panels' options) alone.
+struct AzimuthNodes {
+  std::vector<double> cosPhi, sinPhi, ws;
+};
+
+/// AzimuthNodes of (c2, opt), computed.
+AzimuthNodes MakeAzimuthNodes(double c2, const SheenRuleOptions& opt) {
+  auto S = [&](double psi) { return std::log(psi + c2); };
+  std::vector<double> sBreaks = {S(0), S(Pi)};
+  for (int k = 1; k <= opt.psiPanels; ++k) sBreaks.push_back(S(Pi * std::pow(0.25, k)));
+  std::vector<double> sx, sw;
+  PanelRule(sBreaks, opt.sNodes, opt.sPanel, sx, sw);
+  AzimuthNodes a;
+  a.cosPhi.resize(sx.size());
+  a.sinPhi.resize(sx.size());
+  a.ws.resize(sx.size());
+  for (size_t j = 0; j < sx.size(); ++j) {
+    double e = std::exp(sx[j]), psi = e - c2;
+    a.cosPhi[j] = -std::cos(psi);
+    a.sinPhi[j] = std::sin(psi);
+    a.ws[j] = sw[j] * e;
+  }
+  return a;
+}
+
+/// Most views a thread keeps (an average's mu nodes, a table's mu axis: a few dozen each).
+constexpr size_t kAzimuthMemoSize = 512;
+
+/// The AzimuthNodes of (c2, opt), kept per thread: an average's points evaluate E at the same mu
+/// nodes for every roughness, a table's texels at the same mu for every row. The same bits as
+/// computing them (MakeAzimuthNodes is deterministic); the memo is cleared when full.
+const AzimuthNodes& AzimuthNodesOf(double c2, const SheenRuleOptions& opt) {
+  using Key = std::array<uint64_t, 4>;  // the bits of c2, sPanel; sNodes, psiPanels
+  struct Hash {
+    size_t operator()(const Key& k) const {
+      uint64_t h = 0x9E3779B97F4A7C15ull;
+      for (uint64_t v : k) h = (h ^ v) * 0xBF58476D1CE4E5B9ull;
+      return static_cast<size_t>(h ^ (h >> 31));
+    }
+  };
+  Key key{};
+  std::memcpy(&key[0], &c2, sizeof c2);
+  std::memcpy(&key[1], &opt.sPanel, sizeof opt.sPanel);
+  key[2] = static_cast<uint64_t>(static_cast<uint32_t>(opt.sNodes));
+  key[3] = static_cast<uint64_t>(static_cast<uint32_t>(opt.psiPanels));
+  thread_local std::unordered_map<Key, AzimuthNodes, Hash> memo;
+  auto it = memo.find(key);
+  if (it != memo.end()) return it->second;
+  AzimuthNodes a = MakeAzimuthNodes(c2, opt);  // (throws on a bad node count: nothing kept)
+  if (memo.size() >= kAzimuthMemoSize) memo.clear();
+  return memo.emplace(key, std::move(a)).first->second;
+}
+
 template <class M>
 double LambdaOf(const M& m, double mu_o) {
   if constexpr (std::is_same_v<M, CharlieSmithSheen>) return CharlieSheenLambda(mu_o, m.alpha);
@@ -137,20 +195,11 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
     addMu(0.5);
     for (double mu_l : m.ClampSwitches(mu_o)) addMu(mu_l);
   }
-  auto S = [&](double psi) { return std::log(psi + c2); };
-  std::vector<double> sBreaks = {S(0), S(Pi)};
-  for (int k = 1; k <= opt.psiPanels; ++k) sBreaks.push_back(S(Pi * std::pow(0.25, k)));
+  const AzimuthNodes& az = AzimuthNodesOf(c2, opt);
+  const std::vector<double>&cosPhi = az.cosPhi, &sinPhi = az.sinPhi, &ws = az.ws;
 
-  std::vector<double> tx, tw, sx, sw;
+  std::vector<double> tx, tw;
   PanelRule(tBreaks, opt.tNodes, opt.tPanel, tx, tw);
-  PanelRule(sBreaks, opt.sNodes, opt.sPanel, sx, sw);
-  std::vector<double> cosPhi(sx.size()), sinPhi(sx.size()), ws(sx.size());
-  for (size_t j = 0; j < sx.size(); ++j) {
-    double e = std::exp(sx[j]), psi = e - c2;
-    cosPhi[j] = -std::cos(psi);
-    sinPhi[j] = std::sin(psi);
-    ws[j] = sw[j] * e;
-  }
   // The visibility depends on (mu_o, mu_l) alone and the NDF on sin^2(theta_h) alone: V (with
   // charlie-smith's Lambda(mu_o) and Lambda(mu_l)) is evaluated once per row of mu_l, the NDF
   // once per node (fixed_rule_sheen_row.h: the model's Parts' products D * V with the inline exp
@@ -170,7 +219,7 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
     if (!(mu_o + mu_l > 0)) continue;
     double sinT = std::sqrt(std::max(0.0, 1 - mu_l * mu_l));
     const double v = Visibility(m, mu_o, mu_l, lambdaO);
-    rows.push_back({{wo.x, wo.z, sinT, mu_l, v, cosPhi.data(), sinPhi.data(), ws.data(), sx.size()},
+    rows.push_back({{wo.x, wo.z, sinT, mu_l, v, cosPhi.data(), sinPhi.data(), ws.data(), ws.size()},
                     2 * mu_l * tw[i] * e});
   }
   double sum = 0;
@@ -184,7 +233,7 @@ double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* e
       sum += rows[k].scale * SheenRowSum(ndf, rows[k].in);
     }
   }
-  if (evals) *evals += static_cast<long long>(tx.size() * sx.size());
+  if (evals) *evals += static_cast<long long>(tx.size() * ws.size());
   return sum;
 }
 

@@ -22,8 +22,13 @@
 // graded geometrically towards it at those scales.
 #include "baker/integrate/fixed_rule_ward.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "baker/integrate/fixed_rule_average.h"
 #include "baker/math/quadrature.h"
@@ -181,12 +186,24 @@ double FixedRuleWardStoredAlbedo(WardNormalization norm, double mu, double alpha
 
 double FixedRuleWardAlbedoAvg(WardNormalization norm, double alpha, const WardRuleOptions& opt,
                               long long* evals) {
-  auto e = [&](double mu) {
-    const double m = WardStoredFactor(norm, mu);
-    return std::vector<double>{FixedRuleWardStoredAlbedo(norm, mu, alpha, opt, evals) /
-                               (m > 0 ? m : 1)};
-  };
-  return FixedCosineAverageChannels(e, std::max(alpha, 1e-4))[0];
+  // The mu nodes on the calling arena's threads (isolated), summed in the nodes' order: one
+  // thread's bits for any thread count.
+  const std::vector<CosineAverageNode> mus = CosineAverageNodeList(std::max(alpha, 1e-4));
+  std::vector<std::vector<double>> values(mus.size());
+  std::vector<long long> nodeEvals(mus.size(), 0);
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, mus.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i != r.end(); ++i) {
+            const double mu = mus[i].mu, m = WardStoredFactor(norm, mu);
+            values[i] = {FixedRuleWardStoredAlbedo(norm, mu, alpha, opt, &nodeEvals[i]) /
+                         (m > 0 ? m : 1)};
+          }
+        });
+  });
+  if (evals)
+    for (long long n : nodeEvals) *evals += n;
+  return SumCosineAverage(mus, values)[0];
 }
 
 }  // namespace kiln

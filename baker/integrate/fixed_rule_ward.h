@@ -30,7 +30,8 @@ double FixedRuleWardStoredAlbedo(WardNormalization norm, double mu, double alpha
 
 /// E_avg = 2 int_0^1 E(mu) mu dmu of Ward's lobe (rs = 1, F = 1) at alpha, by a Gauss rule in mu
 /// (panels graded from the layer mu ~ alpha) over FixedRuleWardStoredAlbedo / m(mu): finite for
-/// all three normalisations (E mu ~ sqrt(mu), 1, mu as mu -> 0).
+/// all three normalisations (E mu ~ sqrt(mu), 1, mu as mu -> 0). The mu nodes run on the calling
+/// oneTBB arena's threads and are summed in their order: the same bits for any thread count.
 double FixedRuleWardAlbedoAvg(WardNormalization norm, double alpha, const WardRuleOptions& opt = {},
                               long long* evals = nullptr);
 

@@ -172,6 +172,7 @@ const QuantityInfo& AlbedoAvgQuantity() {
     q.usesFixedRule = OverRoughness;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
+    q.parallelPoint = true;  // a point's mu nodes run on the arena's threads
     q.fixedRuleMethod = FixedRuleMethod;
     q.fixedRuleVersionOf = AvgFixedRuleVersion;
     q.evaluate = Evaluate;

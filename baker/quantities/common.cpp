@@ -1,10 +1,15 @@
 #include "baker/quantities/common.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include "baker/integrate/fixed_rule_sheen.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <type_traits>
 #include <variant>
@@ -312,9 +317,39 @@ bool DiffuseFixedRuleApplies(const TableSpec& spec) {
   return RuleOf(spec) == RuleFamily::Diffuse && OverMuAndRoughness(spec);
 }
 
+namespace {
+
+/// ModelAt(model, r), kept per thread for the last (model, r) asked: the points of an average
+/// (every mu node at one roughness) and of a table's row take the model built once instead of
+/// building it again at each point (its parameters checked, its factory called). The same
+/// model: MakeModel is a function of its arguments and of the registry, which does not change
+/// while a bake runs (registry.h: RegisterModel before any bake starts). The registry's entry is
+/// looked up each time (one map look-up, no parameter checks, no factory call) and must be the
+/// one the kept model was built from.
+const AnyModel& LastModelAt(const std::string& model, double r) {
+  struct Last {
+    const ModelInfo* info = nullptr;
+    double r = 0;
+    AnyModel m;
+    bool valid = false;
+  };
+  thread_local Last last;
+  const ModelInfo* info = FindModel(model);
+  if (!last.valid || info != last.info || std::memcmp(&last.r, &r, sizeof r) != 0) {
+    last.valid = false;
+    last.m = ModelAt(model, r);  // (throws for an unknown model: nothing kept)
+    last.info = info;
+    last.r = r;
+    last.valid = true;
+  }
+  return last.m;
+}
+
+}  // namespace
+
 std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
                                        IntegrationStats& stats) {
-  RhoParts e = FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
+  RhoParts e = FixedRuleDiffuseAlbedo(LastModelAt(spec.model, x[1]), x[0], {}, &stats.evals);
   stats.errorEstimate = kDiffuseRuleBound;
   return RhoChannels(spec, e);
 }
@@ -322,8 +357,8 @@ std::vector<double> DiffuseFixedRuleAt(const TableSpec& spec, const double* x,
 std::vector<double> DiffuseSearchRuleAt(const TableSpec& spec, const double* x,
                                         IntegrationStats& stats) {
   long long evals = 0;
-  RhoParts e =
-      FixedRuleDiffuseAlbedo(ModelAt(spec.model, x[1]), x[0], kSearchDiffuseRuleOptions, &evals);
+  RhoParts e = FixedRuleDiffuseAlbedo(LastModelAt(spec.model, x[1]), x[0],
+                                      kSearchDiffuseRuleOptions, &evals);
   stats.evals += std::llround(static_cast<double>(evals) * kSearchDiffuseCharge);
   stats.errorEstimate = kSearchRuleBound;
   return RhoChannels(spec, e);
@@ -384,29 +419,13 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
                                      IntegrationStats& stats, bool search) {
   const size_t dims = albedo.axes.size();
   double x[4] = {0, 0, 0, 0};
-  double layer = 1, innerBound = 0;
+  double layer = 1;
   for (size_t i = 1; i < dims; ++i) {
     x[i] = rest[i - 1];
     if (albedo.axes[i].name == "roughness")
       layer = std::min(layer, std::max(AlphaFromPerceptual(Clamp(x[i], 0.0, 1.0)), MinAlpha));
     if (albedo.axes[i].name == "eta") layer = std::min(layer, std::sqrt(std::abs(x[i] - 1)));
   }
-  const bool fixed = UsesFixedRule(albedo);
-  const PreparedReference reference(albedo);
-  auto e = [&](double mu) {
-    x[0] = mu;
-    IntegrationStats st;
-    std::vector<double> v = search ? reference.Search(x, st) : reference.Bake(x, st);
-    // The search's form takes kSearchAverageNodes per panel: each inner evaluation is charged
-    // for the kCosineAverageNodes / kSearchAverageNodes the bake's rule takes in its place.
-    stats.evals += search ? std::llround(static_cast<double>(st.evals) * kCosineAverageNodes /
-                                         kSearchAverageNodes)
-                          : st.evals;
-    innerBound = std::max(innerBound, search  ? st.errorEstimate
-                                      : fixed ? st.errorEstimate
-                                              : 10 * std::max(st.errorEstimate, albedo.tol));
-    return v;
-  };
   // Sheen: E(mu) has a layer of width ~ r at mu = 0 (the Charlie lobe at grazing): the mu rule
   // graded from its finest layer (the velvet's); the Charlie pair's layer is no narrower than
   // r = 0.045, so their panels start at 1e-2 (40 nodes instead of 64, within 1e-9 for charlie,
@@ -417,13 +436,41 @@ std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest
   // smoothed over ~alpha: panels graded on both sides of it from alpha.
   const ModelInfo& m = Info(albedo.model);
   const bool kink = m.averageKink > 0;
-  std::vector<double> r =
-      m.specular() ? FixedCosineAverageChannels(e, layer, nodes, m.averageKink, kink ? layer : 0)
+  const std::vector<CosineAverageNode> mus =
+      m.specular() ? CosineAverageNodeList(layer, nodes, m.averageKink, kink ? layer : 0)
       : m.rule == RuleFamily::Sheen
-          ? FixedCosineAverageChannels(e, m.averageSheenLayer, nodes, m.averageKink)
-          : FixedCosineAverageAngle(e, kMinAngleLayer, nodes);
+          ? CosineAverageNodeList(m.averageSheenLayer, nodes, m.averageKink)
+          : CosineAverageAngleNodeList(kMinAngleLayer, nodes);
+  const bool fixed = UsesFixedRule(albedo);
+  const PreparedReference reference(albedo);
+  // The mu nodes' E are independent: evaluated on the calling arena's threads (isolated: a
+  // thread waiting for them takes no other task of its arena), then summed in the nodes' order,
+  // so a point has the bits of one thread's sum for any thread count.
+  std::vector<std::vector<double>> values(mus.size());
+  std::vector<IntegrationStats> nodeStats(mus.size());
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<size_t>(0, mus.size(), 1), [&](const tbb::blocked_range<size_t>& r) {
+          for (size_t i = r.begin(); i != r.end(); ++i) {
+            double xi[4] = {mus[i].mu, x[1], x[2], x[3]};
+            values[i] =
+                search ? reference.Search(xi, nodeStats[i]) : reference.Bake(xi, nodeStats[i]);
+          }
+        });
+  });
+  double innerBound = 0;
+  for (const IntegrationStats& st : nodeStats) {
+    // The search's form takes kSearchAverageNodes per panel: each inner evaluation is charged
+    // for the kCosineAverageNodes / kSearchAverageNodes the bake's rule takes in its place.
+    stats.evals += search ? std::llround(static_cast<double>(st.evals) * kCosineAverageNodes /
+                                         kSearchAverageNodes)
+                          : st.evals;
+    innerBound = std::max(innerBound, search  ? st.errorEstimate
+                                      : fixed ? st.errorEstimate
+                                              : 10 * std::max(st.errorEstimate, albedo.tol));
+  }
   stats.errorEstimate = search ? innerBound : innerBound + kCosineAverageBound;
-  return r;
+  return SumCosineAverage(mus, values);
 }
 
 std::string AverageFixedRuleMethod(const TableSpec& albedo) {

@@ -157,6 +157,8 @@ std::string SheenFixedRuleMethod(const TableSpec& spec);
 /// kSearchAverageNodes per panel over E by SearchReference(albedo), each inner evaluation charged
 /// kCosineAverageNodes / kSearchAverageNodes times; errorEstimate is then the inner rule's distance
 /// bound from the bake's (the mu rule's weights sum to 1), evals as the inner rule charges them.
+/// The mu nodes' E run on the calling oneTBB arena's threads and are summed in the nodes' order:
+/// the same bits for any thread count.
 std::vector<double> AverageFixedRule(const TableSpec& albedo, const double* rest,
                                      IntegrationStats& stats, bool search = false);
 

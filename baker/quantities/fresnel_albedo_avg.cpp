@@ -101,6 +101,7 @@ const QuantityInfo& FresnelAlbedoAvgQuantity() {
     q.usesFixedRule = Always;
     q.fixedRule = FixedRule;
     q.searchRule = SearchRule;
+    q.parallelPoint = true;  // a point's mu nodes run on the arena's threads
     q.fixedRuleMethod = FixedRuleMethod;
     q.fixedRuleVersion = "3";  // the GGX kernel from eta = 1.3
     q.evaluate = Evaluate;
