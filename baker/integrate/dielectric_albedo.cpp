@@ -615,6 +615,16 @@ int DropTirRings(const FastView& p, int m, PolarParam* hs, double* cosM, double*
   return kept;
 }
 
+/// The azimuth past which the ring (cos_m, sin_m) lies below c_crit - kTirMargin: acos((c_crit -
+/// kTirMargin - mu cos_m) / (sin_o sin_m)) by dielectric_exit_breaks::Acos (0 where the whole ring
+/// does, infinity where none of it or sin_o sin_m = 0).
+inline double TirAzimuth(const FastView& p, double cosM, double sinM) {
+  const double A = p.mu * cosM, B = p.st * sinM;
+  if (!(B > 0)) return INFINITY;
+  const double x = (p.cCrit - kTirMargin - A) / B;
+  return x >= 1 ? 0.0 : x <= -1 ? INFINITY : dielectric_exit_breaks::Acos(x);
+}
+
 /// dielectric_walk::WalkPanels for the exit walk, the same panels, rings and order, with the
 /// inner breaks of an outer panel's rings made first: eight rings at once by
 /// dielectric_simd::PhiBreaks8 where simd (the same bits as ExitView::PhiBreaks, which the
@@ -670,16 +680,14 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
       for (int r = 0; r < m; ++r) nps[r] = p.PhiBreaks(hs[r], phis[r]);
     for (int r = 0; r < m; ++r) {
       visit.BeginRing(hs[r]);
-      const double A = p.mu * cosM[r], B = p.st * sinM[r];
+      const double phiTir = p.tirComplement ? TirAzimuth(p, cosM[r], sinM[r]) : INFINITY;
       for (int k = 0; k + 1 < nps[r]; ++k) {
         const double width = phis[r][k + 1] - phis[r][k];
         if (!(width > 0)) continue;
         const int q = ClassOf(rule.innerWidth, width);
         // The rest of the ring is under total internal reflection where the panel's first node
         // is (c falls with phi).
-        if (p.tirComplement &&
-            A + B * CosHalfTurn(phis[r][k] + width * innerShares[q]->s[0]) < p.cCrit - kTirMargin)
-          break;
+        if (phis[r][k] + width * innerShares[q]->s[0] > phiTir) break;
         count += innerCount[q];
         visit.Panel(phis[r][k], phis[r][k + 1], innerCount[q], *innerShares[q]);
       }
