@@ -639,7 +639,7 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
   const int nt = VBreaks(p, vs);
   const dielectric_simd::ExitPhiView pv{p.mu,      p.st,          p.cCrit,        p.eta2m1,
                                         p.eta < 1, p.ncs,         p.k.nReflected, p.k.nRefracted,
-                                        p.cs,      p.k.reflected, p.k.refracted};
+                                        p.cs,      p.k.reflected, p.k.refracted,  p.k.cDrop};
   constexpr int kMaxRings = kMaxCachedGaussNodes;
   PolarParam hs[kMaxRings];
   double cosM[kMaxRings], sinM[kMaxRings], wos[kMaxRings];
@@ -716,6 +716,9 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   ExitView ev;
   static_cast<FastView&>(ev) = v;
   ev.k = dielectric_exit_breaks::ConstsOf(ev);
+  // The complement skips the ring past c_crit - kTirMargin: no boundaries of the reflected ray
+  // there.
+  if (v.tirComplement) ev.k.cDrop = v.cCrit - kTirMargin;
   struct Sum {
     const FastView& v;
     dielectric_simd::RingBuffer& b;

@@ -9,6 +9,7 @@
 // (PortableRingSums) does the same with std::fma: the same bits too
 // (tests/integrate_dielectric_simd.cpp).
 #pragma once
+#include <cmath>
 
 namespace kiln {
 namespace dielectric_simd {
@@ -95,6 +96,8 @@ struct ExitPhiView {
   bool exitSide;  ///< eta < 1
   int ncs, nReflected, nRefracted;
   const double *cs, *reflected, *refracted;
+  /// The reflected ray's thresholds below this are no boundaries (ExitBreakConsts::cDrop).
+  double cDrop = -INFINITY;
 };
 
 /// Most boundaries of one ring's PhiBreaks (dielectric_walk.h's kMaxPhiBreaks).
