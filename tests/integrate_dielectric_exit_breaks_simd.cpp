@@ -4,7 +4,8 @@
 // every ring of a view (lanes 1 .. 8 of a call), on views of both sides of the exit range (eta'
 // 1/3 .. 0.999, mu 0 .. 1, roughness 1/39^2 .. 1) and at the rings where the scalar code takes
 // its special branches: sin_m = 0 (the whole circle), nothing visible (an empty ring) and the
-// refracted layer cut at its most thresholds.
+// refracted layer cut at its most thresholds; with and without the reflected ray's thresholds
+// below c_crit (ExitBreakConsts::cDrop, the exit walk's complement form).
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -46,6 +47,7 @@ TestView ViewOf(double mu, double roughness, double eta) {
 /// What the rings checked reached: how many, and those that took the special branches.
 struct Coverage {
   long rings = 0, wholeCircle = 0, empty = 0, most = 0;  ///< most: the largest count
+  long dropped = 0;                                      ///< rings that lost a boundary to k.cDrop
 };
 
 /// PhiBreaks8 on rings h[0 .. m-1] with the view's thresholds k against the scalar PhiBreaks of
@@ -54,7 +56,7 @@ void CheckRings(const TestView& v, const dielectric_exit_breaks::ExitBreakConsts
                 const PolarParam* h, int m, Coverage* cov) {
   const dielectric_simd::ExitPhiView pv{v.mu,      v.st,        v.cCrit,      v.eta2m1,
                                         v.eta < 1, v.ncs,       k.nReflected, k.nRefracted,
-                                        v.cs,      k.reflected, k.refracted};
+                                        v.cs,      k.reflected, k.refracted,  k.cDrop};
   double cosM[8] = {}, sinM[8] = {};
   for (int l = 0; l < m; ++l) {
     cosM[l] = h[l].cosTheta;
@@ -74,6 +76,9 @@ void CheckRings(const TestView& v, const dielectric_exit_breaks::ExitBreakConsts
     cov->wholeCircle += !(v.st * h[l].sinTheta > 0) && n == 2;
     cov->empty += n == 0;
     cov->most = std::max(cov->most, static_cast<long>(n));
+    dielectric_exit_breaks::ExitBreakConsts all = k;
+    all.cDrop = -INFINITY;
+    cov->dropped += dielectric_exit_breaks::PhiBreaks(v, all, h[l], scalar) > n;
   }
 }
 
@@ -100,8 +105,14 @@ TEST_CASE("the eight-ring inner breaks of the exit walk give the scalar breaks' 
         int n = 0;
         for (double vv : {1.0, 1 - 1e-12, 0.5, 1e-3, 1e-9}) h[n++] = v.dist.FromV(vv);
         while (n < 36) h[n++] = v.dist.FromV(unit(rng));
+        // Every threshold, and without the reflected ray's below c_crit - 1e-13 (the exit walk's
+        // complement form, dielectric_albedo.cpp's kTirMargin).
+        dielectric_exit_breaks::ExitBreakConsts k = dielectric_exit_breaks::ConstsOf(v);
         for (int m = 1, at = 0; at + m <= n; at += m, m = m % 8 + 1)
-          CheckRings(v, dielectric_exit_breaks::ConstsOf(v), h + at, m, &cov);
+          CheckRings(v, k, h + at, m, &cov);
+        k.cDrop = v.cCrit - 1e-13;
+        for (int m = 1, at = 0; at + m <= n; at += m, m = m % 8 + 1)
+          CheckRings(v, k, h + at, m, &cov);
       }
   // Layers longer than a view's (the same code path, more thresholds): the refracted layer runs
   // into the limit of kMaxThresholds thresholds a ring.
@@ -116,10 +127,13 @@ TEST_CASE("the eight-ring inner breaks of the exit walk give the scalar breaks' 
   const long before = cov.most;
   cov.most = 0;
   for (int at = 0; at < 40; at += 8) CheckRings(v, k, h + at, 8, &cov);
+  k.cDrop = v.cCrit - 1e-13;  // dropped thresholds still count towards the limit
+  for (int at = 0; at < 40; at += 8) CheckRings(v, k, h + at, 8, &cov);
   const long crafted = cov.most;
   cov.most = before;
   INFO("rings " << cov.rings << ", whole circle " << cov.wholeCircle << ", empty " << cov.empty
-                << ", most breaks " << cov.most);
+                << ", most breaks " << cov.most << ", dropped " << cov.dropped);
+  CHECK(cov.dropped > 0);
   CHECK(cov.wholeCircle > 0);
   CHECK(cov.empty > 0);
   CHECK(cov.most >= 16);

@@ -89,6 +89,18 @@
 // a time with std::fma (dielectric_exit_ring.cpp): the same bits on either path, 0.66x the CPU
 // time of FixedWalk's operations on the AVX-512F path (docs/design/glass-tables.md, "The exit
 // walk by its own arithmetic").
+// The exit pair by total internal reflection's complement (exitTirComplement, eta < 1, mu >=
+// kTirComplementMinMu). Under total internal reflection (c < c_crit) F = 1 exactly and only the
+// reflected term exists, so with r1 the reflected term at F = 1,
+//     E_R = E_1 - integral_{c > c_crit} (1 - F) r1,   E_T = integral_{c > c_crit} (1 - F) t1,
+// E_1 = integral r1 over every visible normal: GGX's directional albedo with F = 1 and the walk's
+// height-correlated Smith G2, which fixed_rule_dfg.h's rule gives as A + B in ~550 evaluations
+// (kE1Rule: within 4e-8 of adaptive quadrature). The walk then skips every ring whose largest
+// cosine (phi = 0) and every azimuth panel whose first node lie below c_crit by kTirMargin (c
+// falls with phi: the rest of the ring too), and its ring takes (Fd - Fn) / Fd instead of Fn / Fd
+// on the reflected ray. The skipped nodes added +0 to E_T: its sums keep their bits. 0.49x the
+// evaluations per texel of the exit pair (docs/design/glass-tables.md, "The exit pair by total
+// internal reflection's complement").
 #include "baker/integrate/dielectric_albedo.h"
 
 #include <algorithm>
@@ -107,6 +119,7 @@
 #include "baker/integrate/dielectric_lanes.h"
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/integrate/dielectric_walk.h"
+#include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/math/quadrature.h"
 #include "baker/models/fresnel.h"
 #include "baker/models/microfacet.h"
@@ -191,6 +204,8 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
 /// with the weight into one division.
 struct FastView : View {
   double a2 = 0, eta2 = 0;
+  /// E_R as E_1 minus total internal reflection's complement (FastWalk; eta < 1 only).
+  bool tirComplement = false;
 };
 
 /// The view of the fixed rule with options `opt` (its panel sequences' ratios).
@@ -391,7 +406,19 @@ const DielectricRuleOptions kTuned = {{24, 12, 4, 2},
                                       16,
                                       4,
                                       {22, 12, 4, 2},
-                                      {{12, 10, 6, 6}, {8, 6, 4, 4}, {4, 4, 2, 2}, {2, 2, 2, 2}}};
+                                      {{12, 10, 6, 6}, {8, 6, 4, 4}, {4, 4, 2, 2}, {2, 2, 2, 2}},
+                                      true};
+
+/// The least view cosine the exit walk takes E_R by total internal reflection's complement at
+/// (exitTirComplement); below, the direct form. At grazing the complement walks the reflected term
+/// on the cap (where F is small) less accurately than F times it: up to 1e-7 from adaptive at mu
+/// = 1e-6 where mu = 0 is within 1e-9, which moved E_R's difference quotient at mu -> 0 by up to
+/// 11% of its own change (tests/runtime_stored_dielectric_exit.cpp allows 2%); the direct form's
+/// errors there follow mu = 0's. 3.1% of the exit tables' texels lie below.
+constexpr double kTirComplementMinMu = 1e-4;
+
+/// The node counts of E_1's rule (ReflectedAlbedoF1; FixedRuleOptions' fields).
+constexpr FixedRuleOptions kE1Rule = {16, 12, 6, 2.0, 6, 6, SimdPath::Widest};
 
 /// The node classes of the exit side's walk (eta < 1) for options opt: its exit counts, or the
 /// entering side's where it has none.
@@ -525,6 +552,39 @@ struct ExitView : FastView {
   }
 };
 
+/// How far below c_crit a ring's largest cosine, or an azimuth panel's first node's, must lie for
+/// the walk to skip it as wholly under total internal reflection: far more than the rounding of
+/// c (a few ulps), so that every node skipped has g^2 = c^2 + eta^2 - 1 < 0 in the ring's own
+/// arithmetic too and added +0 to E_T (and to the complement) before. A panel that starts at the
+/// c_crit break has its first node a Gauss node's share of its width further.
+constexpr double kTirMargin = 1e-13;
+
+/// The rings (hs, cosM, sinM, wos; m of them) that reach total internal reflection's margin, c =
+/// mu cos_m + sin_o sin_m cos phi >= c_crit - kTirMargin at phi = 0, kept in order; returns their
+/// count. A dropped ring has only F = 1 nodes: no transmitted term, no term of the complement.
+int DropTirRings(const FastView& p, int m, PolarParam* hs, double* cosM, double* sinM,
+                 double* wos) {
+  int kept = 0;
+  for (int r = 0; r < m; ++r) {
+    if (!(p.mu * cosM[r] + p.st * sinM[r] >= p.cCrit - kTirMargin)) continue;
+    hs[kept] = hs[r];
+    cosM[kept] = cosM[r];
+    sinM[kept] = sinM[r];
+    wos[kept++] = wos[r];
+  }
+  return kept;
+}
+
+/// The azimuth past which the ring (cos_m, sin_m) lies below c_crit - kTirMargin: acos((c_crit -
+/// kTirMargin - mu cos_m) / (sin_o sin_m)) by dielectric_exit_breaks::Acos (0 where the whole ring
+/// does, infinity where none of it or sin_o sin_m = 0).
+inline double TirAzimuth(const FastView& p, double cosM, double sinM) {
+  const double A = p.mu * cosM, B = p.st * sinM;
+  if (!(B > 0)) return INFINITY;
+  const double x = (p.cCrit - kTirMargin - A) / B;
+  return x >= 1 ? 0.0 : x <= -1 ? INFINITY : dielectric_exit_breaks::Acos(x);
+}
+
 /// dielectric_walk::WalkPanels for the exit walk, the same panels, rings and order, with the
 /// inner breaks of an outer panel's rings made first: eight rings at once by
 /// dielectric_simd::PhiBreaks8 where simd (the same bits as ExitView::PhiBreaks, which the
@@ -539,7 +599,7 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
   const int nt = VBreaks(p, vs);
   const dielectric_simd::ExitPhiView pv{p.mu,      p.st,          p.cCrit,        p.eta2m1,
                                         p.eta < 1, p.ncs,         p.k.nReflected, p.k.nRefracted,
-                                        p.cs,      p.k.reflected, p.k.refracted};
+                                        p.cs,      p.k.reflected, p.k.refracted,  p.k.cDrop};
   constexpr int kMaxRings = kMaxCachedGaussNodes;
   PolarParam hs[kMaxRings];
   double cosM[kMaxRings], sinM[kMaxRings], wos[kMaxRings];
@@ -572,6 +632,7 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
         ++m;
       }
     }
+    if (p.tirComplement) m = DropTirRings(p, m, hs, cosM, sinM, wos);
     if (simd)
       for (int r = 0; r < m; r += 8)
         dielectric_simd::PhiBreaks8(pv, cosM + r, sinM + r, std::min(8, m - r), phis + r, nps + r);
@@ -579,10 +640,14 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
       for (int r = 0; r < m; ++r) nps[r] = p.PhiBreaks(hs[r], phis[r]);
     for (int r = 0; r < m; ++r) {
       visit.BeginRing(hs[r]);
+      const double phiTir = p.tirComplement ? TirAzimuth(p, cosM[r], sinM[r]) : INFINITY;
       for (int k = 0; k + 1 < nps[r]; ++k) {
         const double width = phis[r][k + 1] - phis[r][k];
         if (!(width > 0)) continue;
         const int q = ClassOf(rule.innerWidth, width);
+        // The rest of the ring is under total internal reflection where the panel's first node
+        // is (c falls with phi).
+        if (phis[r][k] + width * innerShares[q]->s[0] > phiTir) break;
         count += innerCount[q];
         visit.Panel(phis[r][k], phis[r][k + 1], innerCount[q], *innerShares[q]);
       }
@@ -590,6 +655,13 @@ long long ExitWalkPanels(const ExitView& p, const dielectric_walk::NodeClasses& 
     }
   }
   return count;
+}
+
+/// E_1, GGX's directional albedo with F = 1 (height-correlated Smith, the walk's reflected term's
+/// conventions), by fixed_rule_dfg.h's rule with kE1Rule's node counts: A + B.
+double ReflectedAlbedoF1(double mu, double alpha, long long* evals) {
+  const std::array<double, 2> ab = FixedRuleGGXDFG(mu, alpha, kE1Rule, evals);
+  return ab[0] + ab[1];
 }
 
 /// The exit side's per-point walk of a FastView (dielectric_walk::FixedWalk's panels and nodes,
@@ -604,6 +676,9 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   ExitView ev;
   static_cast<FastView&>(ev) = v;
   ev.k = dielectric_exit_breaks::ConstsOf(ev);
+  // The complement skips the ring past c_crit - kTirMargin: no boundaries of the reflected ray
+  // there.
+  if (v.tirComplement) ev.k.cDrop = v.cCrit - kTirMargin;
   struct Sum {
     const FastView& v;
     dielectric_simd::RingBuffer& b;
@@ -654,7 +729,8 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
                                         v.a2,
                                         v.gDen,
                                         invEta,
-                                        v.reflectOnly};
+                                        v.reflectOnly,
+                                        v.tirComplement};
       double c0, c1;
       (simd ? dielectric_simd::FastRingSums : dielectric_simd::PortableRingSums)(r, b.phi, b.w, b.J,
                                                                                  &c0, &c1);
@@ -665,7 +741,8 @@ Channels<2> FastWalk(const FastView& v, const dielectric_walk::NodeClasses& rule
   Sum s{v, buffer, simd};
   const long long count = ExitWalkPanels(ev, rule, simd, s);
   if (evals) *evals += count;
-  return s.sum;
+  if (!v.tirComplement) return s.sum;
+  return Channels<2>{ReflectedAlbedoF1(v.mu, v.dist.alpha, evals) - s.sum[0], s.sum[1]};
 }
 
 void CheckColumn(const double* etas, int n) {
@@ -711,6 +788,8 @@ std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
 
 DielectricRuleOptions TunedDielectricRuleOptions() { return kTuned; }
 
+FixedRuleOptions DielectricExitE1RuleOptions() { return kE1Rule; }
+
 std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double eta,
                                                 const DielectricRuleOptions& opt,
                                                 long long* evals) {
@@ -720,6 +799,7 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
     return e;
   }
   FastView v = MakeFastView(mu, alpha, eta, opt);
+  v.tirComplement = eta < 1 && opt.exitTirComplement && !(v.mu < kTirComplementMinMu);
   const Channels<2> r =
       FastWalk(v, eta < 1 ? ExitClassesOf(opt) : dielectric_walk::ClassesOf(opt), evals);
   return {r[0], r[1]};

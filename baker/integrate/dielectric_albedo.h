@@ -10,6 +10,7 @@
 #pragma once
 #include <array>
 
+#include "baker/integrate/fixed_rule_dfg.h"
 #include "baker/integrate/hemisphere.h"
 
 namespace kiln {
@@ -37,10 +38,19 @@ struct DielectricRuleOptions {
   double maskingRatio = 4, grazingRatio = 4, tailRatio = 4;
   int exitOuterNodes[4] = {0, 0, 0, 0};
   int exitInnerNodes[4][4] = {};
+  /// The exit side's E_R as E_1 (GGX's albedo with F = 1) minus the integral of (1 - F) times
+  /// the reflected term over the cap c > c_crit: the walk skips what lies under total internal
+  /// reflection (dielectric_albedo.cpp).
+  bool exitTirComplement = false;
 };
 
 /// The bake's node counts (dielectric_albedo.cpp, kTuned).
 DielectricRuleOptions TunedDielectricRuleOptions();
+
+/// The node counts of E_1's rule in the exit side's complement form (exitTirComplement): E_1 =
+/// A + B of fixed_rule_dfg.h's FixedRuleGGXDFG with these counts, GGX's directional albedo with F
+/// = 1 (height-correlated Smith: the walk's reflected term), within 4e-8 of adaptive quadrature.
+FixedRuleOptions DielectricExitE1RuleOptions();
 
 /// {E_R, E_T} as DielectricAlbedo, by the fixed rule: deterministic, the same arguments give the
 /// same bits. evals (optional) accumulates integrand evaluations. The overload with the bake's

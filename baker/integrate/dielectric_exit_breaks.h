@@ -31,6 +31,10 @@ constexpr int kMaxThresholds = 30, kMaxReflectedThresholds = 20;
 struct ExitBreakConsts {
   int nReflected = 0, nRefracted = 0;
   double reflected[kMaxLayer], refracted[kMaxLayer];
+  /// The reflected ray's thresholds (its horizon and masking layer) below this are no boundaries
+  /// (the exit walk's complement form: past them the ring is under total internal reflection and
+  /// skipped); they still count towards kMaxThresholds.
+  double cDrop = -INFINITY;
 };
 
 /// (asin(x) - x) / (x z), z = x^2 in [0, 1/4], as a polynomial in z: asin's Taylor series
@@ -96,9 +100,16 @@ int PhiBreaks(const View& v, const ExitBreakConsts& k, PolarParam h, double* phi
   cp[n++] = -A * inv;  // the end of visibility, c0 = 0
   if (cp[0] >= 1) return 0;
   auto add = [&](double c0) { cp[n++] = (c0 - A) * inv; };
-  add(v.mu * half);
+  // A reflected threshold below cDrop: a slot outside (-1, 1), no boundary.
+  auto addReflected = [&](double c0) {
+    if (c0 < k.cDrop)
+      cp[n++] = 2;
+    else
+      add(c0);
+  };
+  addReflected(v.mu * half);
   for (int i = 0; i < v.ncs; ++i) add(v.cs[i]);
-  for (int i = 0; i < k.nReflected; ++i) add((k.reflected[i] + v.mu) * half);
+  for (int i = 0; i < k.nReflected; ++i) addReflected((k.reflected[i] + v.mu) * half);
   if (v.eta < 1) {
     add(v.cCrit);
     const double c2 = -v.eta2m1;

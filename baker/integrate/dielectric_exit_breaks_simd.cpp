@@ -96,10 +96,14 @@ KILN_AVX512 void PhiBreaks8(const ExitPhiView& v, const double* cosM, const doub
   const V phiMax = _mm512_mask_blend_pd(Gt(cp0, minusOne), Set(Pi), Acos8(cp0));
   Slots s;
   s.count = zero;
-  AddSlot(&s, Mul(Set(v.mu), half), seen, A, inv, phiMax);
+  // The reflected ray's thresholds where not below cDrop (PhiBreaks' addReflected).
+  const V cDrop = Set(v.cDrop), horizon = Mul(Set(v.mu), half);
+  AddSlot(&s, horizon, seen & ~Lt(horizon, cDrop), A, inv, phiMax);
   for (int i = 0; i < v.ncs; ++i) AddSlot(&s, Set(v.cs[i]), seen, A, inv, phiMax);
-  for (int i = 0; i < v.nReflected; ++i)
-    AddSlot(&s, Mul(Add(Set(v.reflected[i]), Set(v.mu)), half), seen, A, inv, phiMax);
+  for (int i = 0; i < v.nReflected; ++i) {
+    const V c0 = Mul(Add(Set(v.reflected[i]), Set(v.mu)), half);
+    AddSlot(&s, c0, seen & ~Lt(c0, cDrop), A, inv, phiMax);
+  }
   if (v.exitSide) {
     AddSlot(&s, Set(v.cCrit), seen, A, inv, phiMax);
     // The refracted layer: a lane stops at its first q <= 0 or at kMaxThresholds thresholds.

@@ -61,9 +61,9 @@ KILN_RING_INLINE double Weigh(double wb, double mi, double fn, double fd, const 
 }
 
 /// The weighted terms {R, T} of node (phi, w), added to *accR, *accT where they count (AddTerms
-/// of dielectric_simd_exit.cpp, one lane).
-KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, double phi, double w,
-                               double* accR, double* accT) {
+/// of dielectric_simd_exit.cpp, one lane; complement: R's (1 - F) share, FastRing).
+KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, bool complement, double phi,
+                               double w, double* accR, double* accT) {
   const double c = std::fma(q.B, CosRing(phi), q.A);
   if (!(c > 0)) return;
   const double wb = w * c, cc = MinOneOf(c);
@@ -85,7 +85,11 @@ KILN_RING_INLINE void AddTerms(const Consts& q, bool reflectOnly, double phi, do
     }
   }
   const double muR = std::fma(c + c, q.cosM, -q.mu);
-  if (muR > 0 && Fn > 0) *accR = *accR + Weigh(wb, muR, Fn, Fd, q);
+  if (complement) {
+    if (part && muR > 0) *accR = *accR + Weigh(wb, muR, Fd - Fn, Fd, q);
+  } else if (muR > 0 && Fn > 0) {
+    *accR = *accR + Weigh(wb, muR, Fn, Fd, q);
+  }
   if (reflectOnly) return;
   const double muT = std::fma(-(cc - g), q.cosM, q.mu) * q.invEta;
   if (part && muT > 0) *accT = *accT + Weigh(wb, muT, Fd - Fn, Fd, q);
@@ -101,10 +105,10 @@ KILN_RING_INLINE void RingSums(const FastRing& r, const double* phi, const doubl
   for (; J - j > kLanes; j += 2 * kLanes)
     for (int k = j; k < j + 2 * kLanes && k < J; ++k) {
       const int u = (k - j) / kLanes, l = (k - j) % kLanes;
-      AddTerms(q, r.reflectOnly, phi[k], w[k], &accR[u][l], &accT[u][l]);
+      AddTerms(q, r.reflectOnly, r.tirComplement, phi[k], w[k], &accR[u][l], &accT[u][l]);
     }
   for (int k = j; k < J; ++k)
-    AddTerms(q, r.reflectOnly, phi[k], w[k], &accR[0][k - j], &accT[0][k - j]);
+    AddTerms(q, r.reflectOnly, r.tirComplement, phi[k], w[k], &accR[0][k - j], &accT[0][k - j]);
   // LaneSum of dielectric_simd_exit.cpp after the two vectors' lane-wise sum.
   auto laneSum = [](const double(*acc)[kLanes]) {
     double l[kLanes];

@@ -9,6 +9,7 @@
 // (PortableRingSums) does the same with std::fma: the same bits too
 // (tests/integrate_dielectric_simd.cpp).
 #pragma once
+#include <cmath>
 
 namespace kiln {
 namespace dielectric_simd {
@@ -39,6 +40,11 @@ struct FastRing {
   double A, B, cosM, mu, eta, eta2, eta2m1, a2, gDen;
   double invEta;  ///< 1 / eta, the view's (one division a view, not a ring)
   bool reflectOnly;
+  /// The reflected channel as total internal reflection's complement (the exit pair's walk,
+  /// dielectric_albedo.cpp, "The exit pair by total internal reflection's complement"): *sumR
+  /// sums (1 - F) times the reflected term with F = 1, only where 0 <= F < 1, instead of F times
+  /// it; *sumT as without.
+  bool tirComplement = false;
 };
 
 /// The exit ring's cos phi = -sin(x), x = phi - pi/2 in [-pi/2, pi/2]: sin x = x P(x^2), P of
@@ -90,6 +96,8 @@ struct ExitPhiView {
   bool exitSide;  ///< eta < 1
   int ncs, nReflected, nRefracted;
   const double *cs, *reflected, *refracted;
+  /// The reflected ray's thresholds below this are no boundaries (ExitBreakConsts::cDrop).
+  double cDrop = -INFINITY;
 };
 
 /// Most boundaries of one ring's PhiBreaks (dielectric_walk.h's kMaxPhiBreaks).

@@ -67,10 +67,12 @@ KILN_AVX512 inline V Weigh(V wb, V mi, V fn, V fd, const Consts& q) {
 /// The weighted terms {R, T} of U vectors of nodes (phi[u], w[u]) in lanes k[u], added to
 /// accR[u], accT[u]; a ray's terms computed only where some lane of the U vectors has them
 /// (under total internal reflection none transmits; past the reflected horizon none reflects).
+/// complement: the reflected term's (1 - F) share instead of its F share (FastRing).
 template <int U>
 KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q, bool reflectOnly,
-                                                                const V* phi, const V* w,
-                                                                const M* k, V* accR, V* accT) {
+                                                                bool complement, const V* phi,
+                                                                const V* w, const M* k, V* accR,
+                                                                V* accT) {
   const V zero = _mm512_setzero_pd(), one = Set(1);
   V wb[U], cc[U], g[U], Fn[U], Fd[U], muR[U], g2[U];
   M ok[U], rok[U], part[U], gok[U];
@@ -111,12 +113,23 @@ KILN_AVX512 inline __attribute__((always_inline)) void AddTerms(const Consts& q,
       Fd[u] = _mm512_mask_blend_pd(part[u], one, d);
     }
   }
+  if (complement) {
+    // (1 - F) times the reflected term with F = 1, where 0 <= F < 1 (none where no lane has g^2
+    // > 0).
+    if (anyR && anyG) {
 #pragma GCC unroll 4
-  for (int u = 0; u < U; ++u) rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
-  if (anyR) {
+      for (int u = 0; u < U; ++u) {
+        rok[u] = ok[u] & Gt(muR[u], zero) & part[u];
+        accR[u] = Add(accR[u], _mm512_maskz_mov_pd(
+                                   rok[u], Weigh(wb[u], muR[u], Sub(Fd[u], Fn[u]), Fd[u], q)));
+      }
+    }
+  } else if (anyR) {
 #pragma GCC unroll 4
-    for (int u = 0; u < U; ++u)
+    for (int u = 0; u < U; ++u) {
+      rok[u] = ok[u] & Gt(muR[u], zero) & Gt(Fn[u], zero);
       accR[u] = Add(accR[u], _mm512_maskz_mov_pd(rok[u], Weigh(wb[u], muR[u], Fn[u], Fd[u], q)));
+    }
   }
   if (reflectOnly) return;
   if (!anyG) return;  // no lane transmits
@@ -171,13 +184,13 @@ KILN_AVX512 void FastRingSums(const FastRing& r, const double* phi, const double
     M k[2];
     LoadNodes(phi, w, J, j, &p[0], &wv[0], &k[0]);
     LoadNodes(phi, w, J, j + 8, &p[1], &wv[1], &k[1]);
-    AddTerms<2>(q, r.reflectOnly, p, wv, k, accR, accT);
+    AddTerms<2>(q, r.reflectOnly, r.tirComplement, p, wv, k, accR, accT);
   }
   if (j < J) {
     V p, wv;
     M k;
     LoadNodes(phi, w, J, j, &p, &wv, &k);
-    AddTerms<1>(q, r.reflectOnly, &p, &wv, &k, accR, accT);
+    AddTerms<1>(q, r.reflectOnly, r.tirComplement, &p, &wv, &k, accR, accT);
   }
   // The weights' common factor 1 / cos_m, once a ring.
   const double invCosM = 1 / r.cosM;
