@@ -19,6 +19,7 @@
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/math/fast_exp_log_avx2.h"
 #include "baker/math/fast_exp_log_avx512.h"
+#include "baker/integrate/microfacet_node_lanes.h"
 #endif
 
 namespace kiln {
@@ -324,14 +325,10 @@ KILN_AVX512F int AddBeckmannNodesAvx512(const BeckmannNodeView& v, double c, con
   for (; i < n; i += 8) {
     // The last block's lanes beyond n load 0 and add nothing (`in`).
     const __mmask8 in = n - i >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - i)) - 1);
-    const __m512d tt = _mm512_maskz_loadu_pd(in, t + i);
-    const __m512d t2 = _mm512_mul_pd(tt, tt), C = _mm512_sub_pd(one, t2);
-    const __m512d q = _mm512_add_pd(one, t2);
-    const __m512d S = _mm512_mul_pd(two, tt), aS = _mm512_mul_pd(a, S);
-    const __m512d C2 = _mm512_mul_pd(C, C), aS2 = _mm512_mul_pd(aS, aS);
-    const __m512d M2 = _mm512_add_pd(aS2, C2);
-    const __m512d N1 = _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(twoSt, aS), C), cc),
-                                     _mm512_mul_pd(mu, _mm512_sub_pd(C2, aS2)));
+    const microfacet_lanes::NodeBlock8 nb =
+        microfacet_lanes::LoadNodeBlock8(t + i, in, a, mu, twoSt, cc);
+    const __m512d tt = nb.tt, C = nb.C, q = nb.q, S = nb.S, aS = nb.aS;
+    const __m512d C2 = nb.C2, aS2 = nb.aS2, M2 = nb.M2, N1 = nb.N1;
     const __m512d invM2 = _mm512_div_pd(one, M2);
     const __m512d rootL =
         _mm512_maskz_sqrt_pd(0xFF, _mm512_mul_pd(_mm512_sub_pd(M2, N1), _mm512_add_pd(M2, N1)));

@@ -63,6 +63,7 @@
 #if defined(__x86_64__) && defined(__GNUC__)
 #include "baker/integrate/dielectric_simd.h"
 #include "baker/math/fast_exp_log_avx512.h"
+#include "baker/integrate/microfacet_node_lanes.h"
 #endif
 
 namespace kiln {
@@ -244,14 +245,9 @@ KILN_AVX512F void AddGgxNodesAvx512(Context& k, double c, const double* t, const
   for (int i = 0; i < n; i += 8) {
     // The last block's lanes beyond n load 0 and add nothing (`in`).
     const __mmask8 in = n - i >= 8 ? 0xFF : static_cast<__mmask8>((1u << (n - i)) - 1);
-    const __m512d tt = _mm512_maskz_loadu_pd(in, t + i);
-    const __m512d t2 = _mm512_mul_pd(tt, tt), C = _mm512_sub_pd(one, t2);
-    const __m512d q = _mm512_add_pd(one, t2);
-    const __m512d S = _mm512_mul_pd(two, tt), aS = _mm512_mul_pd(a, S);
-    const __m512d C2 = _mm512_mul_pd(C, C), aS2 = _mm512_mul_pd(aS, aS);
-    const __m512d M2 = _mm512_add_pd(aS2, C2);
-    const __m512d N1 = _mm512_add_pd(_mm512_mul_pd(_mm512_mul_pd(_mm512_mul_pd(twoSt, aS), C), cc),
-                                     _mm512_mul_pd(mu, _mm512_sub_pd(C2, aS2)));
+    const microfacet_lanes::NodeBlock8 nb =
+        microfacet_lanes::LoadNodeBlock8(t + i, in, a, mu, twoSt, cc);
+    const __m512d tt = nb.tt, C = nb.C, q = nb.q, aS = nb.aS, M2 = nb.M2, N1 = nb.N1;
     const __mmask8 add = in & _mm512_cmp_pd_mask(N1, zero, _CMP_GT_OQ);
     if (add == 0) continue;
     const __m512d invM2 = _mm512_div_pd(one, M2);
