@@ -759,20 +759,26 @@ void CheckColumn(const double* etas, int n) {
 
 void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
                                      const DielectricRuleOptions& opt, std::array<double, 2>* out,
-                                     long long* evals) {
+                                     long long* evals, DielectricChannels channels) {
   CheckColumn(etas, n);
-  // E_R by the reflected ray's moments on this rule's panels; E_T = T_lobe - T_F by the BTDF
-  // pair's column (its bake's rule, remembered: the BTDF table and these share its walk).
-  const View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
-  double M[dielectric_moments::kTerms] = {};
-  const long long walked = ReflectedMoments(v, dielectric_walk::ClassesOf(opt), M);
-  std::array<double, 2> btdf[kMaxDielectricColumn];
-  long long btdfEvals = 0;
-  FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, btdf, &btdfEvals);
-  for (int e = 0; e < n; ++e)
-    out[e] = {dielectric_moments::Contract(dielectric_moments::FresnelChebyshev(etas[e]), M),
-              btdf[e][0] - btdf[e][1]};
-  if (evals) *evals += walked + btdfEvals;
+  for (int e = 0; e < n; ++e) out[e] = {NAN, NAN};
+  long long count = 0;
+  // E_R by the reflected ray's moments on this rule's panels.
+  if (HasChannel(channels, 0)) {
+    const View v = MakeRuleView(mu, alpha, kDielectricTableEtaMin, opt);
+    double M[dielectric_moments::kTerms] = {};
+    count += ReflectedMoments(v, dielectric_walk::ClassesOf(opt), M);
+    for (int e = 0; e < n; ++e)
+      out[e][0] = dielectric_moments::Contract(dielectric_moments::FresnelChebyshev(etas[e]), M);
+  }
+  // E_T = T_lobe - T_F by the BTDF pair's column (its bake's rule, remembered: the BTDF table
+  // and these share its walk).
+  if (HasChannel(channels, 1)) {
+    std::array<double, 2> btdf[kMaxDielectricColumn];
+    FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, btdf, &count);
+    for (int e = 0; e < n; ++e) out[e][1] = btdf[e][0] - btdf[e][1];
+  }
+  if (evals) *evals += count;
 }
 
 std::array<double, 2> SmoothDielectricAlbedo(double mu, double eta) {

@@ -67,15 +67,28 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
 /// Most etas of one column (FixedRuleDielectricAlbedoColumn).
 constexpr int kMaxDielectricColumn = 64;
 
+/// Which of {E_R, E_T} (or of their averages) a column computes: the two are independent
+/// computations (E_R by the reflected ray's moments, E_T by the BTDF pair's column), so either
+/// alone has the bits it has in both.
+enum class DielectricChannels { R = 1, T = 2, Both = 3 };
+
+/// Whether `set` holds channel c (0: E_R, 1: E_T).
+constexpr bool HasChannel(DielectricChannels set, int c) {
+  return (static_cast<int>(set) >> c) & 1;
+}
+
 /// {E_R, E_T} by the fixed rule at (mu, alpha) for n etas at once (1 <= n <=
 /// kMaxDielectricColumn, every eta >= kDielectricTableEtaMin: the entering side), into out[0 ..
 /// n-1]: one walk of the microfacet normals (its panels do not depend on eta there), the
 /// geometry shared, per eta only F and the refracted ray (dielectric_albedo.cpp, "Columns"). Each
 /// out[e] has the bits FixedRuleDielectricAlbedo(mu, alpha, etas[e], opt) gives. evals
-/// (optional) accumulates one eta's evaluations (every eta takes the same nodes).
+/// (optional) accumulates one eta's evaluations (every eta takes the same nodes) of the channels
+/// computed. `channels`: only those are computed (E_R alone skips the BTDF column, E_T alone
+/// the reflected ray's walk), each with the bits it has in both; a channel not asked is NaN.
 void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
                                      const DielectricRuleOptions& opt, std::array<double, 2>* out,
-                                     long long* evals = nullptr);
+                                     long long* evals = nullptr,
+                                     DielectricChannels channels = DielectricChannels::Both);
 /// The same with the bake's node counts, remembering its recent columns (by the bits of the
 /// arguments): the E_R and E_T tables baked in one process walk each column once.
 void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,

@@ -32,10 +32,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <map>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -123,62 +119,115 @@ inline double PanelPoint(const Panel& p, double t, double* dmu) {
 }
 
 /// The points PrepareDielectricAverageColumn integrated ahead: {E_avg_R, E_avg_T} at
-/// kDielectricAverageNodes and the evaluations one point takes, by the bits of (alpha, eta).
-class AveragePointMemo {
- public:
-  struct Value {
-    std::array<double, 2> e{0, 0};
-    long long evals = 0;
-  };
-  bool Find(double alpha, double eta, Value& out) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto it = map_.find(KeyOf(alpha, eta));
-    if (it == map_.end()) return false;
-    out = it->second;
-    return true;
-  }
-  /// Keeps v unless the memo holds kMaxPoints already.
-  void Keep(double alpha, double eta, const Value& v) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (map_.size() < kMaxPoints) map_.emplace(KeyOf(alpha, eta), v);
-  }
-
- private:
-  static constexpr size_t kMaxPoints = 1 << 16;
-  using Key = std::pair<std::uint64_t, std::uint64_t>;
-  static Key KeyOf(double a, double b) {
-    Key k;
-    std::memcpy(&k.first, &a, sizeof a);
-    std::memcpy(&k.second, &b, sizeof b);
-    return k;
-  }
-  std::mutex mutex_;
-  std::map<Key, Value> map_;
-};
-
-AveragePointMemo& PointMemo() {
-  static AveragePointMemo memo;
+/// kDielectricAverageNodes, the channels computed and each one's evaluations for one point, by
+/// the bits of (alpha, eta).
+DielectricChannelMemo& PointMemo() {
+  static DielectricChannelMemo memo(1 << 16);
   return memo;
+}
+
+DielectricChannelMemo::Key PointKey(double alpha, double eta) {
+  return DielectricColumnMemo::KeyOf(alpha, kDielectricAverageNodes, &eta, 1);
+}
+
+/// The channels of `asked` that `held` lacks.
+int Lacking(DielectricChannels asked, int held) { return static_cast<int>(asked) & ~held; }
+
+/// The evaluations of the channels of `asked` in v; its e with the others NaN into out[0 .. n-1].
+long long Read(const DielectricChannelMemo::Value& v, DielectricChannels asked,
+               std::array<double, 2>* out) {
+  long long evals = 0;
+  for (int c = 0; c < 2; ++c)
+    if (HasChannel(asked, c)) evals += v.evals[c];
+  for (size_t e = 0; e < v.e.size(); ++e)
+    for (int c = 0; c < 2; ++c) out[e][c] = HasChannel(asked, c) ? v.e[e][c] : NAN;
+  return evals;
+}
+
+/// FixedRuleDielectricAlbedoAverageColumn's sums at `nodes` for the channels `channels` (the
+/// others NaN) into v.e[0 .. n-1], each channel's evaluations (one eta's) into v.evals, v.has =
+/// channels: the E column asked for each channel alone at every mu node (the bits it has in
+/// both). Entering (every eta >= kDielectricTableEtaMin, which the E column checks): the mu
+/// panels do not depend on eta. The E columns of the mu nodes are independent: they are walked
+/// on the calling arena's threads (isolated: a thread waiting for them takes no other task of
+/// its arena, which could need this column's memo entry), then summed in the nodes' order (the
+/// bits of one thread's sum, for any thread count).
+void AverageColumn(double alpha, const double* etas, int n, int nodes, DielectricChannels channels,
+                   DielectricChannelMemo::Value& v) {
+  if (n < 1 || n > kMaxDielectricColumn)
+    throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
+  const GaussRule01& g = CachedGaussLegendre01(nodes);
+  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
+  const std::vector<Panel> panels = Panels(alpha, etas[0]);
+  const size_t K = g.x.size(), count = panels.size() * K;
+  std::vector<std::array<double, 2>> cols(count * static_cast<size_t>(n));
+  std::vector<double> mus(count), dmus(count);
+  std::vector<std::array<long long, 2>> nodeEvals(count, {0, 0});
+  const DielectricChannels one[2] = {DielectricChannels::R, DielectricChannels::T};
+  tbb::this_task_arena::isolate([&] {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 1),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        std::array<double, 2> part[kMaxDielectricColumn];
+                        for (size_t i = r.begin(); i != r.end(); ++i) {
+                          mus[i] = PanelPoint(panels[i / K], g.x[i % K], &dmus[i]);
+                          std::array<double, 2>* col = &cols[i * static_cast<size_t>(n)];
+                          for (int c = 0; c < 2; ++c) {
+                            if (!HasChannel(channels, c)) continue;
+                            FixedRuleDielectricAlbedoColumn(mus[i], alpha, etas, n, opt, part,
+                                                            &nodeEvals[i][c], one[c]);
+                            for (int e = 0; e < n; ++e) col[e][c] = part[e][c];
+                          }
+                        }
+                      });
+  });
+  v.e.assign(static_cast<size_t>(n), {0, 0});
+  v.evals[0] = v.evals[1] = 0;
+  v.has = static_cast<int>(channels);
+  for (size_t i = 0; i < count; ++i) {
+    const double w = g.w[i % K];
+    const std::array<double, 2>* col = &cols[i * static_cast<size_t>(n)];
+    for (int c = 0; c < 2; ++c) {
+      if (!HasChannel(channels, c)) continue;
+      for (int e = 0; e < n; ++e) v.e[e][c] += 2 * w * dmus[i] * mus[i] * col[e][c];
+      v.evals[c] += nodeEvals[i][c];
+    }
+  }
+  for (int c = 0; c < 2; ++c)
+    if (!HasChannel(channels, c))
+      for (int e = 0; e < n; ++e) v.e[e][c] = NAN;
 }
 
 }  // namespace
 
-int PrepareDielectricAverageColumn(double alpha, const double* etas, int n) {
-  // Only the etas the memo does not hold yet (a column gives each eta the bits and evaluations
-  // it gets alone, whatever else the column holds): the search of t-avg after r-avg's reads
-  // the points they share.
+int PrepareDielectricAverageColumn(double alpha, const double* etas, int n,
+                                   DielectricChannels channels) {
+  // Only the etas the memo does not hold yet with every channel asked, for the channels some of
+  // them lack (a column gives each eta the bits and evaluations it gets alone, whatever else
+  // the column holds; a channel an entry holds already is kept, not replaced).
   if (n < 1 || n > kMaxDielectricColumn)
     throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
   double todo[kMaxDielectricColumn];
-  int m = 0;
-  AveragePointMemo::Value held;
-  for (int e = 0; e < n; ++e)
-    if (!PointMemo().Find(alpha, etas[e], held)) todo[m++] = etas[e];
+  int m = 0, need = 0;
+  for (int e = 0; e < n; ++e) {
+    DielectricChannelMemo::Value held;
+    PointMemo().Find(PointKey(alpha, etas[e]), held);
+    const int lack = Lacking(channels, held.has);
+    if (lack == 0) continue;
+    todo[m++] = etas[e];
+    need |= lack;
+  }
   if (m == 0) return 0;
-  std::array<double, 2> out[kMaxDielectricColumn];
-  long long evals = 0;
-  FixedRuleDielectricAlbedoAverageColumn(alpha, todo, m, kDielectricAverageNodes, out, &evals);
-  for (int e = 0; e < m; ++e) PointMemo().Keep(alpha, todo[e], {out[e], evals});
+  DielectricChannelMemo::Value col;
+  AverageColumn(alpha, todo, m, kDielectricAverageNodes, static_cast<DielectricChannels>(need),
+                col);
+  for (int e = 0; e < m; ++e) {
+    DielectricChannelMemo::Value point;
+    point.e = {col.e[e]};
+    point.evals[0] = col.evals[0];
+    point.evals[1] = col.evals[1];
+    point.has = col.has;
+    PointMemo().Merge(PointKey(alpha, todo[e]), point);
+  }
   return m;
 }
 
@@ -192,73 +241,55 @@ std::array<double, 2> SmoothDielectricAlbedoAverage(double eta) {
   return {F, 1 - F};
 }
 
-std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, long long* evals) {
-  // The entering side through the bake's memo of columns, as a column of one (the same bits and
-  // evaluations): the lookup-error searches of r-avg and t-avg, whose every point needs both
-  // channels, integrate each point they share once.
+std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, long long* evals,
+                                                       DielectricChannels channels) {
+  // The entering side through the search's points and the bake's memo of columns, as a column
+  // of one (the same bits and evaluations): the lookup-error searches of r-avg and t-avg
+  // integrate each point (and channel) they share once.
   if (eta >= kDielectricTableEtaMin) {
-    AveragePointMemo::Value v;
-    if (PointMemo().Find(alpha, eta, v)) {
-      if (evals) *evals += v.evals;
-      return v.e;
-    }
+    DielectricChannelMemo::Value v;
     std::array<double, 2> e;
-    FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, &e, evals);
+    if (PointMemo().Find(PointKey(alpha, eta), v) && Lacking(channels, v.has) == 0) {
+      const long long read = Read(v, channels, &e);
+      if (evals) *evals += read;
+      return e;
+    }
+    FixedRuleDielectricAlbedoAverageColumn(alpha, &eta, 1, &e, evals, channels);
     return e;
   }
   return FixedRuleDielectricAlbedoAverage(alpha, eta, kDielectricAverageNodes, evals);
 }
 
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
-                                            std::array<double, 2>* out, long long* evals) {
-  if (n < 1 || n > kMaxDielectricColumn)
-    throw std::invalid_argument("dielectric average column: " + std::to_string(n) + " etas");
-  const GaussRule01& g = CachedGaussLegendre01(nodes);
-  const DielectricRuleOptions opt = TunedDielectricRuleOptions();
-  // Entering (every eta >= kDielectricTableEtaMin, which the E column checks): the mu panels do
-  // not depend on eta. The E columns of the mu nodes are independent: they are walked on the
-  // calling arena's threads (isolated: a thread waiting for them takes no other task of its
-  // arena, which could need this column's memo entry), then summed in the nodes' order (the
-  // bits of one thread's sum, for any thread count).
-  const std::vector<Panel> panels = Panels(alpha, etas[0]);
-  const size_t K = g.x.size(), count = panels.size() * K;
-  std::vector<std::array<double, 2>> cols(count * static_cast<size_t>(n));
-  std::vector<double> mus(count), dmus(count);
-  std::vector<long long> nodeEvals(count, 0);
-  tbb::this_task_arena::isolate([&] {
-    tbb::parallel_for(
-        tbb::blocked_range<size_t>(0, count, 1), [&](const tbb::blocked_range<size_t>& r) {
-          for (size_t i = r.begin(); i != r.end(); ++i) {
-            mus[i] = PanelPoint(panels[i / K], g.x[i % K], &dmus[i]);
-            FixedRuleDielectricAlbedoColumn(mus[i], alpha, etas, n, opt,
-                                            &cols[i * static_cast<size_t>(n)], &nodeEvals[i]);
-          }
-        });
-  });
-  for (int e = 0; e < n; ++e) out[e] = {0, 0};
-  for (size_t i = 0; i < count; ++i) {
-    const double w = g.w[i % K];
-    const std::array<double, 2>* col = &cols[i * static_cast<size_t>(n)];
-    for (int e = 0; e < n; ++e)
-      for (int c = 0; c < 2; ++c) out[e][c] += 2 * w * dmus[i] * mus[i] * col[e][c];
-    if (evals) *evals += nodeEvals[i];
-  }
+                                            std::array<double, 2>* out, long long* evals,
+                                            DielectricChannels channels) {
+  DielectricChannelMemo::Value v;
+  AverageColumn(alpha, etas, n, nodes, channels, v);
+  const long long read = Read(v, channels, out);
+  if (evals) *evals += read;
 }
 
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
-                                            std::array<double, 2>* out, long long* evals) {
-  static DielectricColumnMemo memo;
-  const DielectricColumnMemo::Key key =
+                                            std::array<double, 2>* out, long long* evals,
+                                            DielectricChannels channels) {
+  static DielectricChannelMemo memo(1 << 15);
+  const DielectricChannelMemo::Key key =
       DielectricColumnMemo::KeyOf(alpha, kDielectricAverageNodes, etas, n);
-  DielectricColumnMemo::Value v;
-  if (!memo.Find(key, v)) {
-    v.e.resize(n);
-    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, kDielectricAverageNodes, v.e.data(),
-                                           &v.evals);
-    memo.Keep(key, v);
+  DielectricChannelMemo::Value v;
+  memo.Find(key, v);
+  const int lack = Lacking(channels, v.has);
+  if (lack != 0) {
+    DielectricChannelMemo::Value added;
+    AverageColumn(alpha, etas, n, kDielectricAverageNodes, static_cast<DielectricChannels>(lack),
+                  added);
+    memo.Merge(key, added);
+    if (v.has == 0)
+      v = added;
+    else
+      DielectricChannelMemo::AddChannels(v, added);
   }
-  std::copy(v.e.begin(), v.e.end(), out);
-  if (evals) *evals += v.evals;
+  const long long read = Read(v, channels, out);
+  if (evals) *evals += read;
 }
 
 double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes, long long* evals) {
@@ -279,14 +310,17 @@ double FixedRuleDielectricExitAverageR(double alpha, double eta, int nodes,
 }
 
 double FixedRuleDielectricExitAverageT(double alpha, double eta, int nodes, long long* evals) {
+  // E_T alone: the entering column's E_T at 1 / eta (the search's point if it holds E_T).
   const double etaIn = 1 / eta;
-  AveragePointMemo::Value v;
-  if (nodes == kDielectricAverageNodes && PointMemo().Find(alpha, etaIn, v)) {
-    if (evals) *evals += v.evals;
-    return eta * eta * v.e[1];
-  }
+  DielectricChannelMemo::Value v;
   std::array<double, 2> e;
-  FixedRuleDielectricAlbedoAverageColumn(alpha, &etaIn, 1, nodes, &e, evals);
+  if (nodes == kDielectricAverageNodes && PointMemo().Find(PointKey(alpha, etaIn), v) &&
+      HasChannel(static_cast<DielectricChannels>(v.has), 1)) {
+    const long long read = Read(v, DielectricChannels::T, &e);
+    if (evals) *evals += read;
+    return eta * eta * e[1];
+  }
+  FixedRuleDielectricAlbedoAverageColumn(alpha, &etaIn, 1, nodes, &e, evals, DielectricChannels::T);
   return eta * eta * e[1];
 }
 

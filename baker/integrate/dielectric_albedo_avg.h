@@ -22,9 +22,12 @@ namespace kiln {
 /// {E_avg_R, E_avg_T} at GGX alpha > 0 and eta in (0, inf) by the fixed rule: E by
 /// FixedRuleDielectricAlbedo (the 3D tables' rule) at kDielectricAverageNodes Gauss nodes per mu
 /// panel.
-/// Deterministic; evals (optional) accumulates integrand evaluations.
-std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
-                                                       long long* evals = nullptr);
+/// Deterministic; evals (optional) accumulates integrand evaluations. `channels`: the entering
+/// side computes only those (each with the bits it has in both, the others NaN) and charges their
+/// evaluations; the other sides compute both.
+std::array<double, 2> FixedRuleDielectricAlbedoAverage(
+    double alpha, double eta, long long* evals = nullptr,
+    DielectricChannels channels = DielectricChannels::Both);
 /// The same with `nodes` Gauss nodes per mu panel (tests and experiments; the exit side's E_avg_R
 /// takes the kernel route, KernelDielectricExitAverageR, whatever `nodes`).
 std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta, int nodes,
@@ -35,13 +38,18 @@ std::array<double, 2> FixedRuleDielectricAlbedoAverage(double alpha, double eta,
 /// out: one E column (FixedRuleDielectricAlbedoColumn) per mu node, the nodes on the calling
 /// oneTBB arena's threads and summed in their order. Each out[e] has the bits
 /// FixedRuleDielectricAlbedoAverage(alpha, etas[e], nodes) gives, for any thread count; evals:
-/// one eta's.
+/// one eta's. `channels`: only those are computed (the E columns asked for them alone), each
+/// with the bits it has in both; a channel not asked is NaN and charges nothing.
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n, int nodes,
-                                            std::array<double, 2>* out, long long* evals);
-/// The same at kDielectricAverageNodes, remembering recent columns (the bake's: r-avg and t-avg
-/// baked in one process compute each column once).
+                                            std::array<double, 2>* out, long long* evals,
+                                            DielectricChannels channels = DielectricChannels::Both);
+/// The same at kDielectricAverageNodes, remembering recent columns with the channels computed
+/// (dielectric_column_memo.h, DielectricChannelMemo): a column asked for a channel its entry
+/// lacks computes that channel alone and adds it. A hit charges the evaluations of the channels
+/// asked, as computing them would.
 void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, int n,
-                                            std::array<double, 2>* out, long long* evals);
+                                            std::array<double, 2>* out, long long* evals,
+                                            DielectricChannels channels = DielectricChannels::Both);
 
 /// Integrates {E_avg_R, E_avg_T} at (alpha, etas[e]) for n entering etas (1 <= n <=
 /// kMaxDielectricColumn, every eta >= kDielectricTableEtaMin) as one column and keeps each point
@@ -50,8 +58,11 @@ void FixedRuleDielectricAlbedoAverageColumn(double alpha, const double* etas, in
 /// same bits and evaluations as the point alone (a column gives each eta a column of one's bits),
 /// one walk for the n points (the lookup-error searches' points of one roughness,
 /// QuantityInfo::prepareSearch). Points the memo holds already (another search's: t-avg after
-/// r-avg) are not integrated again. Returns how many etas it integrated. Thread-safe.
-int PrepareDielectricAverageColumn(double alpha, const double* etas, int n);
+/// r-avg) are not integrated again. `channels`: the memo's points get those (a point lacking
+/// one of them is integrated for the channels it lacks; reading a point charges the
+/// evaluations of the channels read). Returns how many etas it integrated. Thread-safe.
+int PrepareDielectricAverageColumn(double alpha, const double* etas, int n,
+                                   DielectricChannels channels = DielectricChannels::Both);
 
 /// The exit side (1 / eta >= kDielectricTableEtaMin): E_avg_R by the mu rule of E_R alone
 /// (FixedRuleDielectricReflectance: no panels at the refracted ray's structures; the bake

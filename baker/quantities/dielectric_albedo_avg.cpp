@@ -88,6 +88,12 @@ void CheckModel(const TableSpec& spec) {
 
 bool UsesRule(const TableSpec& spec) { return spec.model == kModel; }
 
+/// The one channel of the entering columns a kind reads: E_avg_T for t-avg and (by reciprocity)
+/// t-exit-avg, E_avg_R for r-avg.
+DielectricChannels ChannelOf(const TableSpec& spec) {
+  return KindOf(spec.quantity).transmit ? DielectricChannels::T : DielectricChannels::R;
+}
+
 std::vector<double> FixedRule(const TableSpec& spec, const double* x, IntegrationStats& stats) {
   CheckModel(spec);
   const auto [r, eta] = PointOf(spec, x);
@@ -99,7 +105,9 @@ std::vector<double> FixedRule(const TableSpec& spec, const double* x, Integratio
     return {transmit
                 ? FixedRuleDielectricExitAverageT(alpha, eta, kDielectricAverageNodes, &stats.evals)
                 : KernelDielectricExitAverageR(alpha, eta, &stats.evals)};
-  std::array<double, 2> e = FixedRuleDielectricAlbedoAverage(alpha, eta, &stats.evals);
+  // The entering side: only the channel stored (dielectric_albedo_avg.h, DielectricChannels).
+  std::array<double, 2> e =
+      FixedRuleDielectricAlbedoAverage(alpha, eta, &stats.evals, ChannelOf(spec));
   return {e[transmit ? 1 : 0]};
 }
 
@@ -121,9 +129,10 @@ void BakeTable(const TableSpec& spec, int threads, Table& table, std::vector<lon
     *eta = etaIn;
     return true;
   };
-  how.column = [](double alpha, double, const double* etas, int n, std::array<double, 2>* out,
-                  long long* evals) {
-    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, out, evals);
+  const DielectricChannels channel = ChannelOf(spec);
+  how.column = [channel](double alpha, double, const double* etas, int n,
+                         std::array<double, 2>* out, long long* evals) {
+    FixedRuleDielectricAlbedoAverageColumn(alpha, etas, n, out, evals, channel);
   };
   how.store = [&, c](const double* x, std::array<double, 2> e) {
     const double eta = PointOf(spec, x)[1];
@@ -163,7 +172,8 @@ void PrepareSearch(const TableSpec& spec, const double* points, size_t n) {
                     [&](const tbb::blocked_range<size_t>& range) {
                       for (size_t c = range.begin(); c != range.end(); ++c)
                         PrepareDielectricAverageColumn(columns[c].first, columns[c].second.data(),
-                                                       static_cast<int>(columns[c].second.size()));
+                                                       static_cast<int>(columns[c].second.size()),
+                                                       ChannelOf(spec));
                     });
 }
 
