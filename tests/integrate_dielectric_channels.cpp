@@ -22,6 +22,25 @@ bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 const double kEtas[] = {1.1, 1.33, 1.5, 2.2, 3.0};
 constexpr int kN = 5;
 
+/// The one-channel columns onlyR and onlyT hold both's bits of their channel and NaN in the
+/// other, and their evaluations (evR, evT) are each fewer than both's (evBoth) and add up to it.
+void RequireChannelsOfBoth(const std::array<double, 2>* both, const std::array<double, 2>* onlyR,
+                           const std::array<double, 2>* onlyT, long long evBoth, long long evR,
+                           long long evT) {
+  for (int e = 0; e < kN; ++e) {
+    INFO("eta " << kEtas[e]);
+    CHECK(SameBits(onlyR[e][0], both[e][0]));
+    CHECK(SameBits(onlyT[e][1], both[e][1]));
+    CHECK(std::isnan(onlyR[e][1]));
+    CHECK(std::isnan(onlyT[e][0]));
+  }
+  CHECK(evR > 0);
+  CHECK(evT > 0);
+  CHECK(evR < evBoth);
+  CHECK(evT < evBoth);
+  CHECK(evR + evT == evBoth);
+}
+
 }  // namespace
 
 TEST_CASE(
@@ -40,17 +59,7 @@ TEST_CASE(
                                       DielectricChannels::R);
       FixedRuleDielectricAlbedoColumn(mu, alpha, kEtas, kN, opt, onlyT, &evT,
                                       DielectricChannels::T);
-      for (int e = 0; e < kN; ++e) {
-        CHECK(SameBits(onlyR[e][0], both[e][0]));
-        CHECK(SameBits(onlyT[e][1], both[e][1]));
-        CHECK(std::isnan(onlyR[e][1]));
-        CHECK(std::isnan(onlyT[e][0]));
-      }
-      CHECK(evR > 0);
-      CHECK(evT > 0);
-      CHECK(evR < evBoth);
-      CHECK(evT < evBoth);
-      CHECK(evR + evT == evBoth);
+      RequireChannelsOfBoth(both, onlyR, onlyT, evBoth, evR, evT);
     }
 }
 
@@ -67,18 +76,7 @@ TEST_CASE(
                                          DielectricChannels::R);
   FixedRuleDielectricAlbedoAverageColumn(alpha, kEtas, kN, kDielectricAverageNodes, onlyT, &evT,
                                          DielectricChannels::T);
-  for (int e = 0; e < kN; ++e) {
-    INFO("eta " << kEtas[e]);
-    CHECK(SameBits(onlyR[e][0], both[e][0]));
-    CHECK(SameBits(onlyT[e][1], both[e][1]));
-    CHECK(std::isnan(onlyR[e][1]));
-    CHECK(std::isnan(onlyT[e][0]));
-  }
-  CHECK(evR > 0);
-  CHECK(evT > 0);
-  CHECK(evR < evBoth);
-  CHECK(evT < evBoth);
-  CHECK(evR + evT == evBoth);
+  RequireChannelsOfBoth(both, onlyR, onlyT, evBoth, evR, evT);
 
   // The remembering column: E_avg_R first (the entry holds R only), then E_avg_T (computed and
   // added), then both (read): each the bits and the evaluations of computing what it asks.

@@ -478,14 +478,8 @@ long long ReflectedMoments(const View& v, const dielectric_walk::NodeClasses& ru
     void EndRing(double wo) {
       if (simd && ring.cosTheta > 0) {
         dielectric_simd::RingBuffer& b = *buf;
-        const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
-                                            v.st * ring.sinTheta,
-                                            ring.cosTheta,
-                                            v.mu,
-                                            v.gDen,
-                                            k.a2,
-                                            k.oma2,
-                                            k.kh};
+        const dielectric_simd::ColumnRing r =
+            dielectric_simd::ColumnRingOf(v.mu, v.st, v.gDen, ring.cosTheta, ring.sinTheta, k);
         kept = dielectric_simd::ReflectedRing(r, b.phi, b.w, b.J, wR, cc);
       }
       if (kept == 0) return;
@@ -926,15 +920,9 @@ std::array<double, 2> FixedRuleDielectricAlbedo(double mu, double alpha, double 
 void FixedRuleDielectricAlbedoColumn(double mu, double alpha, const double* etas, int n,
                                      std::array<double, 2>* out, long long* evals) {
   static DielectricColumnMemo memo;
-  const DielectricColumnMemo::Key key = DielectricColumnMemo::KeyOf(mu, alpha, etas, n);
-  DielectricColumnMemo::Value v;
-  if (!memo.Find(key, v)) {
-    v.e.resize(n);
-    FixedRuleDielectricAlbedoColumn(mu, alpha, etas, n, kTuned, v.e.data(), &v.evals);
-    memo.Keep(key, v);
-  }
-  std::copy(v.e.begin(), v.e.end(), out);
-  if (evals) *evals += v.evals;
+  memo.Column(mu, alpha, etas, n, out, evals, [&](std::array<double, 2>* e, long long* ev) {
+    FixedRuleDielectricAlbedoColumn(mu, alpha, etas, n, kTuned, e, ev);
+  });
 }
 
 }  // namespace kiln

@@ -252,14 +252,8 @@ void BtdfColumnWalk(const BtdfView& v, const BtdfEtaConsts& ks,
       dielectric_simd::RingBuffer& b = *buf;
       const int J = b.J, n = ks.n;
       if (!(ring.cosTheta > 0)) return;  // no node visited: the ring adds nothing
-      const dielectric_simd::ColumnRing r{v.mu * ring.cosTheta,
-                                          v.st * ring.sinTheta,
-                                          ring.cosTheta,
-                                          v.mu,
-                                          v.gDen,
-                                          k.a2,
-                                          k.oma2,
-                                          k.kh};
+      const dielectric_simd::ColumnRing r =
+          dielectric_simd::ColumnRingOf(v.mu, v.st, v.gDen, ring.cosTheta, ring.sinTheta, k);
       dielectric_simd::BtdfRingShared(r, b.phi, b.w, J, b.valid, b.wb, b.cc);
       dielectric_simd::AddColumnRing(
           n, b, wo,
@@ -326,15 +320,9 @@ void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, 
 void FixedRuleDielectricBtdfColumn(double mu, double alpha, const double* etas, int n,
                                    std::array<double, 2>* out, long long* evals) {
   static DielectricColumnMemo memo;
-  const DielectricColumnMemo::Key key = DielectricColumnMemo::KeyOf(mu, alpha, etas, n);
-  DielectricColumnMemo::Value v;
-  if (!memo.Find(key, v)) {
-    v.e.resize(n);
-    FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, kTuned, v.e.data(), &v.evals);
-    memo.Keep(key, v);
-  }
-  std::copy(v.e.begin(), v.e.end(), out);
-  if (evals) *evals += v.evals;
+  memo.Column(mu, alpha, etas, n, out, evals, [&](std::array<double, 2>* e, long long* ev) {
+    FixedRuleDielectricBtdfColumn(mu, alpha, etas, n, kTuned, e, ev);
+  });
 }
 
 std::array<double, 2> FixedRuleDielectricBtdfPair(double mu, double alpha, double eta,

@@ -119,6 +119,14 @@ struct ColumnRing {
   double kh;    ///< mu a2 / (2 gDen): the refracted ray's masking over the view's (EtaTerms)
 };
 
+/// The ColumnRing at polar angle (cosM, sinM) of a view with cosine mu, sine st and gDen = mu +
+/// mu Lambda(o), given the ring constants k (dielectric_lanes::RingConstsOf: a2, oma2, kh).
+template <class RingConsts>
+ColumnRing ColumnRingOf(double mu, double st, double gDen, double cosM, double sinM,
+                        const RingConsts& k) {
+  return {mu * cosM, st * sinM, cosM, mu, gDen, k.a2, k.oma2, k.kh};
+}
+
 /// The column walk's reflected part at the J nodes (phi, w) of ring r (dielectric_albedo.cpp,
 /// ReflectedMoments): the nodes with c > 0 and a reflected ray above the horizon (a weight wR !=
 /// 0), in order, their wR (w (c / cos_m) over the view's and the reflected ray's masking) into
