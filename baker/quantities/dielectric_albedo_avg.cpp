@@ -215,7 +215,8 @@ bool SmoothLimit(const TableSpec& spec, const double* x, std::vector<double>& ou
 /// kiln verify's bake-error reference (QuantityInfo::verifyReference): adaptive Gauss-Kronrod
 /// over mu to `tol` of 2 E(mu) mu, E as the matching 3D table bakes it (its rule, which that
 /// table's own check holds to adaptive quadrature): independent of this kind's mu rule, where
-/// the nested adaptive integral (Evaluate) takes millions of evaluations a node.
+/// the nested adaptive integral (Evaluate) takes millions of evaluations a node. On the entering
+/// side E is this kind's channel alone (the other channel's walk skipped: the same bits).
 std::vector<double> VerifyReference(const TableSpec& spec, const double* x, double tol,
                                     IntegrationStats& stats) {
   std::vector<double> smooth;
@@ -224,7 +225,19 @@ std::vector<double> VerifyReference(const TableSpec& spec, const double* x, doub
   const auto [r, eta] = PointOf(spec, x);
   const QuantityInfo& albedo = Describe(AlbedoKindOf(spec.quantity));
   const TableSpec e3 = albedo.makeSpec(kModel, albedo.defaultAxes(kModel));
+  // The entering side: the 3D table's rule for this kind's channel alone (its column of one eta,
+  // the bits it has with both channels, FixedRuleDielectricAlbedo), not the other's walk too.
+  const bool transmit = KindOf(spec.quantity).transmit;
+  const bool oneChannel = !KindOf(spec.quantity).exit && eta >= kDielectricTableEtaMin;
+  const double alpha = std::max(AlphaFromPerceptual(r), MinAlpha);
   auto e = [&](double mu) {
+    if (oneChannel) {
+      std::array<double, 2> col;
+      FixedRuleDielectricAlbedoColumn(mu, alpha, &eta, 1, TunedDielectricRuleOptions(), &col,
+                                      &stats.evals,
+                                      transmit ? DielectricChannels::T : DielectricChannels::R);
+      return Channels<1>{2 * mu * col[transmit ? 1 : 0]};
+    }
     const double xm[3] = {mu, r, eta};
     IntegrationStats st;
     std::vector<double> v = EvaluateSpec(e3, xm, st);
