@@ -18,7 +18,8 @@ constexpr double kTol = 1e-8;
 /// At (r, eta) of the r kind `rName` and the t kind `tName` (one side of the interface; a point
 /// off the size-5 tables' nodes, whose references the texel check of the same process may have
 /// put in the memo): the reference is EvaluateSpec's to within the two tolerances, costs fewer
-/// evaluations, and the t kind after the r kind costs none.
+/// evaluations, and the t kind after the r kind costs none. EvaluateSpec's t kind after its r
+/// kind reads the same integration (DielectricAlbedoAverage remembers it) and is charged alike.
 void CheckAgainstEvaluateSpec(const char* rName, const char* tName, double r, double eta) {
   CatalogueOptions copt;
   copt.size = 5;
@@ -37,6 +38,7 @@ void CheckAgainstEvaluateSpec(const char* rName, const char* tName, double r, do
   CHECK(evals > 0);
   CHECK(evals < rSt.evals);
   CHECK(tEvals == 0);
+  CHECK(tSt.evals == rSt.evals);
 }
 
 }  // namespace

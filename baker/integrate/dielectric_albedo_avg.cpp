@@ -31,7 +31,12 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -354,9 +359,49 @@ std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double t
   return DielectricAlbedoAverage(alpha, eta, split, stats);
 }
 
-std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
-                                              const NestedAverageTolerance& tol,
-                                              IntegrationStats& stats) {
+namespace {
+
+/// The adaptive averages integrated so far (at most kAdaptiveMemoSize, then forgotten), by the
+/// bits of (alpha, eta, outer, inner, graded): each gives both channels, so the r and t kinds at
+/// one point (EvaluateSpec: one channel each) take one integration, seconds of one core.
+class AdaptiveAverageMemo {
+ public:
+  struct Value {
+    std::array<double, 2> e{};
+    long long evals = 0;
+    double errorEstimate = 0;
+  };
+  using Key = std::array<std::uint64_t, 5>;
+  static Key KeyOf(double alpha, double eta, const NestedAverageTolerance& tol) {
+    const double parts[4] = {alpha, eta, tol.outer, tol.inner};
+    Key key{};
+    std::memcpy(key.data(), parts, sizeof parts);
+    key[4] = tol.gradedByWeight ? 1 : 0;
+    return key;
+  }
+  bool Find(const Key& key, Value& v) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    auto it = map_.find(key);
+    if (it == map_.end()) return false;
+    v = it->second;
+    return true;
+  }
+  void Keep(const Key& key, const Value& v) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (map_.size() >= kAdaptiveMemoSize) map_.clear();
+    map_.emplace(key, v);
+  }
+
+ private:
+  static constexpr size_t kAdaptiveMemoSize = 4096;
+  std::mutex mutex_;
+  std::map<Key, Value> map_;
+};
+
+/// DielectricAlbedoAverage's integration itself: E_avg, its evaluations and error estimate.
+AdaptiveAverageMemo::Value IntegrateDielectricAverage(double alpha, double eta,
+                                                      const NestedAverageTolerance& tol) {
+  AdaptiveAverageMemo::Value out;
   const std::vector<Panel> panels = Panels(alpha, eta);
   IntegrationOptions opt;
   opt.tol = tol.inner;
@@ -371,16 +416,32 @@ std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
     // An error d(mu) in E moves E_avg by int 2 mu d(mu) dmu: tol.inner / (2 mu) in all of it.
     if (tol.gradedByWeight) at.tol = std::min(tol.inner / (2 * mu), kMaxGradedInnerTol);
     const std::array<double, 2> e = DielectricAlbedo(mu, alpha, eta, at, s);
-    stats.evals += s.evals;
+    out.evals += s.evals;
     return {2 * dmu * mu * e[0], 2 * dmu * mu * e[1]};
   };
   std::vector<double> xs(panels.size() + 1);
   for (size_t i = 0; i < xs.size(); ++i) xs[i] = static_cast<double>(i);
-  double err = 0;
-  Channels<2> r =
-      IntegrateAdaptive<2>(f, xs.data(), static_cast<int>(xs.size()), tol.outer, 400, &err);
-  stats.errorEstimate = err;
-  return {r[0], r[1]};
+  const Channels<2> r = IntegrateAdaptive<2>(f, xs.data(), static_cast<int>(xs.size()), tol.outer,
+                                             400, &out.errorEstimate);
+  out.e = {r[0], r[1]};
+  return out;
+}
+
+}  // namespace
+
+std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
+                                              const NestedAverageTolerance& tol,
+                                              IntegrationStats& stats) {
+  static AdaptiveAverageMemo memo;
+  const AdaptiveAverageMemo::Key key = AdaptiveAverageMemo::KeyOf(alpha, eta, tol);
+  AdaptiveAverageMemo::Value v;
+  if (!memo.Find(key, v)) {
+    v = IntegrateDielectricAverage(alpha, eta, tol);
+    memo.Keep(key, v);
+  }
+  stats.evals += v.evals;
+  stats.errorEstimate = v.errorEstimate;
+  return v.e;
 }
 
 }  // namespace kiln

@@ -95,7 +95,10 @@ struct NestedAverageTolerance {
 constexpr double kMaxGradedInnerTol = 1e-6;
 
 /// DielectricAlbedoAverage with its tolerance split as `tol` says; the form above is
-/// {tol / 2, tol / 10, false}, bit for bit.
+/// {tol / 2, tol / 10, false}, bit for bit. Both forms remember their recent results (by the bits
+/// of alpha, eta and the split; thread-safe): the r and t kinds at one point (EvaluateSpec gives
+/// one channel each) take one integration, and a remembered one returns the same bits and charges
+/// `stats` the evaluations and error estimate it had.
 std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta,
                                               const NestedAverageTolerance& tol,
                                               IntegrationStats& stats);
