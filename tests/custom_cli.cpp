@@ -35,7 +35,7 @@ std::string Example(const std::string& file) {
 
 /// The lobes compile into CustomCache(); kiln finds them there through XDG_CACHE_HOME, set for
 /// this process (RunKiln's children inherit it).
-void UseTestCache() { setenv("XDG_CACHE_HOME", (CustomDir() + "/cache").c_str(), 1); }
+void UseTestCache() { setenv("XDG_CACHE_HOME", CacheHome().c_str(), 1); }
 
 }  // namespace
 

@@ -1,11 +1,13 @@
 // Custom models for the tests (baker/custom/): lobe sources written into one temp folder per
-// test process, compiled once into a cache there and shared by every test (compiling a lobe
+// test process, compiled once into a cache shared by every test of a ctest run (compiling a lobe
 // takes about a second), and the example lobes of examples/models.
 #pragma once
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
 
 #include "baker/custom/loader.h"
@@ -13,22 +15,50 @@
 
 namespace kiln::test {
 
-/// The folder of this process's lobe sources and compile cache.
+/// The folder of this process's lobe sources.
 inline const std::string& CustomDir() {
   static const std::string dir = [] {
     std::string d = "/tmp/kiln_test_custom_" + std::to_string(getpid());
     std::filesystem::remove_all(d);
-    std::filesystem::create_directories(d + "/cache");
+    std::filesystem::create_directories(d);
     return d;
   }();
   return dir;
 }
 
-/// The compile cache of CustomDir(); the CLI tests hand it to kiln as XDG_CACHE_HOME/kiln.
-inline std::string CustomCache() { return CustomDir() + "/cache/kiln"; }
+/// "PID_STARTTIME" of the ctest process that started this one, "" when the parent is not ctest.
+inline std::string CtestRunStamp() {
+  const std::string parent = "/proc/" + std::to_string(getppid());
+  std::ifstream comm(parent + "/comm");
+  std::string name;
+  if (!std::getline(comm, name) || name != "ctest") return "";
+  std::ifstream statFile(parent + "/stat");
+  std::string stat((std::istreambuf_iterator<char>(statFile)), std::istreambuf_iterator<char>());
+  const size_t close = stat.rfind(')');
+  if (close == std::string::npos) return "";
+  std::istringstream fields(stat.substr(close + 1));
+  std::string field;
+  for (int k = 3; k <= 22 && fields >> field; ++k) {  // field 22: the start time
+  }
+  return std::to_string(getppid()) + "_" + field;
+}
 
-/// "XDG_CACHE_HOME=... " for a kiln command line: the same cache as the in-process loads.
-inline std::string CustomCacheEnv() { return "XDG_CACHE_HOME=" + CustomDir() + "/cache "; }
+/// The folder whose kiln/ is the lobes' compile cache: one per ctest run, shared by its test
+/// processes (a lobe several tests load compiles once per run, not once per test), else this
+/// process's own. Sharing is safe: the cache is keyed by the source's bytes, the compiler and
+/// its flags (baker/custom/compiler.cpp), and a library enters it by rename.
+inline const std::string& CacheHome() {
+  static const std::string dir = [] {
+    const std::string run = CtestRunStamp();
+    std::string d = run.empty() ? CustomDir() + "/cache" : "/tmp/kiln_test_lobes_" + run;
+    std::filesystem::create_directories(d + "/kiln");
+    return d;
+  }();
+  return dir;
+}
+
+/// The compile cache of CacheHome(); the CLI tests hand it to kiln as XDG_CACHE_HOME/kiln.
+inline std::string CustomCache() { return CacheHome() + "/kiln"; }
 
 /// Writes `body` (after the ABI header and the required functions for `id`) to
 /// CustomDir()/NAME.cpp and returns its path. `eval` is the body of kiln_model_eval.

@@ -326,3 +326,37 @@ TEST_CASE("Integrals at the smallest subnormal mu return the mu = 0 value",
     }
   }
 }
+
+// RunKiln and RunKilnFor start kiln without a shell when the argument line holds only words and
+// quotes (kiln::test::SplitShellWords): the words must be exactly those /bin/sh passes, and every
+// line with something else the shell acts on must go through the shell.
+TEST_CASE("The argument lines the CLI tests run without a shell split into /bin/sh's words",
+          "[stress][hostile][cli]") {
+  ScratchDir dir("hostile_args_words");
+  const std::vector<std::string> lines = {
+      "eval --model ggx --mu-o 0.5",
+      "  two\tblanks   between\t\twords  ",
+      "bake --only '' --out " + Quote(dir / "a folder/with 'quotes'"),
+      "sample " + Quote("it's") + " -inf 0.3 -.5",
+      "a\"b c\"'d e'f \"\" g\\ h\\'i",
+      "unicode \xc3\xa9t\xc3\xa9 =x= -- --opt=value!",
+  };
+  for (const std::string& line : lines) {
+    std::vector<std::string> words;
+    INFO("line: " << line);
+    REQUIRE(kiln::test::SplitShellWords(line, words));
+    const std::string out = dir / "words";
+    const std::string cmd = "printf '%s\\0' " + line + " > " + out;
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::string expected;
+    for (const std::string& w : words) expected += w + '\0';
+    CHECK(kiln::test::ReadFile(out) == expected);
+  }
+  for (const std::string line :
+       {"a > b", "a 2>&1", "a | b", "a; b", "a && b", "$HOME", "a*", "a?", "[ab]", "~", "#c", "`x`",
+        "\"$x\"", "'open", "a\\", "a\nb", "{a,b}", "(a)"}) {
+    std::vector<std::string> words;
+    INFO("line: " << line);
+    CHECK_FALSE(kiln::test::SplitShellWords(line, words));
+  }
+}

@@ -160,28 +160,32 @@ inline void WriteFile(const std::string& path, const std::string& bytes) {
 }
 
 /// Runs `kiln ARGS` like test::RunKiln, killed (SIGKILL, reported as exit 137) after `seconds`:
-/// a hostile argument that makes kiln run on is a failure, not a hung test run.
-/// `shellPrefix` runs first in the same shell (e.g. "ulimit -v 1048576;").
+/// a hostile argument that makes kiln run on is a failure, not a hung test run. Directly
+/// (test::SpawnToFiles, its own process group killed at the limit) when ARGS holds only words
+/// and quotes, else through /bin/sh and `timeout -s KILL`. `shellPrefix` runs first in the same
+/// shell (e.g. "ulimit -v 1048576;"). A kiln ended by signal n reports 128 + n (or -1).
 inline test::CommandResult RunKilnFor(int seconds, const std::string& args,
                                       const std::string& shellPrefix = "") {
   static int counter = 0;
   std::string base =
       "/tmp/kiln_stress_run_" + std::to_string(getpid()) + "_" + std::to_string(counter++);
-  std::string cmd = shellPrefix + " timeout -s KILL " + std::to_string(seconds) + " " +
-                    std::string(KILN_BINARY) + " " + args + " </dev/null >" + base + ".out 2>" +
-                    base + ".err";
-  int status = std::system(cmd.c_str());
   test::CommandResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = test::ReadFile(base + ".out");
-  r.err = test::ReadFile(base + ".err");
-  std::remove((base + ".out").c_str());
-  std::remove((base + ".err").c_str());
+  std::vector<std::string> argv;
+  if (!shellPrefix.empty() || !test::SplitShellWords(args, argv) ||
+      (argv.insert(argv.begin(), KILN_BINARY),
+       !test::SpawnToFiles(argv, base, seconds, 128, r.exitCode))) {
+    std::string cmd = shellPrefix + " timeout -s KILL " + std::to_string(seconds) + " " +
+                      std::string(KILN_BINARY) + " " + args + " </dev/null >" + base + ".out 2>" +
+                      base + ".err";
+    int status = std::system(cmd.c_str());
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  test::TakeOutput(base, r);
   return r;
 }
 
 /// True when a CLI run answered like kiln should refuse something: a non-zero exit that is not a
-/// signal (RunKiln reports a signal as -1, the shell as 128 + n), nothing on stdout, and exactly
+/// signal (RunKiln reports a signal as -1, RunKilnFor as 128 + n), nothing on stdout, and exactly
 /// one line on stderr starting "kiln: error:" (a sanitizer report or an uncaught exception would
 /// be several lines, or none).
 inline bool IsCleanRefusal(const test::CommandResult& r, bool allowStdout = false) {

@@ -107,20 +107,21 @@ void DesignRow(const FitForm& form, const double* x, double* row) {
 
 /// One channel's coefficients by least squares, then `lawson` passes of Lawson's minimax
 /// reweighting (w_i <- w_i |r_i|, normalised); returns the coefficients of the pass with the
-/// smallest sample max and sets `maxError` to it.
+/// smallest sample max and sets `maxError` to it. `a` and `b` are scratch space of the design's
+/// and the samples' sizes.
 std::vector<double> FitChannel(const std::vector<double>& design, const Samples& s, size_t channel,
-                               size_t channels, int terms, int lawson, double& maxError) {
+                               size_t channels, int terms, int lawson, double& maxError,
+                               std::vector<double>& a, std::vector<double>& b) {
   const int rows = static_cast<int>(s.count);
   std::vector<double> w(rows, 1.0 / rows), best;
   maxError = INFINITY;
   for (int pass = 0; pass <= lawson; ++pass) {
-    std::vector<double> a(design.size()), b(rows);
     for (int i = 0; i < rows; ++i) {
       const double sw = std::sqrt(w[i]);
       for (int j = 0; j < terms; ++j) a[i * terms + j] = sw * design[i * terms + j];
       b[i] = sw * s.values[i * channels + channel];
     }
-    std::vector<double> c = SolveLeastSquares(std::move(a), std::move(b), rows, terms);
+    std::vector<double> c = SolveLeastSquaresInPlace(a, b, rows, terms);
     double mx = 0, sum = 0;
     std::vector<double> r(rows);
     for (int i = 0; i < rows; ++i) {
@@ -147,10 +148,11 @@ double FitCoefficients(FitForm& form, const Samples& s, int lawson) {
   std::vector<double> design(s.count * terms);
   for (size_t i = 0; i < s.count; ++i) DesignRow(form, &s.x[i * dims], &design[i * terms]);
   form.coefficients.clear();
+  std::vector<double> a(design.size()), b(s.count);  // every channel's and pass's scratch
   double mx = 0;
   for (size_t c = 0; c < channels; ++c) {
     double e = 0;
-    for (double v : FitChannel(design, s, c, channels, terms, lawson, e))
+    for (double v : FitChannel(design, s, c, channels, terms, lawson, e, a, b))
       form.coefficients.push_back(static_cast<float>(v));
     mx = std::max(mx, e);
   }

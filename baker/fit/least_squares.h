@@ -11,4 +11,9 @@ namespace kiln {
 std::vector<double> SolveLeastSquares(std::vector<double> a, std::vector<double> b, int rows,
                                       int cols);
 
+/// SolveLeastSquares working in the caller's `a` and `b` (left holding R and Q^T b): the same
+/// bits, without a copy of A per solve when a caller solves many systems of one size.
+std::vector<double> SolveLeastSquaresInPlace(std::vector<double>& a, std::vector<double>& b,
+                                             int rows, int cols);
+
 }  // namespace kiln

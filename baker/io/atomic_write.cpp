@@ -62,7 +62,7 @@ std::string FileNameOf(const std::string& path) { return path.substr(path.find_l
 constexpr int kSlots = 64;
 struct Slot {
   std::atomic<int> state{0};  // 0 free, 1 being filled, 2 registered
-  char path[PATH_MAX];
+  char path[PATH_MAX] = {};   // with the atomic's {0}: constant-initialised, no start-up code
 };
 Slot g_slots[kSlots];
 

@@ -274,7 +274,10 @@ HeaderFacts checkHeader(const std::string& path) {
   if ((start[5] & 0x18) != 0)
     throw Refusal("a multi-part or deep OpenEXR file; kiln tables are single-part scanline files");
   const std::size_t maxName = (start[5] & 0x04) != 0 ? 255 : 31;  // bit 10: long names
-  auto position = [&] { return static_cast<std::int64_t>(in.tellg()); };
+  // The offset of the next byte, counted here: tellg() would ask the system (lseek) at every
+  // byte of every name. The stream never fails between two reads of it (a failed read throws).
+  std::int64_t offset = 8;
+  auto position = [&] { return offset; };
   // Reads a \0-terminated string of at most maxName characters, within `limit` bytes of the
   // file; false at an empty one.
   auto readName = [&](std::string& name, const char* what, std::int64_t limit) {
@@ -284,6 +287,7 @@ HeaderFacts checkHeader(const std::string& path) {
       const int ch = in.get();
       if (ch == std::ifstream::traits_type::eof())
         throw Refusal(corrupt + "inside an attribute " + what);
+      ++offset;
       if (ch == 0) return !name.empty();
       if (name.size() >= maxName)
         throw Refusal(corrupt + "an attribute " + what + " longer than " + std::to_string(maxName) +
@@ -293,6 +297,7 @@ HeaderFacts checkHeader(const std::string& path) {
   };
   auto readBytes = [&](unsigned char* out, std::int64_t n, const std::string& where) {
     if (!in.read(reinterpret_cast<char*>(out), n)) throw Refusal(corrupt + "inside " + where);
+    offset += n;
   };
 
   HeaderFacts facts;
@@ -349,6 +354,7 @@ HeaderFacts checkHeader(const std::string& path) {
                         " bytes, the attribute has " + std::to_string(valueEnd - position()) +
                         " left");
         in.seekg(length, std::ios::cur);
+        offset += length;
       }
     } else if (type == "preview") {
       if (size < 8) throw Refusal(corrupt + where + " declares " + std::to_string(size) + " bytes");
@@ -377,6 +383,7 @@ HeaderFacts checkHeader(const std::string& path) {
     }
     in.clear();
     in.seekg(valueEnd, std::ios::beg);
+    offset = valueEnd;
   }
   facts.headerEnd = position();
   if (facts.headerEnd > kMaxHeaderBytes)
