@@ -28,7 +28,7 @@ constexpr double kCos[8] = {
 }  // namespace sincos_detail
 
 /// sin(phi) and cos(phi) for phi in [0, pi] (every azimuth the adaptive references visit), within
-/// 2 ulp of std::sin and std::cos there, and within a few ulp on (-pi/4, 5pi/4), which covers a
+/// 2 ulp of std::sin and std::cos there and on all of (-pi/4, 5pi/4), whose slack covers a
 /// Gauss-Kronrod node rounded past an end (tests/math_sincos_half_turn.cpp); outside that range,
 /// and for NaN, it is std::sin and std::cos. phi is reduced to x = phi - k pi/2 in [-pi/4, pi/4]
 /// with pi/2 in two parts (phi - k HalfPi is exact there, Sterbenz), so a result near 0 (phi
