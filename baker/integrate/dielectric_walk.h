@@ -20,6 +20,7 @@
 
 #include "baker/integrate/hemisphere.h"
 #include "baker/math/quadrature.h"
+#include "baker/math/sincos_half_turn.h"
 #include "baker/models/microfacet.h"
 
 namespace kiln {
@@ -238,7 +239,7 @@ Channels<2> AdaptiveWalk(const Problem& p, const IntegrationOptions& opt, Integr
       double dj;
       const double phi = Smooth(phis[k], phis[k + 1], y - k, &dj);
       ++stats.evals;
-      return dj * p.Integrand(h, std::cos(phi));
+      return dj * p.Integrand(h, SinCosHalfTurn(phi).cos);
     };
     double ys[kMaxPhiBreaks];
     for (int k = 0; k < np; ++k) ys[k] = k;

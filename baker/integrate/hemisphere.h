@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "baker/math/quadrature.h"
+#include "baker/math/sincos_half_turn.h"
 #include "baker/models/brdf.h"
 #include "baker/models/specular.h"
 
@@ -121,7 +122,7 @@ Channels<N> IntegrateLightSpaceAbsolute(double mu_o, G&& g, const IntegrationOpt
     }
     auto inner = [&](double phi) -> Channels<N> {
       ++stats.evals;
-      return g(wo, SphericalDirection(sinT, cosT, phi));
+      return g(wo, SphericalDirectionHalfTurn(sinT, cosT, phi));
     };
     double e = 0;
     Channels<N> r =
@@ -248,7 +249,7 @@ Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights
       ++stats.evals;
       HalfSample s;
       s.wo = wo;
-      s.wm = SphericalDirection(h.sinTheta, h.cosTheta, phi);
+      s.wm = SphericalDirectionHalfTurn(h.sinTheta, h.cosTheta, phi);
       s.oh = Dot(wo, s.wm);
       s.cosTheta_h = h.cosTheta;
       s.mu_o = mu_o;
