@@ -361,30 +361,22 @@ std::array<double, 2> DielectricAlbedoAverage(double alpha, double eta, double t
 
 namespace {
 
+/// An adaptive average: E_avg, the evaluations and the error estimate its integration had.
+struct AdaptiveAverageValue {
+  std::array<double, 2> e{};
+  long long evals = 0;
+  double errorEstimate = 0;
+};
+
 /// The adaptive averages integrated so far (at most kAdaptiveMemoSize, then forgotten), by the
 /// bits of (alpha, eta, outer, inner, graded): each gives both channels, so the r and t kinds at
 /// one point (EvaluateSpec: one channel each) take one integration, seconds of one core.
-class AdaptiveAverageMemo {
+class AdaptiveAverageMemo : public DielectricBitsMap<AdaptiveAverageValue> {
  public:
-  struct Value {
-    std::array<double, 2> e{};
-    long long evals = 0;
-    double errorEstimate = 0;
-  };
-  using Key = std::array<std::uint64_t, 5>;
+  using Value = AdaptiveAverageValue;
   static Key KeyOf(double alpha, double eta, const NestedAverageTolerance& tol) {
-    const double parts[4] = {alpha, eta, tol.outer, tol.inner};
-    Key key{};
-    std::memcpy(key.data(), parts, sizeof parts);
-    key[4] = tol.gradedByWeight ? 1 : 0;
-    return key;
-  }
-  bool Find(const Key& key, Value& v) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    auto it = map_.find(key);
-    if (it == map_.end()) return false;
-    v = it->second;
-    return true;
+    const double split[3] = {tol.outer, tol.inner, tol.gradedByWeight ? 1.0 : 0.0};
+    return DielectricBitsMap::KeyOf(alpha, eta, split, 3);
   }
   void Keep(const Key& key, const Value& v) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -394,8 +386,6 @@ class AdaptiveAverageMemo {
 
  private:
   static constexpr size_t kAdaptiveMemoSize = 4096;
-  std::mutex mutex_;
-  std::map<Key, Value> map_;
 };
 
 /// DielectricAlbedoAverage's integration itself: E_avg, its evaluations and error estimate.
