@@ -4,23 +4,35 @@
 #pragma once
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <system_error>
 
 #include "baker/custom/loader.h"
 #include "baker/models/registry.h"
 
 namespace kiln::test {
 
-/// The folder of this process's lobe sources.
+/// The folder of this process's lobe sources (and, outside ctest, its compile cache).
+inline std::string CustomDirPath() { return "/tmp/kiln_test_custom_" + std::to_string(getpid()); }
+
+/// Removes CustomDirPath() when the process exits (std::atexit), so that runs leave no folder.
+inline void RemoveCustomDir() {
+  std::error_code ignored;
+  std::filesystem::remove_all(CustomDirPath(), ignored);
+}
+
+/// The folder of this process's lobe sources, made on first use and removed at exit.
 inline const std::string& CustomDir() {
   static const std::string dir = [] {
-    std::string d = "/tmp/kiln_test_custom_" + std::to_string(getpid());
+    std::string d = CustomDirPath();
     std::filesystem::remove_all(d);
     std::filesystem::create_directories(d);
+    std::atexit(RemoveCustomDir);
     return d;
   }();
   return dir;
