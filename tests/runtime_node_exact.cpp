@@ -26,13 +26,16 @@ using test::Bits;
 /// The nodes of v that a lookup reaches, dims values each, and their (i0, i1, i2).
 void ReachableNodes(const LutView& v, std::vector<double>& xs, std::vector<int>& ids) {
   const int n0 = v.size(0), n1 = v.size(1), n2 = v.size(2);
+  const size_t nodes = static_cast<size_t>(n0) * n1 * n2;
+  xs.reserve(nodes * static_cast<size_t>(v.dims));
+  ids.reserve(nodes * 3);
+  std::vector<double> row(static_cast<size_t>(n0));
   for (int i2 = 0; i2 < n2; ++i2)
     for (int i1 = 0; i1 < n1; ++i1) {
       double x[3] = {0.0, v.dims >= 2 ? v.axis[1].node(i1) : 0.0,
                      v.dims >= 3 ? v.axis[2].node(i2) : 0.0};
       const double c = v.layerScaleAt(x), split = v.splitAt(x);
       const Axis& a = v.axis[0];
-      std::vector<double> row(static_cast<size_t>(n0));
       for (int i0 = 0; i0 < n0; ++i0) row[i0] = a.node(i0, c, split);
       for (int i0 = 0; i0 < n0; ++i0) {
         x[0] = row[i0];
