@@ -10,12 +10,12 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "baker/integrate/fixed_rule_sheen.h"
 #include "baker/integrate/quantities.h"
 #include "baker/models/sheen.h"
+#include "fresh_thread_memo.h"
 #include "grid_sample.h"
 
 using namespace kiln;
@@ -181,32 +181,21 @@ TEST_CASE(
     double e;
     long long evals;
   };
-  auto run = [&](bool reversed) {
-    std::vector<Got> out;
-    std::thread worker([&] {  // a fresh thread: a cold memo
-      for (size_t k = 0; k < mus.size(); ++k) {
-        const double mu = mus[reversed ? mus.size() - 1 - k : k];
-        for (const char* name : models)
-          for (double r : {0.2, 0.9})
-            for (const SheenRuleOptions& opt : counts) {
-              long long e = 0;
-              const double v = FixedRuleSheenAlbedo(Sheen(name, r), mu, opt, &e);
-              out.push_back({v, e});
-            }
-      }
-    });
-    worker.join();
-    return out;
+  auto cases = [&](double mu, std::vector<Got>& out) {
+    for (const char* name : models)
+      for (double r : {0.2, 0.9})
+        for (const SheenRuleOptions& opt : counts) {
+          long long e = 0;
+          const double v = FixedRuleSheenAlbedo(Sheen(name, r), mu, opt, &e);
+          out.push_back({v, e});
+        }
   };
-  const std::vector<Got> forward = run(false), backward = run(true);
   const size_t per = std::size(models) * 2 * std::size(counts);
-  REQUIRE(forward.size() == mus.size() * per);
-  for (size_t k = 0; k < mus.size(); ++k)
-    for (size_t i = 0; i < per; ++i) {
-      INFO("mu " << mus[k] << " case " << i);
-      CHECK(forward[k * per + i].e == backward[(mus.size() - 1 - k) * per + i].e);
-      CHECK(forward[k * per + i].evals == backward[(mus.size() - 1 - k) * per + i].evals);
-    }
+  const std::vector<Got> forward =
+      test::RequireSameInEitherOrder<Got>(mus, per, cases, [](const Got& a, const Got& b) {
+        CHECK(a.e == b.e);
+        CHECK(a.evals == b.evals);
+      });
   // The node counts reach the result (the memo keys on them): the search's differ from the bake's.
   CHECK(forward[2 * per].evals != forward[2 * per + 1].evals);
 }
