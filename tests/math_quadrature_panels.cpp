@@ -61,3 +61,43 @@ TEST_CASE("IntegrateAdaptive past its inline panels integrates to its tolerance"
   CHECK(err <= 1e-10);
   CHECK(std::abs(got - std::sin(2000.0) / 100) <= 1e-10);
 }
+
+namespace {
+/// An integrand that takes a panel's nodes at once, counting its calls of either kind.
+struct NodesAtOnce {
+  int single = 0, batches = 0;
+  Channels<2> operator()(double x) {
+    ++single;
+    return {std::exp(-3 * x) * std::sin(7 * x), 1 / (1 + 25 * x * x)};
+  }
+  void EvaluateNodes(const double* x, int n, Channels<2>* out) {
+    ++batches;
+    for (int i = 0; i < n; ++i)
+      out[i] = {std::exp(-3 * x[i]) * std::sin(7 * x[i]), 1 / (1 + 25 * x[i] * x[i])};
+  }
+};
+}  // namespace
+
+TEST_CASE("an integrand with EvaluateNodes gets each panel's 15 nodes in one call, the same bits",
+          "[math][quadrature]") {
+  const double breaks[3] = {-1, 0.25, 2};
+  NodesAtOnce batched;
+  auto single = [](double x) -> Channels<2> {
+    return {std::exp(-3 * x) * std::sin(7 * x), 1 / (1 + 25 * x * x)};
+  };
+  static_assert(EvaluatesNodes<NodesAtOnce, 2>::value);
+  static_assert(!EvaluatesNodes<decltype(single), 2>::value);
+  double errBatched = 0, errSingle = 0;
+  const Channels<2> a = IntegrateAdaptive<2>(batched, breaks, 3, 1e-12, 200, &errBatched);
+  const Channels<2> b = IntegrateAdaptive<2>(single, breaks, 3, 1e-12, 200, &errSingle);
+  CHECK(batched.single == 0);
+  CHECK(batched.batches > 2);  // bisected past its first two panels
+  CHECK(a[0] == b[0]);
+  CHECK(a[1] == b[1]);
+  CHECK(errBatched == errSingle);
+  double x[15];
+  GaussKronrod15Nodes(0.5, 1.5, x);
+  CHECK(x[7] == 1.0);
+  for (int j = 0; j < 14; ++j) CHECK(x[j] < x[j + 1]);
+  CHECK(x[0] == 1.0 - 0.5 * gk15::xgk[0]);
+}

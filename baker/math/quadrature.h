@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "baker/math/constants.h"
@@ -89,16 +91,40 @@ constexpr double wg[4] = {0.129484966168869693270611432679082, 0.279705391489276
 /// std::min(1.0, std::pow(r, 1.5)).
 inline double ErrorScale(double r) { return r < 1 ? r * std::sqrt(r) : 1.0; }
 
+/// The 15 nodes of a Gauss-Kronrod panel on [a, b], ascending: x[7] the centre, x[j] and x[14 -
+/// j] the centre -+ half-width xgk[j].
+inline void GaussKronrod15Nodes(double a, double b, double x[15]) {
+  const double centre = 0.5 * (a + b), half = 0.5 * (b - a);
+  x[7] = centre;
+  for (int j = 0; j < 7; ++j) {
+    x[j] = centre - half * gk15::xgk[j];
+    x[14 - j] = centre + half * gk15::xgk[j];
+  }
+}
+
+/// Whether integrand F evaluates a panel's nodes at once: `f.EvaluateNodes(x, n, out)` writes
+/// out[i] = f(x[i]) for i < n (so it must give f's values, whatever lanes it computes them in).
+template <class F, int N, class = void>
+struct EvaluatesNodes : std::false_type {};
+template <class F, int N>
+struct EvaluatesNodes<F, N,
+                      std::void_t<decltype(std::declval<F&>().EvaluateNodes(
+                          std::declval<const double*>(), 0, std::declval<Channels<N>*>()))>>
+    : std::true_type {};
+
 /// One Gauss-Kronrod 7-15 panel on [a, b]: the Kronrod estimate and QUADPACK's error estimate
-/// (|K15 - G7| rescaled by the integrand's spread, max over channels).
+/// (|K15 - G7| rescaled by the integrand's spread, max over channels). An integrand with
+/// EvaluateNodes (EvaluatesNodes) gets the panel's 15 nodes in one call.
 template <int N, class F>
 Channels<N> GaussKronrod15(F& f, double a, double b, double& err) {
-  double centre = 0.5 * (a + b), half = 0.5 * (b - a);
+  const double half = 0.5 * (b - a);
+  double x[15];
+  GaussKronrod15Nodes(a, b, x);
   Channels<N> fv[15];
-  fv[7] = f(centre);
-  for (int j = 0; j < 7; ++j) {
-    fv[j] = f(centre - half * gk15::xgk[j]);
-    fv[14 - j] = f(centre + half * gk15::xgk[j]);
+  if constexpr (EvaluatesNodes<F, N>::value) {
+    f.EvaluateNodes(x, 15, fv);
+  } else {
+    for (int j = 0; j < 15; ++j) fv[j] = f(x[j]);
   }
   // Channels innermost (each channel's sums in the order of the scalar rule: the same bits), so
   // that the compiler can take the channels together.
