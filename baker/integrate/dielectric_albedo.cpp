@@ -112,6 +112,7 @@
 #include <string>
 #include <vector>
 
+#include "baker/integrate/dielectric_adaptive_nodes.h"
 #include "baker/integrate/dielectric_column_memo.h"
 #include "baker/integrate/dielectric_btdf.h"
 #include "baker/integrate/dielectric_exit_breaks.h"
@@ -153,6 +154,9 @@ struct View {
   int ThetaBreaks(double* thetas) const;
   int PhiBreaks(PolarParam h, double* phis) const;
   Channels<2> Integrand(PolarParam h, double cp) const;
+  struct AdaptiveRing;
+  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes).
+  AdaptiveRing RingOf(PolarParam h) const;
 };
 
 View MakeView(double mu, double alpha, double eta) {
@@ -191,6 +195,36 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
     if (muT > 0) out[1] = base * (1 - F) / (v.gDen + v.mu * (v.dist.MuLambda(muT) / muT));
   }
   return out;
+}
+
+/// A ring of the adaptive walk (dielectric_walk::AdaptiveWalk): a panel's nodes in AVX-512F
+/// lanes where dielectric_simd::Enabled() (dielectric_adaptive::AlbedoNodes, the ring's
+/// constants once), else by Integrand one node at a time: the same bits.
+struct View::AdaptiveRing {
+  const View& v;
+  PolarParam h;
+  bool simd;
+  dielectric_adaptive::AlbedoRing lanes;
+  void Nodes(const double* y, const double* phis, int np, int n, Channels<2>* out) const {
+    if (simd) {
+      dielectric_adaptive::AlbedoNodes(lanes, y, phis, np, n, out);
+      return;
+    }
+    for (int i = 0; i < n; ++i) {
+      double dj;
+      const double phi = dielectric_walk::RingAzimuth(phis, np, y[i], &dj);
+      out[i] = dj * v.Integrand(h, SinCosHalfTurn(phi).cos);
+    }
+  }
+};
+
+View::AdaptiveRing View::RingOf(PolarParam h) const {
+  const double a2 = dist.alpha * dist.alpha, eta2 = eta * eta;
+  return {*this,
+          h,
+          dielectric_simd::Enabled(),
+          {mu * h.cosTheta, st * h.sinTheta, h.cosTheta, mu, gDen, a2, eta, eta2m1, eta2, eta2 + 1,
+           -mu / eta}};
 }
 
 /// The bake rule's problem off the columns (eta < kDielectricTableEtaMin: the exit side, and
@@ -784,6 +818,13 @@ std::array<double, 2> DielectricAlbedo(double mu, double alpha, double eta,
                                        const IntegrationOptions& opt, IntegrationStats& stats) {
   const Channels<2> r = dielectric_walk::AdaptiveWalk(MakeView(mu, alpha, eta), opt, stats);
   return {r[0], r[1]};
+}
+
+void dielectric_adaptive::AlbedoRingNodes(double mu, double alpha, double eta, PolarParam h,
+                                          const double* y, const double* phis, int np, int n,
+                                          Channels<2>* out) {
+  const View v = MakeView(mu, alpha, eta);
+  v.RingOf(h).Nodes(y, phis, np, n, out);
 }
 
 DielectricRuleOptions TunedDielectricRuleOptions() { return kTuned; }

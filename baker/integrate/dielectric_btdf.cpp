@@ -48,6 +48,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "baker/integrate/dielectric_adaptive_nodes.h"
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_column_memo.h"
 #include "baker/integrate/dielectric_lanes.h"
@@ -72,6 +73,9 @@ struct BtdfView {
   int ThetaBreaks(double* thetas) const;
   int PhiBreaks(PolarParam h, double* phis) const;
   Channels<2> Integrand(PolarParam h, double cp) const;
+  struct AdaptiveRing;
+  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes).
+  AdaptiveRing RingOf(PolarParam h) const;
 };
 
 BtdfView MakeBtdfView(double mu, double alpha, double eta) {
@@ -164,6 +168,36 @@ int BtdfView::ThetaBreaks(double* thetas) const { return BtdfThetaBreaks(*this, 
 int BtdfView::PhiBreaks(PolarParam h, double* phis) const { return BtdfPhiBreaks(*this, h, phis); }
 Channels<2> BtdfView::Integrand(PolarParam h, double cp) const {
   return BtdfIntegrand(*this, h, cp);
+}
+
+/// A ring of the adaptive walk (dielectric_walk::AdaptiveWalk): a panel's nodes in AVX-512F
+/// lanes where dielectric_simd::Enabled() (dielectric_adaptive::BtdfNodes, the ring's constants
+/// once), else by BtdfIntegrand one node at a time: the same bits.
+struct BtdfView::AdaptiveRing {
+  const BtdfView& v;
+  PolarParam h;
+  bool simd;
+  dielectric_adaptive::BtdfRing lanes;
+  void Nodes(const double* y, const double* phis, int np, int n, Channels<2>* out) const {
+    if (simd) {
+      dielectric_adaptive::BtdfNodes(lanes, y, phis, np, n, out);
+      return;
+    }
+    for (int i = 0; i < n; ++i) {
+      double dj;
+      const double phi = dielectric_walk::RingAzimuth(phis, np, y[i], &dj);
+      out[i] = dj * v.Integrand(h, SinCosHalfTurn(phi).cos);
+    }
+  }
+};
+
+BtdfView::AdaptiveRing BtdfView::RingOf(PolarParam h) const {
+  const double a2 = dist.alpha * dist.alpha, eta2 = eta * eta;
+  return {*this,
+          h,
+          dielectric_simd::Enabled(),
+          {mu * h.cosTheta, st * h.sinTheta, h.cosTheta, mu, gDen, a2, eta, eta2m1, eta2, eta2 + 1,
+           mu / eta}};
 }
 
 /// The bake's node counts: the E tables' weight classes (dielectric_walk.h) with 12, 8, 4, 2
@@ -288,6 +322,13 @@ std::array<double, 2> DielectricBtdfPair(double mu, double alpha, double eta,
                                          const IntegrationOptions& opt, IntegrationStats& stats) {
   const Channels<2> r = dielectric_walk::AdaptiveWalk(MakeBtdfView(mu, alpha, eta), opt, stats);
   return {r[0], r[1]};
+}
+
+void dielectric_adaptive::BtdfRingNodes(double mu, double alpha, double eta, PolarParam h,
+                                        const double* y, const double* phis, int np, int n,
+                                        Channels<2>* out) {
+  const BtdfView v = MakeBtdfView(mu, alpha, eta);
+  v.RingOf(h).Nodes(y, phis, np, n, out);
 }
 
 DielectricBtdfRuleOptions TunedDielectricBtdfRuleOptions() { return kTuned; }

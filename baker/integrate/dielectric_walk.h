@@ -17,6 +17,8 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
+#include <utility>
 
 #include "baker/integrate/hemisphere.h"
 #include "baker/math/quadrature.h"
@@ -214,9 +216,57 @@ Channels<2> FixedWalk(const Problem& p, const NodeClasses& rule, long long* eval
   return s.sum;
 }
 
+/// The azimuth at AdaptiveWalk's inner variable y of a ring with boundaries phis[0 .. np - 1]
+/// (np >= 2): y's panel k = [k, k + 1] smoothstep-mapped onto [phis[k], phis[k + 1]]; *dj gets
+/// the Jacobian.
+inline double RingAzimuth(const double* phis, int np, double y, double* dj) {
+  const int k = std::min(static_cast<int>(y), np - 2);
+  return Smooth(phis[k], phis[k + 1], y - k, dj);
+}
+
+/// Whether Problem evaluates a ring's azimuth nodes together: p.RingOf(h) returns an object
+/// whose Nodes(y, phis, np, n, out) writes, for i < n, out[i] = dj * p.Integrand(h,
+/// SinCosHalfTurn(phi).cos) with phi = RingAzimuth(phis, np, y[i], &dj) (those bits; the ring's
+/// constants computed once).
+template <class P, class = void>
+struct HasRingNodes : std::false_type {};
+template <class P>
+struct HasRingNodes<P, std::void_t<decltype(std::declval<const P&>().RingOf(PolarParam{}))>>
+    : std::true_type {};
+
+/// AdaptiveWalk's inner integrand on the ring h: y in [0, np - 1], its panel k = [k, k + 1]
+/// smoothstep-mapped onto the azimuths [phis[k], phis[k + 1]]; dj times the problem's
+/// Integrand, counted in stats.evals.
+template <class Problem>
+struct CircleIntegrand {
+  const Problem& p;
+  PolarParam h;
+  const double* phis;
+  int np;
+  IntegrationStats& stats;
+  Channels<2> operator()(double y) const {
+    double dj;
+    const double phi = RingAzimuth(phis, np, y, &dj);
+    ++stats.evals;
+    return dj * p.Integrand(h, SinCosHalfTurn(phi).cos);
+  }
+};
+
+/// CircleIntegrand with a Gauss-Kronrod panel's nodes at once (quadrature.h, EvaluateNodes) by
+/// the ring's Nodes (HasRingNodes): the same values.
+template <class Problem, class Ring>
+struct CircleNodes : CircleIntegrand<Problem> {
+  Ring ring;
+  void EvaluateNodes(const double* y, int n, Channels<2>* out) const {
+    this->stats.evals += n;
+    ring.Nodes(y, this->phis, this->np, n, out);
+  }
+};
+
 /// The integral by adaptive Gauss-Kronrod on the same panels: outer to opt.tol / 2, each circle
 /// to a tenth of opt.tol scaled by the circle's weight in the outer rule. stats.evals
-/// accumulates the evaluations, stats.errorEstimate gets the outer rule's estimate.
+/// accumulates the evaluations, stats.errorEstimate gets the outer rule's estimate. A problem
+/// with RingOf (HasRingNodes) has each inner panel's 15 nodes evaluated in one call.
 template <class Problem>
 Channels<2> AdaptiveWalk(const Problem& p, const IntegrationOptions& opt, IntegrationStats& stats) {
   double vs[kMaxThetaBreaks];
@@ -234,18 +284,17 @@ Channels<2> AdaptiveWalk(const Problem& p, const IntegrationOptions& opt, Integr
     double phis[kMaxPhiBreaks];
     const int np = p.PhiBreaks(h, phis);
     if (np < 2) return Channels<2>{};
-    auto f = [&](double y) -> Channels<2> {
-      const int k = std::min(static_cast<int>(y), np - 2);
-      double dj;
-      const double phi = Smooth(phis[k], phis[k + 1], y - k, &dj);
-      ++stats.evals;
-      return dj * p.Integrand(h, SinCosHalfTurn(phi).cos);
-    };
     double ys[kMaxPhiBreaks];
     for (int k = 0; k < np; ++k) ys[k] = k;
     // The outer rule weighs this by jac / pi: a circle of tiny weight needs less precision.
     const double tolHere = innerTol * Pi / (jac * panels);
-    return (jac / Pi) * IntegrateAdaptive<2>(f, ys, np, tolHere, opt.maxPanels);
+    const CircleIntegrand<Problem> inner{p, h, phis, np, stats};
+    if constexpr (HasRingNodes<Problem>::value) {
+      CircleNodes<Problem, decltype(p.RingOf(h))> f{inner, p.RingOf(h)};
+      return (jac / Pi) * IntegrateAdaptive<2>(f, ys, np, tolHere, opt.maxPanels);
+    } else {
+      return (jac / Pi) * IntegrateAdaptive<2>(inner, ys, np, tolHere, opt.maxPanels);
+    }
   };
   double xs[kMaxThetaBreaks];
   for (int i = 0; i <= panels; ++i) xs[i] = i;
