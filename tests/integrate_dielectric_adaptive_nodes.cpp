@@ -129,7 +129,7 @@ TEST_CASE("the glass adaptive references' nodes in lanes are the scalar integran
           CheckRing(dielectric_adaptive::AlbedoRingNodes, mu, alpha, eta, h, &nodes);
           if (eta >= 1) CheckRing(dielectric_adaptive::BtdfRingNodes, mu, alpha, eta, h, &nodes);
         }
-  CHECK(nodes > 1000000);
+  CHECK(nodes > 3000000);
 }
 
 TEST_CASE("the glass adaptive references keep the scalar walk's values, estimates and counts",

@@ -26,7 +26,9 @@
 // the refracted horizon). Every panel maps t in [0, 1] through the smoothstep 3t^2 - 2t^3, which
 // turns the square-root and x^(3/2) behaviour at the thresholds (and the cos_m^-1 ~ v^(-1/2) of
 // the tail) into analytic functions of t: Gauss converges fast on each panel.
-// The adaptive rule bisects those panels (Gauss-Kronrod 15, to the tolerance).
+// The adaptive rule bisects those panels (Gauss-Kronrod 15, to the tolerance), a panel's 15
+// azimuth nodes in one call: in AVX-512F lanes where the CPU has them, with this file's scalar
+// Integrand's bits (View::RingOf, dielectric_adaptive_nodes.h).
 // The fixed rule (the bake's) takes the same panels, with two changes that cut its evaluations
 // per point fourfold (27,000 -> 6,700 on the tuning grid, kTuned below):
 //  - Gauss nodes per panel by weight class, not one count for all. An outer panel [v_a, v_b]
