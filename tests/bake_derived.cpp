@@ -88,5 +88,6 @@ TEST_CASE("kiln bake derives an albedo after its dfg, and writes the bytes a bak
   std::string manifest = ReadFile(both + "/manifest.json");
   CHECK(manifest.find("\"texels_from\": \"beckmann-dfg\"") != std::string::npos);
   CHECK(ReadFile(alone + "/manifest.json").find("texels_from") == std::string::npos);
-  std::system(("rm -rf " + both + " " + alone).c_str());
+  RemoveTree(both);
+  RemoveTree(alone);
 }

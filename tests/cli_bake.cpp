@@ -5,15 +5,9 @@
 #include "cli_util.h"
 
 using kiln::test::ReadFile;
+using kiln::test::RemoveTree;
 using kiln::test::RunKiln;
-
-namespace {
-std::string TempDir(const char* tag) {
-  std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());
-  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
-  return dir;
-}
-}  // namespace
+using kiln::test::TempDir;
 
 TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not on a terminal",
           "[cli][bake]") {
@@ -35,7 +29,7 @@ TEST_CASE("kiln bake --only writes the tables and a manifest, silently when not 
   auto inspect = RunKiln("inspect " + dir + "/fresnel-dielectric.exr");
   CHECK(inspect.exitCode == 0);
   CHECK(inspect.out.find("axis 1          eta [1, 3] 5 nodes, sqrt warp") != std::string::npos);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("kiln bake refuses bad arguments with one line", "[cli][bake]") {
@@ -63,5 +57,5 @@ TEST_CASE("The committed luts/ are what the bake command makes, bit for bit (che
     REQUIRE(!committed.empty());
     CHECK(ReadFile(dir + "/" + n + ".exr") == committed);
   }
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }

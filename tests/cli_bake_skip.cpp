@@ -9,15 +9,11 @@
 #include "cli_util.h"
 
 using kiln::test::ReadFile;
+using kiln::test::RemoveTree;
 using kiln::test::RunKiln;
+using kiln::test::TempDir;
 
 namespace {
-
-std::string TempDir(const char* tag) {
-  std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());
-  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
-  return dir;
-}
 
 /// The file's inode and modification time: a rename of a new file changes the inode, a write
 /// the time.
@@ -81,7 +77,7 @@ TEST_CASE("kiln bake skips up-to-date catalogue tables and --force rebakes them"
   CHECK(Has(forced.err, "2 baked, 0 skipped"));
   CHECK(Identity(exr) != id);
   CHECK(ReadFile(exr) == bytes);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("kiln bake rebakes a table whose file or manifest entry is not what it would write",
@@ -116,7 +112,7 @@ TEST_CASE("kiln bake rebakes a table whose file or manifest entry is not what it
   CHECK(Has(header.err, "skipped fresnel-dielectric-avg "));
   CHECK(Has(header.err, "up to date (header written)"));
   CHECK(!ReadFile(dir + "/fresnel-dielectric-avg.h").empty());
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("kiln bake --scene reports on stderr, --quiet silences it", "[cli][bake][skip]") {
@@ -135,7 +131,7 @@ TEST_CASE("kiln bake --scene reports on stderr, --quiet silences it", "[cli][bak
   CHECK(forced.exitCode == 0);
   CHECK(forced.err.empty());
   CHECK(forced.out.empty());
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("On a terminal the bar is drawn on stderr, and --quiet prints nothing there either",
@@ -159,5 +155,6 @@ TEST_CASE("On a terminal the bar is drawn on stderr, and --quiet prints nothing 
   CHECK(Has(shown, "1 baked, 0 skipped"));
   std::string quiet = onTerminal("--quiet --force --only lambert-albedo --size 4 -j 1");
   CHECK(quiet.empty());
-  std::system(("rm -rf " + dir + " " + log).c_str());
+  RemoveTree(dir);
+  RemoveTree(log);
 }

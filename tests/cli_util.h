@@ -36,6 +36,13 @@ inline std::string ReadFile(const std::string& path) {
   return ss.str();
 }
 
+/// Removes `path` and everything under it, as `rm -rf` does: a missing path or one that cannot be
+/// removed is no error (the test's own checks say what matters), and no shell is started.
+inline void RemoveTree(const std::string& path) {
+  std::error_code ignored;
+  std::filesystem::remove_all(path, ignored);
+}
+
 /// A fresh, empty folder /tmp/kiln_test_TAG_PID for one test (removed first if it exists).
 inline std::string TempDir(const char* tag) {
   std::string dir = "/tmp/kiln_test_" + std::string(tag) + "_" + std::to_string(getpid());

@@ -51,6 +51,15 @@ if(KILN_CXX_LAUNCHER)
     set(ENV{CCACHE_BASEDIR} "${KILN_BUILD_DIR}")
   endif()
 endif()
+# The generator of the downstream builds: Ninja where it is installed (a build starts ninja and
+# the compilers; Unix Makefiles start a make per target and a cmake per step besides), else the
+# platform's default. The claims hold for either: kiln_bake()'s step runs when its stamp is
+# missing and not when nothing changed, whatever runs it.
+set(generator "")
+find_program(KILN_DOWNSTREAM_NINJA ninja)
+if(KILN_DOWNSTREAM_NINJA)
+  set(generator -G Ninja -DCMAKE_MAKE_PROGRAM=${KILN_DOWNSTREAM_NINJA})
+endif()
 # A lobe that kiln_bake(MODEL_SOURCE) compiles goes into this run's own cache.
 set(ENV{XDG_CACHE_HOME} "${work}/cache")
 
@@ -140,7 +149,7 @@ endif()
 
 if("project" IN_LIST KILN_DOWNSTREAM_WAYS)
   run(${CMAKE_COMMAND} -S ${KILN_SOURCE_DIR}/tests/downstream -B ${work}/project
-      -DCMAKE_BUILD_TYPE=Release -DKILN_PROJECT_DIR=${KILN_SOURCE_DIR} ${launcher})
+      -DCMAKE_BUILD_TYPE=Release -DKILN_PROJECT_DIR=${KILN_SOURCE_DIR} ${generator} ${launcher})
   message(STATUS "project: configured")
 endif()
 
@@ -154,7 +163,7 @@ foreach(way package subdirectory)
     set(how -DKILN_RUNTIME_DIR=${KILN_SOURCE_DIR}/runtime)
   endif()
   run(${CMAKE_COMMAND} -S ${KILN_SOURCE_DIR}/tests/downstream -B ${work}/${way}
-      -DCMAKE_BUILD_TYPE=Release ${how} ${launcher})
+      -DCMAKE_BUILD_TYPE=Release ${how} ${generator} ${launcher})
   run(${CMAKE_COMMAND} --build ${work}/${way} -j 2)
   run(${work}/${way}/sample_in_memory)
   run(${work}/${way}/sample_file ${table} 0.5 0.3)

@@ -70,12 +70,20 @@ Png Parse(const std::string& f) {
     }
     at += 12 + n;
   }
-  // Inflated by zlib itself (an independent decoder of the deflate stream and its Adler-32).
+  // Inflated by zlib itself (an independent decoder of the deflate stream and its Adler-32),
+  // into the exact size IHDR gives (per row a filter byte and the samples) and one byte more: a
+  // stream that inflates to more does not fit and fails, one to less fails the size check.
   REQUIRE(idat.size() >= 6);
-  std::string raw(std::size_t(64) << 20, '\0');
+  const std::map<int, std::size_t> samplesOfColourType = {{0, 1}, {2, 3}, {4, 2}, {6, 4}};
+  REQUIRE(samplesOfColourType.count(p.colourType) == 1);
+  REQUIRE(p.bitDepth == 16);
+  const std::size_t rowBytes = 1 + std::size_t(p.width) * samplesOfColourType.at(p.colourType) * 2;
+  const std::size_t expected = rowBytes * p.height;
+  std::string raw(expected + 1, '\0');
   uLongf rawSize = uLongf(raw.size());
   REQUIRE(uncompress(reinterpret_cast<Bytef*>(raw.data()), &rawSize,
                      reinterpret_cast<const Bytef*>(idat.data()), uLong(idat.size())) == Z_OK);
+  REQUIRE(rawSize == expected);
   raw.resize(rawSize);
   p.raw = raw;
   return p;

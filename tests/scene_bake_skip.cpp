@@ -67,7 +67,7 @@ TEST_CASE("A scene bake skips the up-to-date files and leaves them untouched", "
   BakePlan(Plan{smaller.scenePath, smaller.format, 1, {smaller.tables[2]}, {}, {}}, dir, Fast(),
            false, false, nullptr);
   CHECK(StateOf(bigger.tables[2].spec, dir) == TableState::Stale);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("With --header, a skipped table whose header is missing gets one", "[scene][bake]") {
@@ -83,7 +83,7 @@ TEST_CASE("With --header, a skipped table whose header is missing gets one", "[s
   SceneBakeResult r = BakePlan(one, dir, Fast(), false, true, nullptr);
   CHECK(r.skipped == Names{"ggx-albedo-avg-r0.3"});
   CHECK(ReadFile(h).find("ggx_albedo_avg_r0_3") != std::string::npos);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("The scene bake reports baked, skipped and the time", "[scene][bake]") {
@@ -111,5 +111,5 @@ TEST_CASE("The scene bake reports baked, skipped and the time", "[scene][bake]")
   // BakeScene (what `kiln bake --scene` calls) prints the same report on stderr and returns 0.
   std::fflush(stdout);
   CHECK(BakeScene(scene, dir, Fast(), false, false, popt) == 0);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }

@@ -41,7 +41,7 @@ TEST_CASE("kiln plan prints each table with reasons, axes, size and state", "[sc
   auto again = RunKiln("plan '" + ScenePath("merge.gltf") + "' --out " + dir + " --size 4");
   CHECK(again.out.find("3 up to date in " + dir) != std::string::npos);
   CHECK(again.out.find("[missing]") == std::string::npos);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("kiln plan lists what needs no table, and warns about unknown required extensions",

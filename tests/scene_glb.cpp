@@ -23,7 +23,7 @@ TEST_CASE("A .glb (JSON chunk + BIN chunk) plans like the same JSON", "[scene][g
   REQUIRE(TableNames(glb) == TableNames(gltf));
   for (size_t i = 0; i < glb.tables.size(); ++i)
     CHECK(glb.tables[i].spec.Hash() == gltf.tables[i].spec.Hash());
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
 }
 
 TEST_CASE("MakeGlb writes the layout the reader expects", "[scene][glb]") {

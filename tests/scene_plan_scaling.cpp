@@ -37,7 +37,7 @@ TEST_CASE("Planning looks at each need and note a bounded number of times", "[sc
     WriteText(dir + "/many.gltf", ManyMaterialsGltf(count));
     Scene scene = ReadScene(dir + "/many.gltf");
     Plan plan = PlanScene(scene);
-    std::system(("rm -rf " + dir).c_str());
+    RemoveTree(dir);
     size_t entries = scene.needs.size() + scene.notes.size();
     INFO(count << " materials: " << entries << " needs and notes, " << plan.mergeProbes
                << " probes");

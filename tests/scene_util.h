@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "baker/scene/plan.h"
+#include "cli_util.h"
 
 namespace kiln::test {
 
@@ -48,7 +50,8 @@ inline const PlanNote* FindNote(const Plan& plan, SceneNote::Kind kind, const st
 /// A fresh empty folder under /tmp, unique to this process and tag.
 inline std::string SceneTempDir(const std::string& tag) {
   std::string dir = "/tmp/kiln_scene_test_" + tag + "_" + std::to_string(getpid());
-  std::system(("rm -rf " + dir + " && mkdir -p " + dir).c_str());
+  RemoveTree(dir);
+  std::filesystem::create_directories(dir);
   return dir;
 }
 
@@ -62,7 +65,7 @@ inline Plan PlanText(const std::string& text, const std::string& file = "scene.g
   std::string dir = SceneTempDir("text");
   WriteText(dir + "/" + file, text);
   Plan plan = PlanSceneFile(dir + "/" + file, opt);
-  std::system(("rm -rf " + dir).c_str());
+  RemoveTree(dir);
   return plan;
 }
 

@@ -136,6 +136,6 @@ TEST_CASE("kiln plan refuses a metal outside fresnel-conductor's domain in one l
     CHECK(test::CountLines(r.err) == 1);
     CHECK(r.err.find(what) != std::string::npos);
     CHECK(r.err.find("fresnel-conductor's domain") != std::string::npos);
-    std::system(("rm -rf " + dir).c_str());
+    test::RemoveTree(dir);
   }
 }

@@ -64,5 +64,5 @@ TEST_CASE(
   CHECK(r.out.find("ggx-fresnel-albedo: eta 1.2 is outside its domain [1.3, 3]") !=
         std::string::npos);
   CHECK(r.out.find("ggx-dfg-r0.3") != std::string::npos);
-  std::system(("rm -rf " + dir).c_str());
+  test::RemoveTree(dir);
 }
