@@ -174,9 +174,22 @@ inline double HorizonCutCosPhi(double mu_o, double sinTheta_o, PolarParam h) {
   return -mu_o * cos2 / den;
 }
 
-/// E(o) over half-vector space for a specular model M (kDomain == HalfVector):
-/// weights(const HalfSample&, double rho) -> Channels<N>, where rho = model.HalfWeight(sample);
-/// to the absolute tolerance opt.tol.
+namespace hemisphere_detail {
+/// A model's HalfWeight at one view mu_o: its HalfWeightAtView(mu_o) where it has one (the
+/// view's constants computed once, the same bits), else a call of HalfWeight. m must outlive it.
+template <class M>
+auto ViewHalfWeightOf(const M& m, double mu_o, int) -> decltype(m.HalfWeightAtView(mu_o)) {
+  return m.HalfWeightAtView(mu_o);
+}
+template <class M>
+auto ViewHalfWeightOf(const M& m, double, long) {
+  return [&m](const HalfSample& s) { return m.HalfWeight(s); };
+}
+}  // namespace hemisphere_detail
+
+/// E(o) over half-vector space for a specular model M (kDomain == HalfVector): weights(const
+/// HalfSample&, double rho) -> Channels<N>, rho = model.HalfWeight(sample) (the same bits from
+/// model.HalfWeightAtView(mu_o) where M has it); to the absolute tolerance opt.tol.
 template <int N, class M, class W>
 Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights,
                                         const IntegrationOptions& opt, IntegrationStats& stats) {
@@ -216,6 +229,7 @@ Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights
   for (int i = 0; i < nt; ++i) vs[i] = i == 0 ? 1.0 : model.VFromTheta(thetas[i]);
   int panels = nt - 1;
   double innerTol = opt.tol / 10;
+  const auto rho = hemisphere_detail::ViewHalfWeightOf(model, mu_o, 0);
   auto outer = [&](double x) -> Channels<N> {
     int i = std::min(static_cast<int>(x), panels - 1);
     double t = x - i, va = vs[i], vb = vs[i + 1];
@@ -256,7 +270,7 @@ Channels<N> IntegrateHalfVectorAbsolute(const M& model, double mu_o, W&& weights
       s.mu_l = 2 * s.oh * h.cosTheta - mu_o;
       if (!(s.mu_l > 0) || !(s.oh > 0)) return Channels<N>{};
       s.wi = Reflect(wo, s.wm);
-      return weights(s, model.HalfWeight(s));
+      return weights(s, rho(s));
     };
     // The outer rule weighs this inner integral by 2 jac: its tolerance scales inversely, so
     // a panel of tiny measure is not integrated to a precision nobody can see.

@@ -3,6 +3,7 @@
 // Conventions: alpha is the microfacet roughness (alpha = r^2 from perceptual r); D(wm) is
 // normalised so that integral D(wm) cos(theta_m) dwm = 1; Lambda is Smith's auxiliary function.
 #pragma once
+#include <algorithm>
 #include <cmath>
 
 #include "baker/math/vec3.h"
@@ -151,6 +152,43 @@ double GOverMuO(const Dist& dist, SmithForm form, double mu_o, double mu_l, doub
   }
   return 0;
 }
+
+/// GOverMuO at one view mu_o, with the view's own terms (mu_o + mu_o Lambda(o), 1 / mu_o)
+/// computed once: the same operations in the same order as GOverMuO, so the same bits, for the
+/// adaptive references' many light directions at one view. dist must outlive it.
+template <class Dist>
+struct GOverMuOAtView {
+  const Dist* dist;
+  SmithForm form;
+  double mu_o;
+  double viewSum = 0;  ///< mu_o + MuLambda(mu_o) (the Smith forms)
+  double invMu = 0;    ///< 1 / mu_o, infinity at mu_o = 0 (the V-cavity form)
+
+  /// The view's terms of GOverMuO(d, f, mu_o, ...) for mu_o in [0, 1].
+  GOverMuOAtView(const Dist& d, SmithForm f, double mu) : dist(&d), form(f), mu_o(mu) {
+    if (form == SmithForm::VCavity)
+      invMu = mu_o > 0 ? 1 / mu_o : INFINITY;
+    else
+      viewSum = mu_o + dist->MuLambda(mu_o);
+  }
+  /// GOverMuO(dist, form, mu_o, mu_l, cosTheta_h, oh), bit for bit.
+  double operator()(double mu_l, double cosTheta_h, double oh) const {
+    if (mu_l <= 0) return 0;
+    switch (form) {
+      case SmithForm::HeightCorrelated:
+        return 1 / (viewSum + mu_o * dist->MuLambda(mu_l) / mu_l);
+      case SmithForm::Separable:
+        return 1 / (viewSum * (1 + dist->MuLambda(mu_l) / mu_l));
+      case SmithForm::VCavity: {
+        if (oh <= 0) return 0;
+        double g = 2 * cosTheta_h / oh;
+        double b = mu_o > 0 ? g * mu_l / mu_o : INFINITY;
+        return std::min({invMu, g, b});
+      }
+    }
+    return 0;
+  }
+};
 
 /// Smith G1(w) = 1 / (1 + Lambda(w)).
 template <class Dist>

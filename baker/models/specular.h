@@ -53,6 +53,20 @@ struct MicrofacetBRDF {
     return GOverMuO(dist, form, s.mu_o, s.mu_l, s.cosTheta_h, s.oh) * fresnel(s.oh) * s.oh /
            (2 * Pi * s.cosTheta_h);
   }
+  /// HalfWeight at one view (the adaptive references' per-view form): w(s) is HalfWeight(s), bit
+  /// for bit, for samples with s.mu_o = mu_o, the view's masking terms computed once. The model
+  /// must outlive it.
+  struct ViewHalfWeight {
+    const MicrofacetBRDF* m;
+    GOverMuOAtView<Dist> g;
+    double operator()(const HalfSample& s) const {
+      return g(s.mu_l, s.cosTheta_h, s.oh) * m->fresnel(s.oh) * s.oh / (2 * Pi * s.cosTheta_h);
+    }
+  };
+  /// The per-view HalfWeight at view cosine mu_o (ViewHalfWeight).
+  ViewHalfWeight HalfWeightAtView(double mu_o) const {
+    return {this, GOverMuOAtView<Dist>(dist, form, mu_o)};
+  }
   /// cos(phi_h) where the V-cavity min() switches branch, at polar angle (sinTheta_h, cosTheta_h):
   /// 2 nh mu_o = oh, 2 nh mu_l = oh, and mu_l = mu_o. None for the Smith forms.
   /// The mu_l below which masking of l bends (alpha: Lambda's scale); see IntegrateHalfVector.
@@ -99,10 +113,22 @@ struct NormalizedBlinnPhong {
   // q = (s + 1) cos^s / (2 pi): f mu_l 4 (o.h) / (2 pi q) = 4 N_s R_s F mu_l (o.h) / (s + 1).
   PolarParam FromV(double v) const { return CosinePowerParam{s + 1}.FromV(v); }
   double VFromTheta(double theta) const { return CosinePowerParam{s + 1}.VFromTheta(theta); }
-  double HalfWeight(const HalfSample& h) const {
-    double k = (s + 2) / (Pi * (s + 1) * (2 - std::exp2(-s / 2)));
-    return rs * k * fresnel(h.oh) * h.mu_l * h.oh;
+  double HalfWeight(const HalfSample& h) const { return Weight(rs * HalfWeightFactor(), h); }
+  /// (s + 2) / (pi (s + 1) (2 - 2^(-s/2))), the sample-independent factor of HalfWeight.
+  double HalfWeightFactor() const { return (s + 2) / (Pi * (s + 1) * (2 - std::exp2(-s / 2))); }
+  /// HalfWeight given its factor rsK = rs HalfWeightFactor(): rsK F(o.h) mu_l (o.h), left to right.
+  double Weight(double rsK, const HalfSample& h) const {
+    return rsK * fresnel(h.oh) * h.mu_l * h.oh;
   }
+  /// HalfWeight with rs HalfWeightFactor() computed once: the same bits.
+  struct ViewHalfWeight {
+    const NormalizedBlinnPhong* m;
+    double rsK;  ///< rs HalfWeightFactor()
+    double operator()(const HalfSample& h) const { return m->Weight(rsK, h); }
+  };
+  /// The per-view HalfWeight (ViewHalfWeight; it does not depend on the view). The model must
+  /// outlive it.
+  ViewHalfWeight HalfWeightAtView(double) const { return {this, rs * HalfWeightFactor()}; }
   double MaskingScale() const { return 0; }  // no masking term
   int PhiKinks(double, double, PolarParam, double*) const { return 0; }
   int ThetaKinks(double, double*) const { return 0; }
@@ -140,10 +166,26 @@ struct AshikhminShirleySpecular {
   PolarParam FromV(double v) const { return CosinePowerParam{P()}.FromV(v); }
   double VFromTheta(double theta) const { return CosinePowerParam{P()}.VFromTheta(theta); }
   double HalfWeight(const HalfSample& h) const {
-    double p = P(), e = Exponent(h.wm);
+    double p = P();
+    return Weight(p, std::sqrt((nu + 1) * (nv + 1)) / p, h);
+  }
+  /// HalfWeight given p = P() and its factor norm = sqrt((n_u + 1)(n_v + 1)) / p, in its order.
+  double Weight(double p, double norm, const HalfSample& h) const {
+    double e = Exponent(h.wm);
     double c = e > p - 1 ? std::pow(h.cosTheta_h, e - p + 1) : 1.0;
-    return std::sqrt((nu + 1) * (nv + 1)) / p * c * fresnel(h.oh) * h.mu_l /
-           (2 * Pi * std::max(h.mu_l, h.mu_o));
+    return norm * c * fresnel(h.oh) * h.mu_l / (2 * Pi * std::max(h.mu_l, h.mu_o));
+  }
+  /// HalfWeight with P() and sqrt((n_u + 1)(n_v + 1)) / P() computed once: the same bits.
+  struct ViewHalfWeight {
+    const AshikhminShirleySpecular* m;
+    double p, norm;
+    double operator()(const HalfSample& h) const { return m->Weight(p, norm, h); }
+  };
+  /// The per-view HalfWeight (ViewHalfWeight; it does not depend on the view). The model must
+  /// outlive it.
+  ViewHalfWeight HalfWeightAtView(double) const {
+    double p = P();
+    return {this, p, std::sqrt((nu + 1) * (nv + 1)) / p};
   }
   double MaskingScale() const { return 0; }  // no masking term
   /// max(mu_l, mu_o) switches where mu_l = mu_o: cos(phi_h) = tan(theta_h) / tan(theta_o).
