@@ -18,23 +18,14 @@
 #include "baker/integrate/dielectric_albedo.h"
 #include "baker/integrate/dielectric_btdf.h"
 #include "baker/integrate/dielectric_simd.h"
+#include "dielectric_simd_paths.h"
 #include "baker/math/constants.h"
 #include "baker/math/quadrature.h"
 
 using namespace kiln;
+using kiln::test::BothPaths;
 
 namespace {
-
-/// Runs f with the AVX-512F paths on, then off, and restores them; returns {on, off}.
-template <class F>
-auto BothPaths(F&& f) {
-  dielectric_simd::SetEnabled(true);
-  auto on = f();
-  dielectric_simd::SetEnabled(false);
-  auto off = f();
-  dielectric_simd::SetEnabled(true);
-  return std::make_pair(on, off);
-}
 
 template <class T>
 bool SameBits(const T& a, const T& b) {

@@ -20,22 +20,13 @@
 #include "baker/integrate/dielectric_albedo_avg.h"
 #include "baker/integrate/dielectric_btdf.h"
 #include "baker/integrate/dielectric_simd.h"
+#include "dielectric_simd_paths.h"
 #include "baker/models/roughness.h"
 
 using namespace kiln;
+using kiln::test::BothPaths;
 
 namespace {
-
-/// Runs f with the AVX-512F paths on, then off, and restores them; returns {on, off}.
-template <class F>
-auto BothPaths(F&& f) {
-  dielectric_simd::SetEnabled(true);
-  auto on = f();
-  dielectric_simd::SetEnabled(false);
-  auto off = f();
-  dielectric_simd::SetEnabled(true);
-  return std::make_pair(on, off);
-}
 
 /// Runs f by the AVX-512F paths, by the portable exit ring with the CPU's FMA instructions and by
 /// it with libm's std::fma, and restores the defaults; returns the three results.
