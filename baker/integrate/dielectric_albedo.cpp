@@ -156,8 +156,10 @@ struct View {
   int ThetaBreaks(double* thetas) const;
   int PhiBreaks(PolarParam h, double* phis) const;
   Channels<2> Integrand(PolarParam h, double cp) const;
-  struct AdaptiveRing;
-  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes).
+  using AdaptiveRing = dielectric_walk::LaneRing<View, dielectric_adaptive::AlbedoRing,
+                                                 dielectric_adaptive::AlbedoNodes>;
+  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes), in
+  /// AVX-512F lanes where dielectric_simd::Enabled() (the ring's constants once).
   AdaptiveRing RingOf(PolarParam h) const;
 };
 
@@ -198,27 +200,6 @@ inline Channels<2> Integrand(const View& v, PolarParam h, double cp) {
   }
   return out;
 }
-
-/// A ring of the adaptive walk (dielectric_walk::AdaptiveWalk): a panel's nodes in AVX-512F
-/// lanes where dielectric_simd::Enabled() (dielectric_adaptive::AlbedoNodes, the ring's
-/// constants once), else by Integrand one node at a time: the same bits.
-struct View::AdaptiveRing {
-  const View& v;
-  PolarParam h;
-  bool simd;
-  dielectric_adaptive::AlbedoRing lanes;
-  void Nodes(const double* y, const double* phis, int np, int n, Channels<2>* out) const {
-    if (simd) {
-      dielectric_adaptive::AlbedoNodes(lanes, y, phis, np, n, out);
-      return;
-    }
-    for (int i = 0; i < n; ++i) {
-      double dj;
-      const double phi = dielectric_walk::RingAzimuth(phis, np, y[i], &dj);
-      out[i] = dj * v.Integrand(h, SinCosHalfTurn(phi).cos);
-    }
-  }
-};
 
 View::AdaptiveRing View::RingOf(PolarParam h) const {
   const double a2 = dist.alpha * dist.alpha, eta2 = eta * eta;

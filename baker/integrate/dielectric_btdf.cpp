@@ -73,8 +73,10 @@ struct BtdfView {
   int ThetaBreaks(double* thetas) const;
   int PhiBreaks(PolarParam h, double* phis) const;
   Channels<2> Integrand(PolarParam h, double cp) const;
-  struct AdaptiveRing;
-  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes).
+  using AdaptiveRing = dielectric_walk::LaneRing<BtdfView, dielectric_adaptive::BtdfRing,
+                                                 dielectric_adaptive::BtdfNodes>;
+  /// The adaptive walk's ring at h: its nodes at once (dielectric_walk::HasRingNodes), in
+  /// AVX-512F lanes where dielectric_simd::Enabled() (the ring's constants once).
   AdaptiveRing RingOf(PolarParam h) const;
 };
 
@@ -169,27 +171,6 @@ int BtdfView::PhiBreaks(PolarParam h, double* phis) const { return BtdfPhiBreaks
 Channels<2> BtdfView::Integrand(PolarParam h, double cp) const {
   return BtdfIntegrand(*this, h, cp);
 }
-
-/// A ring of the adaptive walk (dielectric_walk::AdaptiveWalk): a panel's nodes in AVX-512F
-/// lanes where dielectric_simd::Enabled() (dielectric_adaptive::BtdfNodes, the ring's constants
-/// once), else by BtdfIntegrand one node at a time: the same bits.
-struct BtdfView::AdaptiveRing {
-  const BtdfView& v;
-  PolarParam h;
-  bool simd;
-  dielectric_adaptive::BtdfRing lanes;
-  void Nodes(const double* y, const double* phis, int np, int n, Channels<2>* out) const {
-    if (simd) {
-      dielectric_adaptive::BtdfNodes(lanes, y, phis, np, n, out);
-      return;
-    }
-    for (int i = 0; i < n; ++i) {
-      double dj;
-      const double phi = dielectric_walk::RingAzimuth(phis, np, y[i], &dj);
-      out[i] = dj * v.Integrand(h, SinCosHalfTurn(phi).cos);
-    }
-  }
-};
 
 BtdfView::AdaptiveRing BtdfView::RingOf(PolarParam h) const {
   const double a2 = dist.alpha * dist.alpha, eta2 = eta * eta;

@@ -234,6 +234,33 @@ template <class P>
 struct HasRingNodes<P, std::void_t<decltype(std::declval<const P&>().RingOf(PolarParam{}))>>
     : std::true_type {};
 
+/// The signature of a lane kernel of LaneRing (dielectric_adaptive_nodes.h: AlbedoNodes,
+/// BtdfNodes).
+template <class Lanes>
+using LaneKernel = void (*)(const Lanes&, const double*, const double*, int, int, Channels<2>*);
+
+/// A problem's RingOf (HasRingNodes): a panel's nodes by the lane kernel Kernel with the ring's
+/// constants `lanes` where `simd` (dielectric_simd::Enabled()), else by the problem's Integrand
+/// one node at a time; Kernel must give the scalar path's bits.
+template <class Problem, class Lanes, LaneKernel<Lanes> Kernel>
+struct LaneRing {
+  const Problem& p;
+  PolarParam h;
+  bool simd;
+  Lanes lanes;
+  void Nodes(const double* y, const double* phis, int np, int n, Channels<2>* out) const {
+    if (simd) {
+      Kernel(lanes, y, phis, np, n, out);
+      return;
+    }
+    for (int i = 0; i < n; ++i) {
+      double dj;
+      const double phi = RingAzimuth(phis, np, y[i], &dj);
+      out[i] = dj * p.Integrand(h, SinCosHalfTurn(phi).cos);
+    }
+  }
+};
+
 /// AdaptiveWalk's inner integrand on the ring h: y in [0, np - 1], its panel k = [k, k + 1]
 /// smoothstep-mapped onto the azimuths [phis[k], phis[k + 1]]; dj times the problem's
 /// Integrand, counted in stats.evals.
