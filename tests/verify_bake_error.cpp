@@ -5,8 +5,10 @@
 // the committed tables pass.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "baker/bake/bake.h"
 #include "baker/integrate/fixed_rule_diffuse.h"
@@ -55,6 +57,53 @@ TEST_CASE("Every texel shifted by 3e-5 fails the bake-error check, the committed
     CHECK_FALSE(shifted.ok);
     CHECK(shifted.max > 2e-5);
   }
+}
+
+TEST_CASE("kiln verify --all-nodes compares every node: one texel off that the sample misses fails",
+          "[verify][bake-error]") {
+  // One interior texel of burley-albedo (4,096 nodes, declared bake error 1.6e-7) moved by 3e-6:
+  // too little to rank among the nodes that depart most from their neighbours, and outside the
+  // sampled nodes, so the default check passes; comparing every node finds it.
+  const Table committed = Committed("burley-albedo");
+  const TableSpec spec = SpecFromTable(committed);
+  const size_t n = spec.TexelCount();
+  Table t = committed;
+  size_t moved = n;
+  for (size_t i = n / 2 + 3; i < n && moved == n; i += 7) {
+    t = committed;
+    t.data[i] += 3e-6f;
+    const std::vector<size_t> sampled =
+        verify::BakeCheckNodes(spec, t, verify::kBakeSampleNodes, verify::kBakeSampleSeed);
+    if (std::find(sampled.begin(), sampled.end(), i) == sampled.end()) moved = i;
+  }
+  REQUIRE(moved < n);
+  const verify::BakeErrorCheck sample =
+      verify::CheckBakeError(spec, t, verify::kBakeSampleNodes, 0, 2);
+  const verify::BakeErrorCheck all = verify::CheckBakeError(spec, t, verify::kBakeAllNodes, 0, 2);
+  double x[3] = {0, 0, 0};
+  NodeEvaluationPoint(spec, moved, x);
+  INFO("moved node " << moved << "; sampled " << sample.max << " over " << sample.nodes
+                     << " nodes; all " << all.max << " at " << all.WhereText(spec));
+  CHECK(sample.ok);
+  CHECK(sample.nodes < static_cast<long long>(n));
+  CHECK_FALSE(all.ok);
+  CHECK(all.nodes == static_cast<long long>(n));
+  CHECK(all.max > 2e-6);
+  REQUIRE(all.where.size() == 2);
+  CHECK(all.where[0] == x[0]);
+  CHECK(all.where[1] == x[1]);
+
+  // The same through the command line.
+  const std::string dir = test::TempDir("verify_all_nodes");
+  WriteBakedTable(dir, t, false, false);
+  const std::string file = dir + "/burley-albedo.exr";
+  const auto sampled = test::RunKiln("verify " + file + " --cells 4 -j 2");
+  INFO(sampled.out << sampled.err);
+  CHECK(sampled.exitCode == 0);
+  const auto every = test::RunKiln("verify " + file + " --cells 4 --all-nodes -j 2");
+  INFO(every.out << every.err);
+  CHECK(every.exitCode == 1);
+  CHECK(every.out.find("EXCEEDS BAKE ERROR") != std::string::npos);
 }
 
 TEST_CASE("kiln verify exits 1 on a shifted table and names the bake error",

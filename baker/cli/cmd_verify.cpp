@@ -103,7 +103,7 @@ void RegisterVerify(CLI::App& app) {
     double tol = 0;
     int threads = 0;
     std::string filter;
-    bool json = false, quiet = false, outerReference = false;
+    bool json = false, quiet = false, outerReference = false, allNodes = false;
     int bakeNodes = verify::kBakeSampleNodes;
   };
   auto args = std::make_shared<Args>();
@@ -125,11 +125,16 @@ void RegisterVerify(CLI::App& app) {
                 "with --tol: an average's search cells and random points take the bake-error "
                 "check's reference (adaptive quadrature over mu of E by its 3D table's rule); "
                 "the declared worst point keeps adaptive quadrature of the whole integral");
-  sub->add_option("--bake-nodes", args->bakeNodes,
-                  "bake-error check: sampled nodes per table besides the corners and the nodes "
-                  "that depart most from their neighbours (reference: adaptive quadrature or a "
-                  "closed form, never the bake's rule)")
-      ->capture_default_str();
+  auto* oBakeNodes =
+      sub->add_option("--bake-nodes", args->bakeNodes,
+                      "bake-error check: sampled nodes per table besides the corners and the nodes "
+                      "that depart most from their neighbours (reference: adaptive quadrature or a "
+                      "closed form, never the bake's rule)")
+          ->capture_default_str();
+  sub->add_flag("--all-nodes", args->allNodes,
+                "bake-error check: every node of each table, whatever the reference costs "
+                "(minutes for a 3D glass table; docs/accuracy.md)")
+      ->excludes(oBakeNodes);
   sub->add_option("-j,--threads", args->threads, "threads (default: all cores)");
   sub->add_option("--filter", args->filter,
                   "measure with this filter instead of the declared one (then only reported, "
@@ -182,7 +187,7 @@ void RegisterVerify(CLI::App& app) {
     opt.outerReference = args->outerReference;
     opt.threads = args->threads;
     opt.filter = args->filter;
-    opt.bakeNodes = args->bakeNodes;
+    opt.bakeNodes = args->allNodes ? verify::kBakeAllNodes : args->bakeNodes;
     // A line per table on stderr (terminal or not), the redrawn bar only on a terminal;
     // --quiet and --json (stdout is then one JSON object with the same numbers): neither.
     FILE* log = args->quiet || args->json ? nullptr : stderr;

@@ -131,6 +131,10 @@ std::vector<size_t> BakeCheckNodes(const TableSpec& spec, const Table& table, in
   std::partial_sort(order.begin(), order.begin() + worst, order.end(),
                     [&](size_t a, size_t b) { return dep[a] != dep[b] ? dep[a] > dep[b] : a < b; });
   for (size_t k = 0; k < worst; ++k) AddOnce(order[k], out, seen);
+  if (sampleNodes == kBakeAllNodes) {
+    for (size_t i = 0; i < n; ++i) AddOnce(i, out, seen);
+    return out;
+  }
   // A Latin hypercube over the node indices: sample k lies in stratum perm_a[k] of each axis.
   const size_t m = static_cast<size_t>(std::max(0, sampleNodes));
   unsigned long long state = seed;
@@ -161,13 +165,14 @@ BakeErrorCheck CheckBakeError(const TableSpec& spec, const Table& table, int sam
   c.refTol = tol > 0
                  ? tol
                  : std::clamp(table.bakeError / kBakeRefTolDivisor, kBakeRefTolMin, kBakeRefTolMax);
-  const std::vector<size_t> nodes = BakeCheckNodes(spec, table, sampleNodes, 0x6b696c6e);
+  const std::vector<size_t> nodes = BakeCheckNodes(spec, table, sampleNodes, kBakeSampleSeed);
+  const bool all = sampleNodes == kBakeAllNodes;
   const size_t corners = size_t(1) << spec.axes.size();
   const size_t first = static_cast<size_t>(Describe(spec.quantity).firstIntegralChannel);
   std::vector<NodeResult> res(nodes.size());
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   size_t done = 0;
-  while (done < nodes.size() && (done < corners || c.evals < kBakeCheckIntegrand)) {
+  while (done < nodes.size() && (all || done < corners || c.evals < kBakeCheckIntegrand)) {
     const size_t end = std::min(nodes.size(), done < corners ? corners : done + kChunkNodes);
     arena.execute([&] {
       tbb::parallel_for(tbb::blocked_range<size_t>(done, end, 1),

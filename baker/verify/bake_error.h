@@ -10,8 +10,13 @@
 
 namespace kiln::verify {
 
-/// Nodes sampled beyond the corners and the worst-first nodes (Latin hypercube, fixed seed).
+/// Nodes sampled beyond the corners and the worst-first nodes (Latin hypercube, kBakeSampleSeed).
 constexpr int kBakeSampleNodes = 24;
+/// The Latin hypercube's seed: the same nodes every run.
+constexpr unsigned long long kBakeSampleSeed = 0x6b696c6e;
+/// sampleNodes for every node of the table, compared whatever the evaluations (`kiln verify
+/// --all-nodes`).
+constexpr int kBakeAllNodes = -1;
 /// Nodes taken worst-first: those whose value departs most from the line through their
 /// neighbours (a node that holds something else than its neighbours' function).
 constexpr int kBakeWorstNodes = 8;
@@ -38,7 +43,8 @@ struct BakeErrorCheck {
 
 /// The nodes the check compares, as texel indices in order: every corner of the grid, the
 /// kBakeWorstNodes nodes that depart most from their neighbours (WorstNodes), then
-/// `sampleNodes` nodes of a Latin hypercube over the node indices (seed `seed`); no index twice.
+/// `sampleNodes` nodes of a Latin hypercube over the node indices (seed `seed`), or with
+/// kBakeAllNodes every other node in index order; no index twice.
 std::vector<size_t> BakeCheckNodes(const TableSpec& spec, const Table& table, int sampleNodes,
                                    unsigned long long seed);
 
@@ -47,7 +53,8 @@ std::vector<size_t> BakeCheckNodes(const TableSpec& spec, const Table& table, in
 /// adaptive quadrature, or the exact form of a closed-form kind, never the bake's fixed rule.
 /// refTol: `tol` when > 0, else the declared bake error / kBakeRefTolDivisor within
 /// [kBakeRefTolMin, kBakeRefTolMax]. The corners always; the other nodes in chunks until
-/// kBakeCheckIntegrand integrand evaluations are spent (deterministic for any `threads`).
+/// kBakeCheckIntegrand integrand evaluations are spent (deterministic for any `threads`), or
+/// with sampleNodes = kBakeAllNodes every node whatever they cost.
 /// Throws std::invalid_argument for a table that declares no bake error.
 BakeErrorCheck CheckBakeError(const TableSpec& spec, const Table& table, int sampleNodes,
                               double tol, int threads);

@@ -25,7 +25,8 @@ struct VerifyOptions {
   bool outerReference = false;
   int threads = 0;     ///< 0: all cores
   std::string filter;  ///< "" (the declared one), "linear" or "cubic" (then not checked)
-  int bakeNodes = kBakeSampleNodes;  ///< sampled nodes of the bake-error check (bake_error.h)
+  /// Sampled nodes of the bake-error check, or kBakeAllNodes: every node (bake_error.h).
+  int bakeNodes = kBakeSampleNodes;
 };
 
 /// The verdict on one table file.
