@@ -1,4 +1,4 @@
-// charlie-smith's own node counts of the sheen fixed rule (kCharlieSmithRuleOptions: 10 x 6 per
+// charlie-smith's own node counts of the sheen fixed rule (kCharlieSmithRuleOptions: 12 x 6 per
 // panel, the mirror grading only for alpha > 0.3, a boundary at mu_l = r / 2) against adaptive
 // quadrature at 1e-10 on a dense grid of its tables' domain: mu from 1e-4 (the domain's start)
 // to 1 with Lambda's switch at mu = 1/2 on both sides, r from 0.045 to 1 with the mirror
@@ -83,6 +83,27 @@ TEST_CASE("charlie-smith's rule without the mirror grading misses the bound at r
   CHECK(std::abs(FixedRuleSheenAlbedo(m, 1.0, coarse) - Adaptive(m, 1.0)) > kSheenRuleBound);
 }
 
+TEST_CASE("charlie-smith's rule holds the bound where the mirror meets the lobe's boundary",
+          "[sheen][fixed-rule][charlie-smith]") {
+  // Two nodes of charlie-smith-albedo that every node's check (kiln verify --all-nodes) found
+  // 8.0e-7 and 7.8e-7 from adaptive quadrature with 10 nodes per panel in t: the mirror mu_l =
+  // mu_o next to the panel boundary at mu_l = r / 2.
+  struct Node {
+    double mu, r;
+  };
+  SheenRuleOptions ten = SheenRuleOptionsFor("charlie-smith", false);
+  ten.tNodes = 10;
+  for (const Node& n : {Node{0.16747787433654018, 0.29885581867177802},
+                        Node{0.18714930277838696, 0.38803901986251016}}) {
+    const AnyModel m = CharlieSmith(n.r);
+    const double ref = Adaptive(m, n.mu);
+    const double rule = FixedRuleSheenAlbedo(m, n.mu, SheenRuleOptionsFor("charlie-smith", false));
+    INFO("mu " << n.mu << " r " << n.r << " rule " << rule - ref);
+    CHECK(std::abs(rule - ref) < kSheenRuleBound);
+    CHECK(std::abs(FixedRuleSheenAlbedo(m, n.mu, ten) - ref) > kSheenRuleBound);
+  }
+}
+
 TEST_CASE("charlie-smith takes its own rule, charlie and the velvet keep the shared one",
           "[sheen][fixed-rule][charlie-smith]") {
   SheenRuleOptions shared;
@@ -93,7 +114,7 @@ TEST_CASE("charlie-smith takes its own rule, charlie and the velvet keep the sha
     CHECK(o.lobeBreak == 0);
   }
   SheenRuleOptions cs = SheenRuleOptionsFor("charlie-smith", false);
-  CHECK(cs.tNodes == 10);
+  CHECK(cs.tNodes == 12);
   CHECK(cs.sNodes == 6);
   // Its search rule differs only in the nodes per panel in t: the charge is their ratio.
   SheenRuleOptions search = SheenRuleOptionsFor("charlie-smith", true);

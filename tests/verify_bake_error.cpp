@@ -12,6 +12,7 @@
 
 #include "baker/bake/bake.h"
 #include "baker/integrate/fixed_rule_diffuse.h"
+#include "baker/integrate/fixed_rule_sheen.h"
 #include "baker/quantities/common.h"
 #include "baker/verify/verify.h"
 #include "cli_util.h"
@@ -104,6 +105,48 @@ TEST_CASE("kiln verify --all-nodes compares every node: one texel off that the s
   INFO(every.out << every.err);
   CHECK(every.exitCode == 1);
   CHECK(every.out.find("EXCEEDS BAKE ERROR") != std::string::npos);
+}
+
+TEST_CASE("A node whose reference stops at its panel cap is checked against a tighter one",
+          "[verify][bake-error]") {
+  // charlie at mu = 4.6962e-7, roughness 0.17237 (a node of charlie-albedo): adaptive quadrature
+  // to the check's tolerance (the declared 5.6e-7 / 20) stops at its panel cap 3.1e-5 from the
+  // integral, which the texel holds to 1e-8. A 2 x 2 table with that node as its first corner,
+  // baked by the sheen rule: the check takes the tighter reference there and passes.
+  const double mu0 = 4.6961996123357093e-07, r0 = 0.17237208582990546;
+  const QuantityInfo& albedo = Describe(Quantity::Albedo);
+  std::vector<AxisSpec> axes = albedo.defaultAxes("charlie");
+  axes[0].lo = mu0;
+  axes[0].hi = 0.5;
+  axes[0].warp = Warp::Linear;
+  axes[1].lo = r0;
+  axes[1].hi = 0.5;
+  axes[1].warp = Warp::Linear;
+  for (AxisSpec& a : axes) a.size = 2;
+  const TableSpec spec = albedo.makeSpec("charlie", axes);
+  Table t = TableShell(spec, "test", "light space: the sheen rule");
+  double x0[3] = {0, 0, 0};
+  NodeEvaluationPoint(spec, 0, x0);
+  REQUIRE(x0[0] == mu0);
+  REQUIRE(x0[1] == r0);
+  const size_t nc = spec.channels.size();
+  for (size_t i = 0; i < spec.TexelCount(); ++i) {
+    double x[3] = {0, 0, 0};
+    NodeEvaluationPoint(spec, i, x);
+    t.data[i * nc] =
+        static_cast<float>(FixedRuleSheenAlbedo(quantity_detail::ModelAt("charlie", x[1]), x[0]));
+  }
+  t.bakeError = kSheenRuleBound + 0x1p-24;  // what a sheen table declares
+  const double refTol = t.bakeError / verify::kBakeRefTolDivisor;
+  IntegrationStats st;
+  const double first = EvaluateSpec(spec, x0, refTol, st)[0];
+  INFO("first reference " << first << " (capped " << st.capped << "), texel " << t.data[0]);
+  CHECK(st.capped);
+  CHECK(std::abs(first - t.data[0]) > 10 * t.bakeError);
+  const verify::BakeErrorCheck c = verify::CheckBakeError(spec, t, verify::kBakeAllNodes, 0, 2);
+  INFO("check: " << c.max << " at " << c.WhereText(spec));
+  CHECK(c.ok);
+  CHECK(c.nodes == 4);
 }
 
 TEST_CASE("kiln verify exits 1 on a shifted table and names the bake error",

@@ -42,10 +42,14 @@
 // and s span at most ~9 units, and the items above weigh differently for it: item 4's
 // |theta_h|^(1/alpha) is smooth enough for plain panels once 1/alpha > 3.3, so the mirror
 // grading is kept only for alpha > 0.3; item 3's layer gets a boundary of its own at
-// mu_l = r / 2; and 10 x 6 nodes per panel suffice. Measured
-// (tests/integrate_fixed_rule_charlie_smith.cpp, adaptive at 1e-10, 25 mu from 1e-4 with
-// 1/2 +- 1e-9, 15 r with sqrt(0.3) +- 1e-9): worst 3.6e-7 at 1,250 evaluations per texel on
-// average over its tables (was 3,161). Below mu_o = 1e-4 it does not hold (4e-5 at mu_o = 0).
+// mu_l = r / 2; and 12 x 6 nodes per panel. Measured (tests/integrate_fixed_rule_charlie_smith.cpp,
+// adaptive at 1e-10, 25 mu from 1e-4 with 1/2 +- 1e-9, 15 r with sqrt(0.3) +- 1e-9): 10 x 6 left
+// 3.6e-7 there, at 1,250 evaluations per texel on average over its tables (was 3,161), but every
+// node of charlie-smith-albedo (10,752, against adaptive at 1e-10; `kiln verify --all-nodes`)
+// found two over the bound, 8.0e-7 at (mu, r) = (0.167, 0.299) and 7.8e-7 at (0.187, 0.388),
+// where the mirror mu_l = mu_o falls next to the lobe's boundary r / 2 (11 nodes: 6.9e-7): with
+// 12, every node within 2.64e-7, at 1,500 evaluations. Below mu_o = 1e-4 it does not hold (4e-5 at
+// mu_o = 0).
 // Also checked against the closed forms at mu_o = 0 (E(0) = 2 int D sin^2(theta) dtheta: a
 // Wallis integral for Charlie, 1/2 + 4 alpha/sqrt(pi) over (1 + 4 alpha^2) for the velvet),
 // where the adaptive reference fails below r ~ 0.03 for the velvet (it misses the spike of

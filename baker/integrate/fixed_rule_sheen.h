@@ -50,19 +50,19 @@ constexpr double kSheenRuleBound = 5e-7;
 /// 0.045 included) at 1/1.27 of its evaluations (measured in the commit that set them).
 constexpr SheenRuleOptions kSearchSheenRuleOptions = {10, 6, 4, 4, 3, 3};
 
-/// charlie-smith's bake rule (fixed_rule_sheen.cpp, "charlie-smith's nodes"): 10 x 6 nodes per
+/// charlie-smith's bake rule (fixed_rule_sheen.cpp, "charlie-smith's nodes"): 12 x 6 nodes per
 /// panel, the mirror grading only for alpha > 0.3, a boundary at mu_l = r / 2; within 5e-7 of
-/// adaptive quadrature on the test's grid at 0.4 of the shared rule's evaluations.
-constexpr SheenRuleOptions kCharlieSmithRuleOptions = {10, 6, 4, 4, 3, 2, 0.3, 0.5};
+/// adaptive quadrature at every node of its tables, at 0.47 of the shared rule's evaluations.
+constexpr SheenRuleOptions kCharlieSmithRuleOptions = {12, 6, 4, 4, 3, 2, 0.3, 0.5};
 
 /// charlie-smith's lookup-error search rule: the same panels at 8 x 6 nodes per panel, within
 /// kSearchRuleBound of kCharlieSmithRuleOptions (tests/lookup_search_reference.cpp).
 constexpr SheenRuleOptions kCharlieSmithSearchRuleOptions = {8, 6, 4, 4, 3, 2, 0.3, 0.5};
 
 /// charlie-smith's bake-rule evaluations per search-rule evaluation: the same panels and nodes
-/// in s, 10 / 8 nodes per panel in t, so exactly 1.25 at every point
+/// in s, 12 / 8 nodes per panel in t, so exactly 1.5 at every point
 /// (tests/tables_sheen_catalogue.cpp, tests/integrate_fixed_rule_charlie_smith.cpp).
-constexpr double kCharlieSmithSearchCharge = 1.25;
+constexpr double kCharlieSmithSearchCharge = 1.5;
 
 /// The options of the bake rule (search = false) or the search's rule (search = true) for a
 /// sheen model id ("charlie-smith" takes its own; the others the shared defaults).

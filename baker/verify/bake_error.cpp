@@ -73,6 +73,9 @@ void AddOnce(size_t i, std::vector<size_t>& out, std::vector<char>& seen) {
   out.push_back(i);
 }
 
+/// The tolerance of a capped reference's second evaluation, relative to the first's.
+constexpr double kCappedRefTolFactor = 0.01;
+
 /// The reference's channels against the texel's at one node: the relative error, the evals.
 struct NodeResult {
   double err = 0;
@@ -83,17 +86,30 @@ NodeResult CompareNode(const TableSpec& spec, const Table& table, size_t i, doub
                        size_t first) {
   double x[3] = {0, 0, 0};
   NodeEvaluationPoint(spec, i, x);
-  IntegrationStats st;
   const auto own = Describe(spec.quantity).verifyReference;
-  std::vector<double> ref = own ? own(spec, x, refTol, st) : EvaluateSpec(spec, x, refTol, st);
   const size_t nc = table.channels.size();
   NodeResult r;
-  r.evals = st.evals;
-  for (size_t ch = first; ch < std::min(nc, ref.size()); ++ch)
-    r.err = std::max(r.err, std::fabs(table.data[i * nc + ch] - ref[ch]) / Scale(ref[ch]));
-  for (size_t ch = first; ch < nc; ++ch)  // a NaN texel or reference fails the node
-    if (std::isnan(table.data[i * nc + ch]) || (ch < ref.size() && std::isnan(ref[ch])))
-      r.err = HUGE_VAL;
+  auto compare = [&](double tol, IntegrationStats& st) {
+    const std::vector<double> ref = own ? own(spec, x, tol, st) : EvaluateSpec(spec, x, tol, st);
+    r.evals += st.evals;
+    double err = 0;
+    for (size_t ch = first; ch < std::min(nc, ref.size()); ++ch)
+      err = std::max(err, std::fabs(table.data[i * nc + ch] - ref[ch]) / Scale(ref[ch]));
+    for (size_t ch = first; ch < nc; ++ch)  // a NaN texel or reference fails the node
+      if (std::isnan(table.data[i * nc + ch]) || (ch < ref.size() && std::isnan(ref[ch])))
+        err = HUGE_VAL;
+    return err;
+  };
+  IntegrationStats st;
+  r.err = compare(refTol, st);
+  // A node over the claim whose reference stopped an adaptive level at its panel cap above its
+  // tolerance (stats.capped) may be the reference's error, not the texel's (charlie-albedo at mu
+  // = 4.7e-7, roughness 0.17: 3.1e-5 from the integral at 2.8e-8, within 1e-11 at 1e-9): once
+  // more at kCappedRefTolFactor of the tolerance, which bisects further before the cap.
+  if (st.capped && r.err > table.bakeError + 2 * refTol) {
+    IntegrationStats again;
+    r.err = compare(refTol * kCappedRefTolFactor, again);
+  }
   return r;
 }
 
