@@ -131,31 +131,9 @@ enum class SmithForm {
   VCavity            ///< Cook-Torrance: min(1, 2 nh no / oh, 2 nh nl / oh) (seed 004)
 };
 
-/// G(o, l) / mu_o, finite as mu_o -> 0 (the integrators divide by mu_o; this form does not).
-/// mu_o, mu_l in [0, 1]; cosTheta_h = n.h, oh = o.h > 0.
-template <class Dist>
-double GOverMuO(const Dist& dist, SmithForm form, double mu_o, double mu_l, double cosTheta_h,
-                double oh) {
-  if (mu_l <= 0) return 0;
-  switch (form) {
-    case SmithForm::HeightCorrelated:
-      return 1 / (mu_o + dist.MuLambda(mu_o) + mu_o * dist.MuLambda(mu_l) / mu_l);
-    case SmithForm::Separable:
-      return 1 / ((mu_o + dist.MuLambda(mu_o)) * (1 + dist.MuLambda(mu_l) / mu_l));
-    case SmithForm::VCavity: {
-      if (oh <= 0) return 0;
-      double g = 2 * cosTheta_h / oh;
-      double a = mu_o > 0 ? 1 / mu_o : INFINITY;
-      double b = mu_o > 0 ? g * mu_l / mu_o : INFINITY;
-      return std::min({a, g, b});
-    }
-  }
-  return 0;
-}
-
-/// GOverMuO at one view mu_o, with the view's own terms (mu_o + mu_o Lambda(o), 1 / mu_o)
-/// computed once: the same operations in the same order as GOverMuO, so the same bits, for the
-/// adaptive references' many light directions at one view. dist must outlive it.
+/// G(o, l) / mu_o at one view mu_o, finite as mu_o -> 0 (the integrators divide by mu_o; this
+/// form does not), with the view's own terms (mu_o + mu_o Lambda(o), 1 / mu_o) computed once: for
+/// the adaptive references' many light directions at one view. dist must outlive it.
 template <class Dist>
 struct GOverMuOAtView {
   const Dist* dist;
@@ -171,7 +149,7 @@ struct GOverMuOAtView {
     else
       viewSum = mu_o + dist->MuLambda(mu_o);
   }
-  /// GOverMuO(dist, form, mu_o, mu_l, cosTheta_h, oh), bit for bit.
+  /// G / mu_o at mu_l in [0, 1]; cosTheta_h = n.h, oh = o.h > 0.
   double operator()(double mu_l, double cosTheta_h, double oh) const {
     if (mu_l <= 0) return 0;
     switch (form) {
@@ -189,6 +167,15 @@ struct GOverMuOAtView {
     return 0;
   }
 };
+
+/// G(o, l) / mu_o, finite as mu_o -> 0 (GOverMuOAtView at mu_o, for one light direction).
+/// mu_o, mu_l in [0, 1]; cosTheta_h = n.h, oh = o.h > 0.
+template <class Dist>
+double GOverMuO(const Dist& dist, SmithForm form, double mu_o, double mu_l, double cosTheta_h,
+                double oh) {
+  if (mu_l <= 0) return 0;
+  return GOverMuOAtView<Dist>(dist, form, mu_o)(mu_l, cosTheta_h, oh);
+}
 
 /// Smith G1(w) = 1 / (1 + Lambda(w)).
 template <class Dist>

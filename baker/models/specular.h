@@ -49,13 +49,9 @@ struct MicrofacetBRDF {
   // n.h).
   PolarParam FromV(double v) const { return dist.FromV(v); }
   double VFromTheta(double theta) const { return dist.VFromTheta(theta); }
-  double HalfWeight(const HalfSample& s) const {
-    return GOverMuO(dist, form, s.mu_o, s.mu_l, s.cosTheta_h, s.oh) * fresnel(s.oh) * s.oh /
-           (2 * Pi * s.cosTheta_h);
-  }
-  /// HalfWeight at one view (the adaptive references' per-view form): w(s) is HalfWeight(s), bit
-  /// for bit, for samples with s.mu_o = mu_o, the view's masking terms computed once. The model
-  /// must outlive it.
+  double HalfWeight(const HalfSample& s) const { return HalfWeightAtView(s.mu_o)(s); }
+  /// HalfWeight at one view (the adaptive references' per-view form): w(s) for samples with
+  /// s.mu_o = mu_o, the view's masking terms computed once. The model must outlive it.
   struct ViewHalfWeight {
     const MicrofacetBRDF* m;
     GOverMuOAtView<Dist> g;
