@@ -168,10 +168,14 @@ double RelErr(double a, double b) {
   return std::abs(a - b) / std::abs(b);
 }
 
-/// The direction at cos(theta) = mu, azimuth phi, rounded to float.
+/// The direction at cos(theta) = mu, azimuth phi, rounded to float. Through volatile floats: GCC
+/// 12's vectorizer may otherwise drop a double -> float -> double round trip of the caller
+/// (Widen(DirF(...))), and the double reference would see other inputs than the float BRDF.
 V3 DirF(double mu, double phi) {
-  Vec3 d = DirectionFromMuPhi(mu, phi);
-  return {static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z)};
+  const Vec3 d = DirectionFromMuPhi(mu, phi);
+  volatile float x = static_cast<float>(d.x), y = static_cast<float>(d.y),
+                 z = static_cast<float>(d.z);
+  return {x, y, z};
 }
 Vec3 Widen(V3 v) { return {v.x, v.y, v.z}; }
 

@@ -37,6 +37,7 @@
 #include "baker/io/texture_writers.h"
 #include "baker/tables/engine_layout.h"
 #include "kiln/exr_loader.h"
+#include "baker/util/threads.h"
 
 namespace kiln {
 namespace {
@@ -92,10 +93,6 @@ class ProgressBar {
   bool stopped_ = false;
   std::thread thread_;
 };
-
-int Threads(int requested) {
-  return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-}
 
 }  // namespace
 
@@ -185,12 +182,12 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     ProgressBar bar(spec.name, n, opt.progress);
     t0 = std::chrono::steady_clock::now();             // after the bar's thread started
     const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
-    tbb::task_arena arena(Threads(opt.threads));
+    tbb::task_arena arena(ThreadCount(opt.threads));
     arena.execute([&] {
       // A fit (ltc) fills the whole table at once, in its own fixed order
       // (QuantityInfo::bakeTable).
       if (auto bakeAll = Describe(spec.quantity).bakeTable) {
-        bakeAll(spec, Threads(opt.threads), t, evals, errors);
+        bakeAll(spec, ThreadCount(opt.threads), t, evals, errors);
         if (keep) keep->values.clear();  // a fit keeps no node values to derive from
         bar.done = n;
         return;
@@ -322,7 +319,7 @@ long long MeasureLookupError(const TableSpec& spec, Table& table, long long budg
 
 void WriteBakedTable(const std::string& dir, const Table& table, bool half, bool header,
                      int threads) {
-  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  threads = ThreadCount(threads);
   writeTable(dir + "/" + table.name + ".exr", table, half, threads);
   if (header) writeCppHeader(dir + "/" + table.name + ".h", table);
 }
@@ -474,7 +471,7 @@ void CheckManifest(const std::string& dir) { ManifestEntries(dir); }
 void CommitBakedTable(const std::string& dir, const Table& table, long long evals, bool half,
                       bool header, int threads, OutputFormat format,
                       const std::string& texelsFrom) {
-  if (threads <= 0) threads = static_cast<int>(std::thread::hardware_concurrency());
+  threads = ThreadCount(threads);
   if (format == OutputFormat::Exr && FlipsY(table))
     throw std::runtime_error("kiln: cannot write '" + dir + "/" + table.name +
                              ".exr': --flip-y applies to ktx2, dds and png16 (kiln's EXR loader "

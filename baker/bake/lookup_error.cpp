@@ -12,10 +12,10 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <thread>
 
 #include "baker/integrate/hemisphere.h"
 #include "baker/tables/prepared_reference.h"
+#include "baker/util/threads.h"
 
 namespace kiln {
 namespace {
@@ -245,9 +245,7 @@ class LookupSearch {
   std::vector<Climb> climbed_;
 };
 
-int ThreadsOf(const LookupSearchOptions& opt) {
-  return opt.threads > 0 ? opt.threads : static_cast<int>(std::thread::hardware_concurrency());
-}
+int ThreadsOf(const LookupSearchOptions& opt) { return ThreadCount(opt.threads); }
 
 LookupSearch::LookupSearch(const TableSpec& spec, const LutView& view,
                            const LookupSearchOptions& opt)

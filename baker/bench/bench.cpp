@@ -18,6 +18,7 @@
 #include "baker/bake/bake.h"
 #include "baker/io/atomic_write.h"
 #include "baker/tables/catalogue.h"
+#include "baker/util/threads.h"
 
 namespace kiln {
 namespace {
@@ -26,11 +27,6 @@ using Clock = std::chrono::steady_clock;
 
 double Since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-int AllThreads(int requested) {
-  return requested > 0 ? requested
-                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
 /// A table kind of the sweep: a catalogue table, its axis sizes for the sweep, and the sizes of
@@ -208,7 +204,7 @@ std::vector<Measured> InterleavedRuns(const std::vector<std::function<Table(long
 class Bench {
  public:
   Bench(const BenchOptions& opt, std::FILE* log)
-      : opt_(opt), plan_(MakePlan(opt.scale)), log_(log), threads_(AllThreads(opt.threads)) {
+      : opt_(opt), plan_(MakePlan(opt.scale)), log_(log), threads_(ThreadCount(opt.threads)) {
     plan_.ref.threads = threads_;
   }
 

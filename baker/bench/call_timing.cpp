@@ -29,7 +29,7 @@ double ThreadCpuNs() {
 /// Median ns per call (thread CPU time) of `batch` (which makes `calls` calls) over `batches`
 /// runs.
 template <class F>
-CallTiming Median(long long calls, int batches, F&& batch) {
+CallTiming MedianOfBatches(long long calls, int batches, F&& batch) {
   std::vector<double> ns;
   auto start = std::chrono::steady_clock::now();
   for (int b = 0; b < std::max(1, batches); ++b) {
@@ -60,7 +60,7 @@ CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int b
       x[i * dims + d] = Lerp(SplitMixUniform(seed), view.axis[d].lo, view.axis[d].hi);
   std::vector<float> out(static_cast<size_t>(kInputs) * static_cast<size_t>(nc));
   if (how == LookupCall::Batch) {
-    return Median(calls, batches, [&] {
+    return MedianOfBatches(calls, batches, [&] {
       double sum = 0;
       for (long long done = 0; done < calls; done += kInputs) {
         const size_t n = static_cast<size_t>(std::min<long long>(kInputs, calls - done));
@@ -74,7 +74,7 @@ CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int b
   float stack[8];
   float* one = nc <= 8 ? stack : out.data();
   if (how == LookupCall::Sampler) {
-    return Median(calls, batches, [&] {
+    return MedianOfBatches(calls, batches, [&] {
       double sum = 0;
       for (long long i = 0; i < calls; ++i) {
         sampler.sample(&x[(i % kInputs) * dims], one, filter);
@@ -83,7 +83,7 @@ CallTiming TimeLookups(const Table& table, Filter filter, long long calls, int b
       g_sink = g_sink + sum;
     });
   }
-  return Median(calls, batches, [&] {
+  return MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     for (long long i = 0; i < calls; ++i) {
       view.sample(&x[(i % kInputs) * dims], one, filter);
@@ -129,7 +129,7 @@ CallTiming TimePlainBilinear(long long calls, int batches) {
     mu[i] = static_cast<float>(SplitMixUniform(seed));
     r[i] = static_cast<float>(SplitMixUniform(seed));
   }
-  return Median(calls, batches, [&] {
+  return MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     float out[2];
     for (long long i = 0; i < calls; ++i) {
@@ -184,7 +184,7 @@ CallTiming TimePlainTrilinear(int n0, int n1, int n2, int channels, long long ca
   std::vector<float> x(static_cast<size_t>(kInputs) * 3);
   for (float& v : x) v = static_cast<float>(SplitMixUniform(seed));
   std::vector<float> out(static_cast<size_t>(g.channels));
-  return Median(calls, batches, [&] {
+  return MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     for (long long i = 0; i < calls; ++i) {
       const float* p = &x[static_cast<size_t>(i % kInputs) * 3];
@@ -203,7 +203,7 @@ CallTiming TimeFit(const FitForm& form, long long calls, int batches) {
     for (size_t d = 0; d < dims; ++d)
       x[i * dims + d] = static_cast<float>(
           form.axes[d].lo + SplitMixUniform(seed) * (form.axes[d].hi - form.axes[d].lo));
-  return Median(calls, batches, [&] {
+  return MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     float out[4];
     for (long long i = 0; i < calls; ++i) {
@@ -221,7 +221,7 @@ CallTiming TimeEvaluate(const AnyModel& model, long long calls, int batches) {
     wo[i] = DirectionFromMuPhi(SplitMixUniform(seed), 2 * Pi * SplitMixUniform(seed));
     wi[i] = DirectionFromMuPhi(SplitMixUniform(seed), 2 * Pi * SplitMixUniform(seed));
   }
-  return Median(calls, batches, [&] {
+  return MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     for (long long i = 0; i < calls; ++i) sum += Evaluate(model, wo[i % kInputs], wi[i % kInputs]);
     g_sink = g_sink + sum;
@@ -232,7 +232,7 @@ CallTiming TimeDirectionalAlbedo(const AnyModel& model, double tol, long long ca
   IntegrationOptions opt;
   opt.tol = tol;
   long long evals = 0;
-  CallTiming t = Median(calls, batches, [&] {
+  CallTiming t = MedianOfBatches(calls, batches, [&] {
     double sum = 0;
     evals = 0;
     for (long long i = 0; i < calls; ++i) {

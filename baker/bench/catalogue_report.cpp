@@ -14,6 +14,7 @@
 #include "baker/quantities/monte_carlo.h"
 #include "baker/tables/quantity.h"
 #include "baker/tables/catalogue.h"
+#include "baker/util/median.h"
 
 namespace kiln {
 
@@ -25,14 +26,6 @@ constexpr int kYardstickSamples = 1024;
 
 double SecondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-/// The median of xs (the mean of the middle two for an even count); 0 for none.
-double Median(std::vector<double> xs) {
-  if (xs.empty()) return 0;
-  std::sort(xs.begin(), xs.end());
-  const size_t n = xs.size();
-  return n % 2 ? xs[n / 2] : (xs[n / 2 - 1] + xs[n / 2]) / 2;
 }
 
 const char* MethodOf(const TableSpec& spec, const BakeStats& st) {

@@ -13,6 +13,7 @@
 
 #include "baker/custom/loader.h"
 #include "baker/tables/catalogue.h"
+#include "baker/util/median.h"
 
 namespace kiln {
 namespace {
@@ -65,12 +66,6 @@ NodeBake BakeAdaptive(const TableSpec& spec, double tol, int threads) {
   out.cpu = CpuSeconds() - cpuStart;
   out.evals = evals;
   return out;
-}
-
-double Median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 bool EndsWith(const std::string& s, const std::string& tail) {

@@ -1,4 +1,5 @@
 #include "baker/bench/estimate_table.h"
+#include "baker/util/threads.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -7,17 +8,12 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 namespace kiln {
 namespace {
 
 /// kiln.generator of the tables the bench's estimators make.
 constexpr const char* kBenchGenerator = "kiln 0.1.0 bench";
-
-int Threads(int requested) {
-  return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-}
 
 /// Filament's DFV loop for one texel: n Hammersley points, GGX importance sampling of h, height-
 /// correlated Smith visibility, weight 4 Vis mu_l (v.h) / (n.h), Fc = (1 - v.h)^5.
@@ -55,7 +51,7 @@ Table EstimateDFGTablePerTexel(const TableSpec& spec, int n, int threads, BakeSt
   const int width = spec.axes[0].size, rSize = spec.axes[1].size;
   Axis muAxis = spec.axes[0].ToAxis(), rAxis = spec.axes[1].ToAxis();
   auto t0 = std::chrono::steady_clock::now();
-  tbb::task_arena arena(Threads(threads));
+  tbb::task_arena arena(ThreadCount(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, rSize, 1), [&](const tbb::blocked_range<int>& b) {
       for (int k = b.begin(); k != b.end(); ++k) {
@@ -90,7 +86,7 @@ Table EstimateTable(const TableSpec& spec, const PointSet& points, const std::st
   auto t0 = std::chrono::steady_clock::now();
   MonteCarloRows fill = Describe(spec.quantity).monteCarlo->prepare(spec, points);
   auto row = [&](size_t k) { fill(k, &t.data[k * width * nc]); };
-  tbb::task_arena arena(Threads(threads));
+  tbb::task_arena arena(ThreadCount(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, rows, 1),
                       [&](const tbb::blocked_range<size_t>& b) {

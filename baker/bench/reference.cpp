@@ -1,5 +1,6 @@
 #include "baker/bench/reference.h"
 #include "baker/math/splitmix.h"
+#include "baker/util/threads.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -10,20 +11,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <thread>
 
 namespace kiln {
 namespace {
-
-int Threads(int requested) {
-  return requested > 0 ? requested : static_cast<int>(std::thread::hardware_concurrency());
-}
 
 /// Runs f(i) for i in [0, n) on `threads` threads, summing the integrand evaluations f returns.
 template <class F>
 long long ParallelEvals(size_t n, int threads, F&& f) {
   std::atomic<long long> evals{0};
-  tbb::task_arena arena(Threads(threads));
+  tbb::task_arena arena(ThreadCount(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 1),
                       [&](const tbb::blocked_range<size_t>& r) {

@@ -3,13 +3,13 @@
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include "baker/atlas/atlas.h"
 #include "baker/atlas/atlas_tables.h"
 #include "baker/cli/commands.h"
 #include "baker/io/atomic_write.h"
 #include "baker/util/did_you_mean.h"
+#include "baker/util/threads.h"
 
 namespace kiln::cli {
 
@@ -81,8 +81,7 @@ void RegisterAtlas(CLI::App& app) {
                                   (ec ? ": " + ec.message() : ""));
     AtlasOptions opt;
     opt.muNodes = opt.roughnessNodes = args->grid;
-    opt.threads =
-        args->threads > 0 ? args->threads : static_cast<int>(std::thread::hardware_concurrency());
+    opt.threads = ThreadCount(args->threads);
     std::vector<AtlasResult> results;
     for (const AtlasPair& p : pairs) {
       results.push_back(ComputeAtlas(p, opt));

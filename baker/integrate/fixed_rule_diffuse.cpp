@@ -22,7 +22,7 @@
 //     theta^(2p+1); Gauss-Legendre errs like n^(-2(2p+2)) on it, 1e-8 at n = 8 for p = 1.1,
 //     and one extra geometric panel towards theta_l = 0 takes it well below that.
 // At eps = 0 (mu_o = 0) the poles reach the hemisphere's corner; the grading then starts at
-// kMinScale. Only Hammon and full Oren-Nayar have item 2's poles: the other models get the
+// kMinGradingScale. Only Hammon and full Oren-Nayar have item 2's poles: the other models get the
 // panels of items 1 and 3 alone. Measured against adaptive quadrature at 1e-10 on a dense (mu, r)
 // grid for every catalogue diffuse model: tests/integrate_fixed_rule_diffuse.cpp (the worst is
 // printed there).
@@ -42,7 +42,7 @@ namespace kiln {
 namespace {
 
 /// The smallest grading scale: what the panels next to theta_o and phi = pi resolve at mu_o = 0.
-constexpr double kMinScale = 1e-4;
+constexpr double kMinGradingScale = 1e-4;
 /// Geometric ratio of the graded panels.
 constexpr double kRatio = 4;
 
@@ -111,7 +111,7 @@ ViewNodes MakeViewNodes(double mu_o, Grading g, const DiffuseRuleOptions& opt) {
   double theta_o = std::acos(mu_o);
   // Item 2's poles: Hammon and full Oren-Nayar only; the others need no grading (eps = pi/2
   // leaves a single panel on each side of theta_o and of phi = pi/2).
-  double eps = g != Grading::None ? std::max(Pi / 2 - theta_o, kMinScale) : Pi / 2;
+  double eps = g != Grading::None ? std::max(Pi / 2 - theta_o, kMinGradingScale) : Pi / 2;
   // theta_l: [0, g0] towards the normal (item 3), then graded towards theta_o, then
   // [theta_o, pi/2].
   std::vector<double> thetaBreaks;

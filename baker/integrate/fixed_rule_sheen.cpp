@@ -14,7 +14,7 @@
 //     h_z ~ mu_l + mu_o, width r = sqrt(alpha); the velvet spike exp(-cot^2 / alpha^2), width
 //     alpha.
 // Items 1-3 are scales between mu_o (or alpha) and 1 at one corner: the variables
-//     t = ln(mu_l + c),  s = ln(psi + c),  c = max(mu_o, kMinScale),
+//     t = ln(mu_l + c),  s = ln(psi + c),  c = max(mu_o, kMinLogScale),
 // turn the pole (2) into an analytic function and the cone (1) into a function of s - t, both
 // with features of width ~ 1 in (t, s); the layer (3) is a feature at t ~ ln r. Panels of at
 // most 4 units in t and s, 12 x 8 Gauss-Legendre nodes per panel.
@@ -73,7 +73,7 @@ namespace kiln {
 namespace {
 
 /// The smallest scale the logarithmic variables resolve (c at mu_o = 0).
-constexpr double kMinScale = 1e-7;
+constexpr double kMinLogScale = 1e-7;
 
 template <class M>
 constexpr bool kIsSheen = std::is_same_v<M, CharlieSheen> || std::is_same_v<M, CharlieSmithSheen> ||
@@ -181,7 +181,7 @@ SheenRowNdf RowNdf(const M& m) {
 template <class M>
 double Albedo(const M& m, double mu_o, const SheenRuleOptions& opt, long long* evals) {
   Vec3 wo = ViewDirection(mu_o);
-  const double c = std::max(mu_o, kMinScale), c2 = std::max(mu_o, kMinScale);
+  const double c = std::max(mu_o, kMinLogScale), c2 = std::max(mu_o, kMinLogScale);
   auto T = [&](double mu_l) { return std::log(mu_l + c); };
   std::vector<double> tBreaks = {T(0), T(1)};
   auto addMu = [&](double mu_l) {

@@ -39,6 +39,7 @@
 //   and the fitted LTC's own samples, the norm from the same lobe samples (LtcFitError).
 #include "baker/integrate/ltc_fit.h"
 #include "baker/integrate/ltc_objective.h"
+#include "baker/util/threads.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -49,7 +50,6 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <type_traits>
 
 namespace kiln {
@@ -813,7 +813,7 @@ std::vector<LtcTexel> FitLtcGrid(const std::string& model, const std::vector<dou
     prevAlpha = alpha;
   }
   // Each roughness column along the views, from its first-row texel; columns in parallel.
-  tbb::task_arena arena(threads > 0 ? threads : int(std::thread::hardware_concurrency()));
+  tbb::task_arena arena(ThreadCount(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, nr, 1),
                       [&](const tbb::blocked_range<size_t>& rg) {

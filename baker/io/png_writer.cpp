@@ -31,26 +31,6 @@ constexpr int kMaxScale = 16;
 /// Height in pixels of the single row of a 1D table.
 constexpr int kOneDimRowHeight = 32;
 
-using CrcTable = std::array<std::uint32_t, 256>;
-
-CrcTable makeCrcTable() {
-  CrcTable table{};
-  for (std::uint32_t n = 0; n < 256; ++n) {
-    std::uint32_t c = n;
-    for (int k = 0; k < 8; ++k) c = (c & 1u) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
-    table[n] = c;
-  }
-  return table;
-}
-
-/// CRC-32 (ISO 3309, as PNG uses) of bytes [begin, end).
-std::uint32_t crc32(const CrcTable& table, const std::string& bytes, std::size_t begin) {
-  std::uint32_t c = 0xFFFFFFFFu;
-  for (std::size_t i = begin; i < bytes.size(); ++i)
-    c = table[(c ^ static_cast<std::uint8_t>(bytes[i])) & 0xFFu] ^ (c >> 8);
-  return c ^ 0xFFFFFFFFu;
-}
-
 void appendBigEndian32(std::string& out, std::uint32_t v) {
   out += static_cast<char>((v >> 24) & 0xFFu);
   out += static_cast<char>((v >> 16) & 0xFFu);
@@ -58,13 +38,17 @@ void appendBigEndian32(std::string& out, std::uint32_t v) {
   out += static_cast<char>(v & 0xFFu);
 }
 
-void appendChunk(std::string& png, const CrcTable& crc, const char type[4],
-                 const std::string& data) {
+/// Appends the chunk `type` holding `data`, with its CRC-32 (ISO 3309, as PNG uses: zlib's crc32)
+/// of the type and data.
+void appendChunk(std::string& png, const char type[4], const std::string& data) {
   appendBigEndian32(png, static_cast<std::uint32_t>(data.size()));
   const std::size_t typeStart = png.size();
   png.append(type, 4);
   png += data;
-  appendBigEndian32(png, crc32(crc, png, typeStart));
+  const auto* bytes = reinterpret_cast<const Bytef*>(png.data() + typeStart);
+  const auto crc =
+      ::crc32(::crc32(0L, Z_NULL, 0), bytes, static_cast<uInt>(png.size() - typeStart));
+  appendBigEndian32(png, static_cast<std::uint32_t>(crc));
 }
 
 /// A zlib stream of `raw` (deflate at level 9, zlib's compress2: deterministic for a given zlib).
@@ -112,7 +96,6 @@ std::string encodePngImage(int width, int height, int bitDepth, int colourType,
     raw.insert(raw.end(), row, row + static_cast<std::ptrdiff_t>(rowBytes));
   }
 
-  const CrcTable crc = makeCrcTable();
   std::string png = "\x89PNG\r\n\x1a\n";
   std::string header;
   appendBigEndian32(header, static_cast<std::uint32_t>(width));
@@ -120,21 +103,21 @@ std::string encodePngImage(int width, int height, int bitDepth, int colourType,
   header += static_cast<char>(bitDepth);
   header += static_cast<char>(colourType);
   header += std::string(3, '\0');  // deflate, adaptive filtering, no interlace
-  appendChunk(png, crc, "IHDR", header);
+  appendChunk(png, "IHDR", header);
   if (linear) {
     std::string cicp;  // BT.709 primaries, linear transfer (8), RGB (matrix 0), full range
     cicp += '\x01';
     cicp += '\x08';
     cicp += '\x00';
     cicp += '\x01';
-    appendChunk(png, crc, "cICP", cicp);
+    appendChunk(png, "cICP", cicp);
     std::string gamma;
     appendBigEndian32(gamma, kPngGammaOne);
-    appendChunk(png, crc, "gAMA", gamma);
+    appendChunk(png, "gAMA", gamma);
   }
-  for (const auto& [keyword, value] : text) appendChunk(png, crc, "tEXt", keyword + '\0' + value);
-  appendChunk(png, crc, "IDAT", zlibStream(raw));
-  appendChunk(png, crc, "IEND", std::string());
+  for (const auto& [keyword, value] : text) appendChunk(png, "tEXt", keyword + '\0' + value);
+  appendChunk(png, "IDAT", zlibStream(raw));
+  appendChunk(png, "IEND", std::string());
   return png;
 }
 
