@@ -36,8 +36,8 @@
 #include "baker/io/test_hooks.h"
 #include "baker/io/texture_writers.h"
 #include "baker/tables/engine_layout.h"
-#include "kiln/exr_loader.h"
 #include "baker/util/threads.h"
+#include "kiln/exr_loader.h"
 
 namespace kiln {
 namespace {
@@ -182,12 +182,13 @@ Table BakeTable(const TableSpec& spec, const BakeOptions& opt, BakeStats* stats,
     ProgressBar bar(spec.name, n, opt.progress);
     t0 = std::chrono::steady_clock::now();             // after the bar's thread started
     const size_t pauseAfter = TestPauseAfterTexels();  // 0 unless a test set it
-    tbb::task_arena arena(ThreadCount(opt.threads));
+    const int threads = ThreadCount(opt.threads);
+    tbb::task_arena arena(threads);
     arena.execute([&] {
       // A fit (ltc) fills the whole table at once, in its own fixed order
       // (QuantityInfo::bakeTable).
       if (auto bakeAll = Describe(spec.quantity).bakeTable) {
-        bakeAll(spec, ThreadCount(opt.threads), t, evals, errors);
+        bakeAll(spec, threads, t, evals, errors);
         if (keep) keep->values.clear();  // a fit keeps no node values to derive from
         bar.done = n;
         return;
